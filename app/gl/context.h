@@ -1,0 +1,49 @@
+// GL contexts behind one small interface. A Context owns a current GL 4.5
+// core context and the loaded entry points until it is destroyed.
+#pragma once
+#include <memory>
+#include <string>
+
+namespace ms {
+
+enum class Backend { automatic, egl, osmesa };
+
+// "auto" | "egl" | "osmesa"; throws a bad_input Error otherwise.
+Backend parse_backend(const std::string& name);
+const char* backend_name(Backend b);
+
+struct GlInfo {
+  std::string vendor;
+  std::string renderer;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::string version;
+  int max_viewport[2] = {0, 0};
+  int max_texture_size = 0;
+  int max_renderbuffer_size = 0;
+};
+
+class Context {
+ public:
+  virtual ~Context() = default;
+  Context() = default;
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  // Which backend this context came from ("egl-device", "egl-surfaceless", "osmesa").
+  virtual std::string backend() const = 0;
+  const GlInfo& info() const { return info_; }
+
+ protected:
+  void load_info();  // fills info_ once GL entry points are loaded
+  GlInfo info_;
+};
+
+// Headless context. automatic tries EGL (GPU device first, then Mesa's
+// surfaceless platform), then OSMesa. Throws Exit::system when none works,
+// with every attempt's reason in the message.
+std::unique_ptr<Context> create_headless_context(Backend backend);
+
+// Backend-specific constructors; each throws Exit::system on failure.
+std::unique_ptr<Context> create_egl_context();
+std::unique_ptr<Context> create_osmesa_context();
+
+}  // namespace ms

@@ -1,0 +1,118 @@
+#include "render/frame.h"
+
+#include <cstring>
+#include <string>
+
+#include "core/error.h"
+#include "render/samples.h"
+
+namespace ms {
+namespace {
+
+// Two RGBA32F buffers; 4 GiB keeps llvmpipe and most GPUs out of trouble.
+constexpr double kMaxFrameBytes = 4.0 * 1024 * 1024 * 1024;
+
+struct Target {
+  GLuint tex = 0, fbo = 0;
+  Target(int w, int h) {
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, w, h);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      fail_system("GL: float framebuffer is incomplete");
+  }
+  ~Target() {
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &tex);
+  }
+  Target(const Target&) = delete;
+  Target& operator=(const Target&) = delete;
+};
+
+}  // namespace
+
+void check_frame_size(const GlInfo& info, int width, int height) {
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  if (width < 1 || height < 1) fail_input("image size " + size + " must be at least 1x1", {}, 0, "--size");
+  int max_w = info.max_viewport[0], max_h = info.max_viewport[1];
+  if (info.max_texture_size > 0) {
+    max_w = std::min(max_w, info.max_texture_size);
+    max_h = std::min(max_h, info.max_texture_size);
+  }
+  if (width > max_w || height > max_h)
+    fail_input("image size " + size + " exceeds this GL's limit of " + std::to_string(max_w) + "x" +
+                   std::to_string(max_h),
+               {}, 0, "--size", "GL_MAX_VIEWPORT_DIMS / GL_MAX_TEXTURE_SIZE of " + info.renderer);
+  const double bytes = 2.0 * 16.0 * width * height;
+  if (bytes > kMaxFrameBytes)
+    fail_input("image size " + size + " needs " + std::to_string(static_cast<long long>(bytes / (1 << 20))) +
+                   " MiB of frame buffers, over the 4096 MiB budget",
+               {}, 0, "--size");
+}
+
+FrameRenderer::FrameRenderer(const Context& ctx) : ctx_(ctx) { glGenVertexArrays(1, &vao_); }
+
+FrameRenderer::~FrameRenderer() { glDeleteVertexArrays(1, &vao_); }
+
+Image FrameRenderer::render(const Program& main, const UniformFn& set_uniforms, const Program& post,
+                            const FrameParams& p) {
+  check_frame_size(ctx_.info(), p.width, p.height);
+  Target accum(p.width, p.height), result(p.width, p.height);
+  glBindVertexArray(vao_);
+  glViewport(0, 0, p.width, p.height);
+  glDisable(GL_DEPTH_TEST);
+
+  // Samples add up in the float buffer; post divides by the count.
+  glBindFramebuffer(GL_FRAMEBUFFER, accum.fbo);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glUseProgram(main.id());
+  set_uniforms(main);
+  const GLint jitter = main.loc("uJitter");
+  for (const glm::vec2& s : stratified_samples(p.spp)) {
+    glUniform2f(jitter, s.x, s.y);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glDisable(GL_BLEND);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, result.fbo);
+  glUseProgram(post.id());
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, accum.tex);
+  glUniform1i(post.loc("uAccum"), 0);
+  glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(p.spp));
+  glUniform1f(post.loc("uExposure"), p.exposure);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  Image img;
+  img.width = p.width;
+  img.height = p.height;
+  img.channels = {"R", "G", "B", "A"};
+  img.pixels.resize(static_cast<size_t>(p.width) * p.height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, p.width, p.height, GL_RGBA, GL_FLOAT, img.pixels.data());
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    fail_system("GL error " + std::to_string(err) + " while rendering");
+  // GL's first row is the bottom one; images are stored top row first.
+  const size_t row = static_cast<size_t>(p.width) * 4;
+  std::vector<float> tmp(row);
+  for (int y = 0; y < p.height / 2; ++y) {
+    float* a = img.pixels.data() + y * row;
+    float* b = img.pixels.data() + (p.height - 1 - y) * row;
+    std::memcpy(tmp.data(), a, row * sizeof(float));
+    std::memcpy(a, b, row * sizeof(float));
+    std::memcpy(b, tmp.data(), row * sizeof(float));
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return img;
+}
+
+}  // namespace ms

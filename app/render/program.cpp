@@ -1,0 +1,93 @@
+#include "render/program.h"
+
+#include <vector>
+
+#include "core/error.h"
+#include "shader/log_map.h"
+
+namespace ms {
+namespace {
+
+std::string shader_log(GLuint shader) {
+  GLint len = 0;
+  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &len);
+  std::string log(len > 0 ? len : 0, '\0');
+  if (len > 0) glGetShaderInfoLog(shader, len, nullptr, log.data());
+  return log;
+}
+
+std::string program_log(GLuint program) {
+  GLint len = 0;
+  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &len);
+  std::string log(len > 0 ? len : 0, '\0');
+  if (len > 0) glGetProgramInfoLog(program, len, nullptr, log.data());
+  return log;
+}
+
+// The first error-level diagnostic as the one-line Error; the count of the
+// rest goes into the hint so nothing is silently dropped.
+[[noreturn]] void fail_with_log(const std::string& stage, const std::string& log, const ShaderSource& src) {
+  const std::vector<ShaderDiagnostic> diags = parse_info_log(log, src);
+  const ShaderDiagnostic* first = nullptr;
+  int errors = 0;
+  for (const auto& d : diags) {
+    if (d.severity == "warning") continue;
+    if (!first) first = &d;
+    ++errors;
+  }
+  if (!first && !diags.empty()) first = &diags.front();
+  std::string hint = errors > 1 ? "+" + std::to_string(errors - 1) + " more" : "";
+  if (!first) fail_input(stage + " failed with an empty log", src.files.empty() ? "" : src.files[0]);
+  fail_input(stage + " error: " + first->message, first->file, first->line, {}, hint);
+}
+
+GLuint compile(GLenum type, const std::string& text, const ShaderSource& src, const char* stage) {
+  GLuint shader = glCreateShader(type);
+  const char* p = text.c_str();
+  glShaderSource(shader, 1, &p, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    const std::string log = shader_log(shader);
+    glDeleteShader(shader);
+    fail_with_log(stage, log, src);
+  }
+  return shader;
+}
+
+}  // namespace
+
+Program::Program(const std::string& vertex_source, const ShaderSource& fragment) {
+  ShaderSource vertex;
+  vertex.text = vertex_source;
+  vertex.files = {"<fullscreen vertex shader>"};
+  GLuint vs = compile(GL_VERTEX_SHADER, vertex_source, vertex, "vertex shader compile");
+  GLuint fs = 0;
+  try {
+    fs = compile(GL_FRAGMENT_SHADER, fragment.text, fragment, "shader compile");
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
+  id_ = glCreateProgram();
+  glAttachShader(id_, vs);
+  glAttachShader(id_, fs);
+  glLinkProgram(id_);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    const std::string log = program_log(id_);
+    glDeleteProgram(id_);
+    id_ = 0;
+    fail_with_log("shader link", log, fragment);
+  }
+}
+
+Program::~Program() {
+  if (id_) glDeleteProgram(id_);
+}
+
+}  // namespace ms

@@ -1,0 +1,76 @@
+#include "render/uniforms.h"
+
+#include <cmath>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace ms {
+namespace {
+
+void set3(const Program& p, const std::string& name, const glm::vec3& v) {
+  glUniform3fv(p.loc(name), 1, glm::value_ptr(v));
+}
+void set1(const Program& p, const std::string& name, float v) { glUniform1f(p.loc(name), v); }
+
+float radians(float deg) { return deg * 3.14159265358979f / 180.0f; }
+
+}  // namespace
+
+void set_scene_uniforms(const Program& p, const Scene& s, int width, int height, float time, int frame) {
+  glUniform2f(p.loc("uResolution"), static_cast<float>(width), static_cast<float>(height));
+  set1(p, "uTime", time);
+  glUniform1i(p.loc("uFrame"), frame);
+  set3(p, "uCamPos", s.camera.position);
+  set3(p, "uCamTarget", s.camera.target);
+  set3(p, "uCamUp", s.camera.up);
+  set1(p, "uFovY", radians(s.camera.fov_deg));
+  set3(p, "uSkyHorizon", s.sky.horizon);
+  set3(p, "uSkyZenith", s.sky.zenith);
+  set3(p, "uAmbient", s.sky.ambient);
+
+  for (size_t i = 0; i < s.lights.size(); ++i) {
+    const Light& l = s.lights[i];
+    const std::string base = "uLights[" + std::to_string(i) + "].";
+    const bool point = l.kind == LightKind::point;
+    const glm::vec3 xyz = point ? l.position : glm::normalize(l.direction);
+    glUniform4f(p.loc(base + "pos"), xyz.x, xyz.y, xyz.z, point ? 1.0f : 0.0f);
+    set3(p, base + "color", l.color * l.intensity);
+    // Directional size is an angular diameter in degrees; GLSL wants the radius in radians.
+    set1(p, base + "size", point ? l.size : radians(l.size) * 0.5f);
+    set3(p, base + "atten", l.attenuation);
+  }
+  for (size_t i = 0; i < s.materials.size(); ++i) {
+    const Material& m = s.materials[i];
+    const std::string base = "uMaterials[" + std::to_string(i) + "].";
+    set3(p, base + "color", m.color);
+    set1(p, base + "ka", m.ambient);
+    set1(p, base + "kd", m.diffuse);
+    set1(p, base + "ks", m.specular);
+    set1(p, base + "shininess", m.shininess);
+    set1(p, base + "reflectivity", m.reflectivity);
+    glUniform1i(p.loc(base + "pattern"), m.pattern == Pattern::checker ? 1 : 0);
+    set3(p, base + "color2", m.color2);
+    set1(p, base + "patternScale", m.pattern_scale);
+    set3(p, base + "patternVelocity", m.pattern_velocity);
+  }
+}
+
+void set_shadertoy_uniforms(const Program& p, int width, int height, const ShadertoyInputs& in) {
+  glUniform3f(p.loc("iResolution"), static_cast<float>(width), static_cast<float>(height), 1.0f);
+  set1(p, "iTime", in.time);
+  set1(p, "iTimeDelta", in.time_delta);
+  set1(p, "iFrameRate", in.time_delta > 0 ? 1.0f / in.time_delta : 0.0f);
+  glUniform1i(p.loc("iFrame"), in.frame);
+  glUniform4fv(p.loc("iMouse"), 1, in.mouse);
+  glUniform4f(p.loc("iDate"), 2000.0f, 0.0f, 1.0f, in.time);
+  for (int i = 0; i < 4; ++i) {
+    const std::string idx = std::to_string(i);
+    glUniform1i(p.loc("iChannel" + idx), i);
+    glUniform1f(p.loc("iChannelTime[" + idx + "]"), in.time);
+    glUniform3f(p.loc("iChannelResolution[" + idx + "]"), 1.0f, 1.0f, 1.0f);
+  }
+}
+
+}  // namespace ms

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs marchstudio's build and test dependencies from Debian 12's packages.
+# Runs apt-get directly as root, through sudo otherwise.
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" != "0" ]; then SUDO="sudo"; fi
+PACKAGES=(
+  build-essential cmake ninja-build pkg-config
+  python3-glad                      # GL loader generator (glad2), offline specs
+  libegl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0   # headless GL: EGL + OSMesa, llvmpipe
+  libglfw3-dev libglm-dev
+  libopenimageio-dev openimageio-tools
+  libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev
+  xvfb xauth                        # viewer tests get a real X window
+)
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${PACKAGES[@]}" >/dev/null
+echo "marchstudio: dependencies installed"
