@@ -1,0 +1,2 @@
+// a.glsl
+#include "b.glsl"

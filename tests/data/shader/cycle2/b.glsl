@@ -1,0 +1,3 @@
+// b.glsl
+float b_value;
+#include "a.glsl"

@@ -1,0 +1,2 @@
+// b.glsl
+#include "c.glsl"

@@ -1,0 +1,3 @@
+// c.glsl
+// c.glsl
+#include "a.glsl"

@@ -1,0 +1,2 @@
+// c.glsl: level 3
+float c_value() { return 3.0; }

@@ -1,0 +1,2 @@
+#pragma once
+float once_lib() { return 1.0; }

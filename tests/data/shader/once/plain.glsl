@@ -1,0 +1,1 @@
+float plain_counter_decl;

@@ -1,0 +1,2 @@
+#include "lib.glsl"
+float once_user() { return once_lib(); }

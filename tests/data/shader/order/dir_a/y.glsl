@@ -1,0 +1,1 @@
+// y from the root's directory

@@ -1,0 +1,2 @@
+// only.glsl lives in include dir 1 and includes y.glsl
+#include "y.glsl"

@@ -1,0 +1,1 @@
+// x from include dir 1

@@ -1,0 +1,1 @@
+// y next to only.glsl in include dir 1

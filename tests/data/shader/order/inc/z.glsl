@@ -1,0 +1,1 @@
+// z from include dir 1

@@ -1,0 +1,1 @@
+// w only in include dir 2

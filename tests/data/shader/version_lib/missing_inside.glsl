@@ -1,0 +1,2 @@
+// fine so far
+#include "not_there.glsl"
