@@ -1,0 +1,321 @@
+#include "scene/load.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/error.h"
+#include "scene/toml_read.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::size_t kMaxLights = 8;
+constexpr std::size_t kMaxMaterials = 32;
+// Squared length below which a direction has no usable direction.
+constexpr double kTinySq = 1e-12;
+
+// Enum spellings, in the order of the enum's values.
+constexpr std::string_view kTonemaps[] = {"none", "reinhard", "aces"};
+constexpr std::string_view kLightKinds[] = {"point", "directional"};
+constexpr std::string_view kPatterns[] = {"none", "checker"};
+
+constexpr Range kNonNeg = Range::at_least(0);
+constexpr Range kPositive = Range::above(0);
+
+// The schema (docs/scene-format.md), one line per key. Keys that need more
+// than a typed read (strings, enums) are listed as extras where checked.
+const Field<Camera> kCameraFields[] = {
+    {"position", &Camera::position},
+    {"target", &Camera::target},
+    {"up", &Camera::up},
+    {"fov", &Camera::fov_deg, Range::open(0, 180)},
+};
+const Field<RenderSettings> kRenderFields[] = {
+    {"width", &RenderSettings::width, Range::closed(1, 16384)},
+    {"height", &RenderSettings::height, Range::closed(1, 16384)},
+    {"spp", &RenderSettings::spp, Range::closed(1, 1024)},
+    {"time", &RenderSettings::time},
+    {"exposure", &RenderSettings::exposure, kPositive},
+};
+const Field<Sky> kSkyFields[] = {
+    {"horizon", &Sky::horizon, kNonNeg},
+    {"zenith", &Sky::zenith, kNonNeg},
+    {"ambient", &Sky::ambient, kNonNeg},
+};
+const Field<Quality> kQualityFields[] = {
+    {"max_steps", &Quality::max_steps, Range::closed(1, 100000)},
+    {"max_distance", &Quality::max_distance, kPositive},
+    {"hit_tolerance", &Quality::hit_tolerance, kNonNeg},
+    {"hit_epsilon", &Quality::hit_epsilon, kPositive},
+    {"lipschitz", &Quality::lipschitz, Range::at_least(1)},
+    {"shadow_steps", &Quality::shadow_steps, Range::closed(0, 10000)},
+    {"ao_taps", &Quality::ao_taps, Range::closed(0, 64)},
+    {"bounces", &Quality::bounces, Range::closed(0, 16)},
+    {"shadows", &Quality::shadows},
+    {"ao", &Quality::ao},
+    {"reflections", &Quality::reflections},
+    {"checker_filter", &Quality::checker_filter},
+};
+const Field<Light> kLightFields[] = {
+    {"position", &Light::position},
+    {"direction", &Light::direction},
+    {"color", &Light::color, kNonNeg},
+    {"intensity", &Light::intensity, kNonNeg},
+    {"size", &Light::size, kNonNeg},
+    {"attenuation", &Light::attenuation, kNonNeg},
+};
+const Field<Material> kMaterialFields[] = {
+    {"color", &Material::color, kNonNeg},
+    {"ambient", &Material::ambient, kNonNeg},
+    {"diffuse", &Material::diffuse, kNonNeg},
+    {"specular", &Material::specular, kNonNeg},
+    {"shininess", &Material::shininess, kPositive},
+    {"reflectivity", &Material::reflectivity, Range::closed(0, 1)},
+    {"color2", &Material::color2, kNonNeg},
+    {"pattern_scale", &Material::pattern_scale, kPositive},
+    {"pattern_velocity", &Material::pattern_velocity},
+};
+
+// Every table's accepted keys, for unknown-key checks and for hinting where
+// a misplaced key belongs ("'width' belongs in [render]").
+struct Section {
+  std::string_view name;
+  bool array;  // [[name]] rather than [name]
+  std::vector<std::string_view> keys;
+};
+
+struct Schema {
+  std::vector<std::string_view> top{"scene", "camera", "render", "sky", "quality", "lights", "materials"};
+  std::vector<Section> sections{
+      {"scene", false, {"name", "map"}},
+      {"camera", false, keys_of(kCameraFields)},
+      {"render", false, keys_of(kRenderFields, {"tonemap"})},
+      {"sky", false, keys_of(kSkyFields)},
+      {"quality", false, keys_of(kQualityFields)},
+      {"lights", true, keys_of(kLightFields, {"type"})},
+      {"materials", true, keys_of(kMaterialFields, {"name", "pattern"})},
+  };
+
+  const Section& section(std::string_view name) const {
+    return *std::find_if(sections.begin(), sections.end(), [&](const Section& s) { return s.name == name; });
+  }
+  // Hint for a key unknown in `here` but valid in another table.
+  std::string elsewhere(std::string_view here, std::string_view key) const {
+    for (const Section& s : sections) {
+      if (s.name == here || std::find(s.keys.begin(), s.keys.end(), key) == s.keys.end()) continue;
+      std::string hint = quote(key);
+      hint.append(" belongs in ").append(s.array ? "[[" : "[").append(s.name).append(s.array ? "]]" : "]");
+      return hint;
+    }
+    return {};
+  }
+  void check(const Reader& r, const toml::table& t, std::string_view section_name, std::string_view path) const {
+    r.check_keys(t, path, section(section_name).keys,
+                 [&](std::string_view key) { return elsewhere(section_name, key); });
+  }
+};
+
+[[noreturn]] void fail_parse(const Reader& r, const toml::parse_error& e) {
+  r.fail(static_cast<int>(e.source().begin.line), {}, "invalid TOML: " + printable(e.description(), 200));
+}
+
+// toml++ reports syntax errors by exception or by result, depending on how
+// it was configured (TOML_EXCEPTIONS); both end in the same ms::Error. The
+// Debian shared library is built with exceptions (namespace toml::v3::ex),
+// so the second branch only matters for a header-only build without them.
+toml::table parse_toml(std::string_view text, const Reader& r) {
+#if TOML_EXCEPTIONS
+  try {
+    return toml::parse(text, std::string_view{r.file()});
+  } catch (const toml::parse_error& e) {
+    fail_parse(r, e);
+  }
+#else
+  toml::parse_result result = toml::parse(text, std::string_view{r.file()});
+  if (!result) fail_parse(r, result.error());
+  return std::move(result).table();
+#endif
+}
+
+// A section [name] that is a plain struct of Fields.
+template <class T, std::size_t N>
+const toml::table* read_section(const Reader& r, const Schema& schema, const toml::table& root,
+                                std::string_view name, const Field<T> (&fields)[N], T& out) {
+  const toml::table* t = r.table(root, {}, name);
+  if (t) {
+    schema.check(r, *t, name, name);
+    r.read_fields(*t, name, fields, out);
+  }
+  return t;
+}
+
+double length_sq(const glm::vec3& v) { return glm::dot(glm::dvec3(v), glm::dvec3(v)); }
+
+void check_camera(const Reader& r, const toml::table* t, const Camera& c) {
+  auto line = [&](std::string_view key) { return t ? Reader::line_of(*t, key) : 0; };
+  const glm::dvec3 view = glm::dvec3(c.target) - glm::dvec3(c.position);
+  const glm::dvec3 up(c.up);
+  if (length_sq(c.up) <= kTinySq) r.fail(line("up"), "camera.up", "'camera.up' must not be zero-length");
+  if (glm::dot(view, view) <= kTinySq)
+    r.fail(line("target"), "camera.target", "'camera.target' must differ from 'camera.position'",
+           "the camera looks from position towards target");
+  // An up vector along the view direction leaves the camera's roll undefined.
+  const glm::dvec3 side = glm::cross(view, up);
+  if (glm::dot(side, side) <= 1e-8 * glm::dot(view, view) * glm::dot(up, up))
+    r.fail(line("up"), "camera.up", "'camera.up' is parallel to the view direction",
+           "set camera.up to another direction; it defaults to [0, 1, 0]");
+}
+
+Light read_light(const Reader& r, const Schema& schema, const toml::table& t, const std::string& path) {
+  Light light;
+  schema.check(r, t, "lights", path);
+  r.read_enum(t, path, "type", kLightKinds, light.kind);
+  // A key the light's type ignores is a mistake, not a no-op.
+  const bool point = light.kind == LightKind::point;
+  for (std::string_view key : {"position", "direction", "attenuation"}) {
+    const bool used = point ? key != "direction" : key == "direction";
+    if (!used && t.get(key))
+      r.fail(Reader::line_of(t, key), join_key(path, key),
+             quote(join_key(path, key)) + " does nothing for a " + (point ? "point" : "directional") + " light",
+             point ? "remove it, or set type = \"directional\"" : "remove it, or set type = \"point\"");
+  }
+  r.read_fields(t, path, kLightFields, light);
+  if (!point && length_sq(light.direction) <= kTinySq)
+    r.fail(Reader::line_of(t, "direction"), path + ".direction", quote(path + ".direction") + " must not be zero-length");
+  // A directional size is an angular diameter: 180 degrees and up is no disc.
+  if (!point && light.size >= 180.0f)
+    r.fail(Reader::line_of(t, "size"), path + ".size",
+           quote(path + ".size") + " must be in [0, 180) for a directional light, got " + format_number(light.size),
+           "it is the angular diameter in degrees; the sun is about 0.53");
+  if (point && light.attenuation.x + light.attenuation.y + light.attenuation.z <= 0.0f)
+    r.fail(Reader::line_of(t, "attenuation"), path + ".attenuation", quote(path + ".attenuation") + " must not be all zero",
+           "use [1, 0, 0] for no falloff");
+  return light;
+}
+
+// Material names become GLSL macros MAT_<NAME>, so they must be identifiers
+// that GLSL accepts: no '__' anywhere in MAT_<NAME> (reserved).
+void check_material_name(const Reader& r, const toml::table& t, const std::string& key, const std::string& name) {
+  const int line = Reader::line_of(t, "name");
+  const bool ident = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+                     std::all_of(name.begin(), name.end(), [](char c) {
+                       return c == '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+                     });
+  if (!ident)
+    r.fail(line, key, quote(key) + " = " + quote(name) + " is not an identifier",
+           "use letters, digits and '_', not starting with a digit");
+  if (name[0] == '_' || name.find("__") != std::string::npos)
+    r.fail(line, key, quote(key) + " = " + quote(name) + " would make a GLSL name with '__', which GLSL reserves",
+           "do not start it with '_' or use '__'");
+}
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+void read_materials(const Reader& r, const Schema& schema, const toml::table& root, Scene& scene) {
+  const auto tables = r.tables(root, {}, "materials");
+  if (tables.empty())
+    r.fail(root.get("materials") ? Reader::line_of(root, "materials") : 0, "materials", "the scene defines no materials",
+           "add at least one [[materials]] table with a name");
+  if (tables.size() > kMaxMaterials)
+    r.fail(Reader::line_of(*tables[kMaxMaterials]), "materials",
+           "too many materials: " + std::to_string(tables.size()) + " (at most " + std::to_string(kMaxMaterials) + ")");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const toml::table& t = *tables[i];
+    const std::string path = "materials[" + std::to_string(i) + "]", key = path + ".name";
+    Material m;
+    schema.check(r, t, "materials", path);
+    if (!r.read(t, path, "name", m.name))
+      r.fail(Reader::line_of(t), key, "missing required key " + quote(key), "every material needs a name, e.g. name = \"floor\"");
+    check_material_name(r, t, key, m.name);
+    for (std::size_t j = 0; j < i; ++j)
+      if (upper(scene.materials[j].name) == upper(m.name))
+        r.fail(Reader::line_of(t, "name"), key, "duplicate material name " + quote(m.name),
+               "materials[" + std::to_string(j) + "] is already " + quote(scene.materials[j].name) +
+                   "; names are case-insensitive, as GLSL sees MAT_" + upper(m.name));
+    r.read_enum(t, path, "pattern", kPatterns, m.pattern);
+    r.read_fields(t, path, kMaterialFields, m);
+    scene.materials.push_back(std::move(m));
+  }
+}
+
+// `scene.map` relative to the scene file's folder; it must be a readable file.
+fs::path resolve_map(const Reader& r, const toml::table* t, const fs::path& display_path) {
+  std::string map;
+  if (!t || !r.read(*t, "scene", "map", map))
+    r.fail(t ? Reader::line_of(*t) : 0, "scene.map", "missing required key 'scene.map'",
+           "add map = \"<file>.glsl\" under [scene]: the GLSL file that defines vec2 map(vec3 p)");
+  const int line = Reader::line_of(*t, "map");
+  if (map.empty()) r.fail(line, "scene.map", "'scene.map' must not be empty");
+  const fs::path resolved = (display_path.parent_path() / fs::path(map)).lexically_normal();
+  std::error_code ec;
+  if (fs::is_directory(resolved, ec))
+    r.fail(line, "scene.map", "map file " + quote(resolved.string()) + " is a directory");
+  if (!std::ifstream(resolved))
+    r.fail(line, "scene.map", "cannot open map file " + quote(resolved.string()),
+           fs::exists(resolved, ec) ? "it is not readable" : "no such file; 'scene.map' is relative to the scene file");
+  return resolved;
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
+  const Reader r(display_path.string());
+  const toml::table root = parse_toml(toml_text, r);
+  const Schema schema;
+  r.check_keys(root, {}, schema.top, [&](std::string_view key) { return schema.elsewhere({}, key); });
+
+  Scene scene;
+  scene.file = display_path;
+  scene.name = display_path.stem().string();
+  const toml::table* st = r.table(root, {}, "scene");
+  if (st) {
+    schema.check(r, *st, "scene", "scene");
+    r.read(*st, "scene", "name", scene.name);
+  }
+  const toml::table* camera = read_section(r, schema, root, "camera", kCameraFields, scene.camera);
+  check_camera(r, camera, scene.camera);
+  if (const toml::table* t = read_section(r, schema, root, "render", kRenderFields, scene.render))
+    r.read_enum(*t, "render", "tonemap", kTonemaps, scene.render.tonemap);
+  read_section(r, schema, root, "sky", kSkyFields, scene.sky);
+  read_section(r, schema, root, "quality", kQualityFields, scene.quality);
+
+  const auto lights = r.tables(root, {}, "lights");
+  if (lights.size() > kMaxLights)
+    r.fail(Reader::line_of(*lights[kMaxLights]), "lights",
+           "too many lights: " + std::to_string(lights.size()) + " (at most " + std::to_string(kMaxLights) + ")");
+  for (std::size_t i = 0; i < lights.size(); ++i)
+    scene.lights.push_back(read_light(r, schema, *lights[i], "lights[" + std::to_string(i) + "]"));
+  read_materials(r, schema, root, scene);
+
+  // Last, so a broken scene file is reported before a missing map file.
+  scene.map_file = resolve_map(r, st, display_path);
+  return scene;
+}
+
+Scene load_scene(const fs::path& toml_path) {
+  const std::string file = toml_path.string();
+  std::error_code ec;
+  if (fs::is_directory(toml_path, ec)) fail_input("cannot open scene file", file, 0, {}, "it is a directory");
+  std::ifstream in(toml_path, std::ios::binary);
+  if (!in)
+    fail_input("cannot open scene file", file, 0, {},
+               fs::exists(toml_path, ec) ? "it is not readable" : "no such file or directory");
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) fail_input("cannot read scene file", file);
+  return parse_scene(text, toml_path);
+}
+
+}  // namespace ms

@@ -1,0 +1,94 @@
+// Scene: everything a scene file says, validated, in plain structs with
+// sensible defaults. Loaded by scene/load.h; read by shader/ and render/.
+// No GL here.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace ms {
+
+struct Camera {
+  glm::vec3 position{0.0f, 1.0f, -5.0f};
+  glm::vec3 target{0.0f, 0.0f, 0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_deg = 45.0f;  // vertical field of view, degrees, in (0, 180)
+};
+
+enum class LightKind { point, directional };
+
+struct Light {
+  LightKind kind = LightKind::point;
+  glm::vec3 position{0.0f, 5.0f, 0.0f};   // point lights
+  glm::vec3 direction{0.0f, -1.0f, 0.0f}; // directional: the direction light travels
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;
+  // Penumbra size: a point light's radius in world units; a directional
+  // light's angular diameter in degrees (the sun is about 0.53).
+  float size = 0.0f;
+  glm::vec3 attenuation{1.0f, 0.0f, 0.0f};  // 1 / (c + l*d + q*d^2); point only
+};
+
+enum class Pattern { none, checker };
+
+struct Material {
+  std::string name;              // GLSL sees it as MAT_<NAME upper-cased>
+  glm::vec3 color{0.8f};         // albedo
+  float ambient = 1.0f;          // Ka
+  float diffuse = 1.0f;          // Kd
+  float specular = 0.5f;         // Ks
+  float shininess = 32.0f;       // Blinn-Phong exponent s
+  float reflectivity = 0.0f;     // Fresnel F0; > 0 makes the material a mirror
+  Pattern pattern = Pattern::none;
+  glm::vec3 color2{0.1f};        // second checker colour
+  float pattern_scale = 1.0f;    // checker cell size, world units
+  glm::vec3 pattern_velocity{0.0f};  // checker offset per second (animated checker)
+};
+
+enum class Tonemap { none, reinhard, aces };
+
+struct Quality {
+  int max_steps = 255;
+  float max_distance = 100.0f;
+  float hit_tolerance = 0.5f;   // hit when d < hit_tolerance * pixel footprint at t
+  float hit_epsilon = 1e-4f;    // absolute floor of the hit tolerance
+  float lipschitz = 1.0f;       // the scene SDF's Lipschitz bound (step = d / L)
+  int shadow_steps = 64;
+  int ao_taps = 5;
+  int bounces = 1;              // reflection bounces
+  bool shadows = true;
+  bool ao = true;
+  bool reflections = true;
+  bool checker_filter = true;
+};
+
+struct RenderSettings {
+  int width = 1280;
+  int height = 720;
+  int spp = 1;
+  float time = 0.0f;
+  float exposure = 1.0f;
+  Tonemap tonemap = Tonemap::aces;
+};
+
+struct Sky {
+  glm::vec3 horizon{0.70f, 0.80f, 0.95f};
+  glm::vec3 zenith{0.25f, 0.45f, 0.85f};
+  glm::vec3 ambient{0.15f, 0.17f, 0.20f};  // Ia, ambient light
+};
+
+struct Scene {
+  std::filesystem::path file;      // the .toml, as given
+  std::filesystem::path map_file;  // the GLSL with vec2 map(vec3 p), resolved
+  std::string name;
+  Camera camera;
+  std::vector<Light> lights;
+  std::vector<Material> materials;
+  Quality quality;
+  RenderSettings render;
+  Sky sky;
+};
+
+}  // namespace ms
