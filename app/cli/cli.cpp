@@ -1,0 +1,48 @@
+#include "cli/cli.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+#include "cli/render_cmd.h"
+#include "core/error.h"
+
+namespace ms {
+
+int run_cli(int argc, char** argv) {
+  CLI::App app{"marchstudio: a GLSL raymarching studio for SDF scenes", "marchstudio"};
+  app.set_version_flag("--version", "marchstudio 0.1.0");
+  app.require_subcommand(1);
+  RenderArgs render_args;
+  CLI::App* render = add_render_command(app, render_args);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "marchstudio: %s (see 'marchstudio --help')\n", e.what());
+    return static_cast<int>(Exit::bad_input);
+  }
+
+  try {
+    if (render->parsed()) return run_render(render_args);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "marchstudio: %s\n", e.what());
+    return static_cast<int>(e.code());
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "marchstudio: out of memory\n");
+    return static_cast<int>(Exit::system);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "marchstudio: internal error: %s\n", e.what());
+    return static_cast<int>(Exit::system);
+  }
+  return static_cast<int>(Exit::bad_input);
+}
+
+}  // namespace ms

@@ -1,0 +1,37 @@
+// Runs the real marchstudio binary for integration tests and captures its
+// exit code, stdout and stderr.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ms::test {
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+// Arguments are shell-quoted; the working directory is `cwd` when given.
+RunResult run_marchstudio(const std::vector<std::string>& args, const std::filesystem::path& cwd = {});
+
+// A fresh empty directory under the system temp dir, removed by the destructor.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+  // Names of every entry, for "nothing was left behind" assertions.
+  std::vector<std::string> entries() const;
+
+ private:
+  std::filesystem::path path_;
+};
+
+std::filesystem::path source_dir();  // the repository root
+void write_file(const std::filesystem::path& p, const std::string& text);
+std::string read_file(const std::filesystem::path& p);
+
+}  // namespace ms::test

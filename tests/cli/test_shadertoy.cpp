@@ -1,0 +1,84 @@
+// Shadertoy single-pass shaders render exactly as Shadertoy would: fragCoord
+// at pixel centres with the origin bottom-left (so the image is upright),
+// its uniforms, and no extra tone map or sRGB encode on the output.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "io/image_io.h"
+#include "run.h"
+
+namespace ms::test {
+namespace {
+
+const char* kGradient = R"(// fragCoord and iTime straight to colour
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+  vec2 uv = fragCoord / iResolution.xy;
+  fragColor = vec4(uv.x, uv.y, fract(iTime) * iResolution.z, 0.25);
+}
+)";
+
+const char* kInputs = R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+  fragColor = vec4(float(iFrame) / 100.0, iDate.w / 10.0, iTimeDelta * 60.0, 1.0)
+            + 0.0 * texture(iChannel0, vec2(0.5)) + vec4(0.0, 0.0, 0.0, iMouse.x);
+}
+)";
+
+TEST(Shadertoy, FragCoordResolutionAndTimeAreExact) {
+  TempDir dir;
+  write_file(dir / "grad.glsl", kGradient);
+  RunResult r = run_marchstudio({"render", "grad.glsl", "-o", "g.exr", "--size", "16x8", "--time", "2.25"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Image img = read_image(dir / "g.exr");
+  ASSERT_EQ(img.width, 16);
+  ASSERT_EQ(img.height, 8);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 16; ++x) {
+      EXPECT_FLOAT_EQ(img.at(x, y, 0), (x + 0.5f) / 16.0f) << x << "," << y;
+      EXPECT_FLOAT_EQ(img.at(x, y, 1), (8 - y - 0.5f) / 8.0f) << "top row is the highest fragCoord.y";
+      EXPECT_FLOAT_EQ(img.at(x, y, 2), 0.25f);
+    }
+  EXPECT_FLOAT_EQ(img.at(0, 0, 3), 1.0f) << "alpha is opaque, as on Shadertoy's canvas";
+}
+
+TEST(Shadertoy, PngIsNotEncodedTwice) {
+  TempDir dir;
+  write_file(dir / "grad.glsl", kGradient);
+  RunResult r = run_marchstudio({"render", "grad.glsl", "-o", "g.png", "--size", "16x8"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Image img = read_image(dir / "g.png");
+  for (int x = 0; x < 16; ++x)
+    EXPECT_NEAR(img.at(x, 0, 0), (x + 0.5f) / 16.0f, 0.5f / 255.0f + 1e-6f) << x;
+}
+
+TEST(Shadertoy, FrameDateAndChannelsAreDefined) {
+  TempDir dir;
+  write_file(dir / "in.glsl", kInputs);
+  RunResult r = run_marchstudio({"render", "in.glsl", "-o", "i.exr", "--size", "4x4", "--time", "3", "--frame", "42"},
+                                dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Image img = read_image(dir / "i.exr");
+  EXPECT_FLOAT_EQ(img.at(1, 1, 0), 0.42f);
+  EXPECT_FLOAT_EQ(img.at(1, 1, 1), 0.3f);  // iDate.w = seconds of the day = iTime, deterministic
+  EXPECT_NEAR(img.at(1, 1, 2), 1.0f, 1e-6f);
+}
+
+TEST(Shadertoy, CompileErrorNamesTheUserFileAndLine) {
+  TempDir dir;
+  write_file(dir / "bad.glsl", "void mainImage(out vec4 c, in vec2 f) {\n  c = vec4(1.0);\n  c.x = undefined_thing;\n}\n");
+  RunResult r = run_marchstudio({"render", "bad.glsl", "-o", "b.png"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bad.glsl:3:"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "b.png"));
+}
+
+TEST(Shadertoy, NotAShadertoyShaderIsRejected) {
+  TempDir dir;
+  write_file(dir / "x.glsl", "float f() { return 1.0; }\n");
+  RunResult r = run_marchstudio({"render", "x.glsl", "-o", "x.png"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("mainImage"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace ms::test
