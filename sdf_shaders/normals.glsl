@@ -1,0 +1,24 @@
+// normals.glsl: surface normals from the distance field's gradient.
+#pragma once
+
+// Normal epsilon for a hit whose pixel footprint is `footprint` wide: half a
+// footprint (matches the hit tolerance, so the 4 taps straddle what the
+// tracer resolved), never below NORMAL_EPS_MIN nor the float precision at p.
+float normalEpsilon(vec3 p, float footprint) {
+  return max(max(0.5 * footprint, float(NORMAL_EPS_MIN)), 4e-7 * maxComp(abs(p)));
+}
+
+// Tetrahedron-technique gradient (4 taps instead of 6; Quilez), normalized.
+// A zero gradient (medial points, flat-topped fields) gives `fallback`, never NaN.
+// The loop is not unrolled on purpose (the bound depends on uFrame, always 0
+// or more, so min() is 0): map() is inlined once, not four times, which keeps
+// compile times down for large scenes.
+vec3 calcNormal(vec3 p, float eps, vec3 fallback) {
+  vec3 n = vec3(0.0);
+  for (int i = min(uFrame, 0); i < 4; ++i) {
+    // (+,-,-), (-,-,+), (-,+,-), (+,+,+): the tetrahedron's vertices
+    vec3 e = 2.0 * vec3(((i + 3) >> 1) & 1, (i >> 1) & 1, i & 1) - 1.0;
+    n += e * map(p + e * eps).x;
+  }
+  return safeNormalize(n, fallback);
+}

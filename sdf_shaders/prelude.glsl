@@ -1,0 +1,104 @@
+// prelude.glsl: the host <-> shader contract (uniforms, structs) and small
+// helpers every other library file may use. Included by the root right after
+// the host's #defines. See docs/shader-library.md.
+#pragma once
+
+// The host must emit these; fail loudly rather than guess a default.
+#if !defined(NUM_LIGHTS) || !defined(NUM_MATERIALS) || !defined(MAX_STEPS) || !defined(MAX_DIST)
+#error "marchstudio: NUM_LIGHTS, NUM_MATERIALS, MAX_STEPS and MAX_DIST must be defined by the host"
+#endif
+#if !defined(HIT_TOLERANCE) || !defined(HIT_EPSILON) || !defined(LIPSCHITZ) || !defined(MAX_BOUNCES)
+#error "marchstudio: HIT_TOLERANCE, HIT_EPSILON, LIPSCHITZ and MAX_BOUNCES must be defined by the host"
+#endif
+#if !defined(SHADOW_STEPS) || !defined(AO_TAPS) || !defined(ENABLE_SHADOWS) || !defined(ENABLE_AO)
+#error "marchstudio: SHADOW_STEPS, AO_TAPS, ENABLE_SHADOWS and ENABLE_AO must be defined by the host"
+#endif
+#if !defined(ENABLE_REFLECTIONS) || !defined(ENABLE_CHECKER_FILTER)
+#error "marchstudio: ENABLE_REFLECTIONS and ENABLE_CHECKER_FILTER must be defined by the host"
+#endif
+
+// ---- uniforms (exactly as in notes/glsl_contract.md) ----
+uniform vec2  uResolution;   // full image size in pixels
+uniform vec2  uJitter;       // sub-pixel sample position in [0,1)^2
+uniform float uTime;         // scene seconds
+uniform int   uFrame;
+uniform vec3  uCamPos;
+uniform vec3  uCamTarget;
+uniform vec3  uCamUp;
+uniform float uFovY;         // vertical field of view, radians
+uniform vec3  uSkyHorizon;
+uniform vec3  uSkyZenith;
+uniform vec3  uAmbient;      // ambient light intensity Ia
+
+struct Light {
+  vec4  pos;    // w = 1: point light at xyz;  w = 0: directional, xyz = unit direction the light TRAVELS
+  vec3  color;  // colour * intensity
+  float size;   // point: radius (world units); directional: angular RADIUS in radians
+  vec3  atten;  // point: 1/(atten.x + atten.y*d + atten.z*d*d); ignored for directional
+};
+#if NUM_LIGHTS > 0
+uniform Light uLights[NUM_LIGHTS];
+#endif
+
+struct Material {
+  vec3  color;          // albedo
+  float ka, kd, ks;     // Blinn-Phong ambient, diffuse, specular coefficients
+  float shininess;
+  float reflectivity;   // Fresnel-Schlick F0; 0 = not reflective
+  int   pattern;        // 0 = plain, 1 = checker
+  vec3  color2;         // second checker colour
+  float patternScale;   // checker cell size (world units)
+  vec3  patternVelocity;// checker offset per second
+};
+uniform Material uMaterials[NUM_MATERIALS];
+
+layout(location = 0) out vec4 outColor;   // linear HDR radiance of this sample; alpha = 1
+
+// ---- library tunables: not in the contract; defaults unless #defined before this file ----
+#ifndef NORMAL_EPS_MIN
+#define NORMAL_EPS_MIN 1e-4     // floor of the normal epsilon (world units)
+#endif
+#ifndef SHADOW_MIN_STEP
+#define SHADOW_MIN_STEP 2e-3    // shadow rays never step less than this (no stalling)
+#endif
+#ifndef SHADOW_MAX_STEP
+#define SHADOW_MAX_STEP 0.5     // nor more, so the penumbra estimator sees thin occluders
+#endif
+#ifndef AO_RADIUS
+#define AO_RADIUS 0.13          // farthest AO tap along the normal (Quilez: 0.01 + 0.12)
+#endif
+#ifndef FADE_START
+#define FADE_START 0.6          // fraction of MAX_DIST where hits start fading into the sky
+#endif
+
+// ---- constants and helpers ----
+const float PI  = 3.14159265358979;
+const float TAU = 6.28318530717959;
+const float BIG = 1e20;         // "no previous step" / "infinitely far", still finite
+
+// Clamp to [0,1].
+float saturate(float x) { return clamp(x, 0.0, 1.0); }
+vec3  saturate(vec3 x)  { return clamp(x, vec3(0.0), vec3(1.0)); }
+
+// Largest component.
+float maxComp(vec3 v) { return max(v.x, max(v.y, v.z)); }
+
+// normalize() that returns `fallback` instead of NaN for zero (or denormal) vectors.
+vec3 safeNormalize(vec3 v, vec3 fallback) {
+  float l2 = dot(v, v);
+  return l2 > 1e-30 ? v * inversesqrt(l2) : fallback;
+}
+vec3 safeNormalize(vec3 v) { return safeNormalize(v, vec3(0.0, 1.0, 0.0)); }
+
+// a / b with |b| kept >= eps (sign preserved, b = 0 counts as positive).
+float safeDiv(float a, float b, float eps) {
+  return a / (b < 0.0 ? min(b, -eps) : max(b, eps));
+}
+
+// Component of v perpendicular to the unit vector d.
+vec3 perpTo(vec3 v, vec3 d) { return v - d * dot(v, d); }
+
+// True when any component is NaN or +-Inf (x != x catches NaN; Inf by magnitude).
+bool notFinite(vec3 v) {
+  return any(notEqual(v, v)) || maxComp(abs(v)) > 3e38;
+}
