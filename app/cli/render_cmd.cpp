@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,9 +15,7 @@
 #include "io/image_io.h"
 #include "render/frame.h"
 #include "render/uniforms.h"
-#include "scene/load.h"
-#include "shader/assemble.h"
-#include "shader/shadertoy.h"
+#include "cli/input.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -58,16 +57,16 @@ Size parse_size(const std::string& s) {
   return out;
 }
 
-void apply_disable(Quality& q, const std::vector<std::string>& off) {
-  for (const std::string& name : off) {
-    if (name == "shadows") q.shadows = false;
-    if (name == "reflections") q.reflections = false;
-    if (name == "ao") q.ao = false;
-    if (name == "checker-filter") q.checker_filter = false;
+// Seconds since the last lap, for --verbose phase timings.
+struct Stopwatch {
+  std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last).count();
+    last = now;
+    return s;
   }
-}
-
-bool is_scene_file(const fs::path& p) { return p.extension() == ".toml"; }
+};
 
 // iChannel0..3 read black, as an unbound Shadertoy input does.
 struct BlackChannels {
@@ -102,64 +101,58 @@ int run_render(const RenderArgs& a) {
   check_output_path(output);  // before any work: no file is ever half-made
   const bool display = is_display_format(image_format_for(output));
 
-  AssembleOptions opts{resolve_shader_dir(a.shader_dir)};
-  std::error_code ec;
-  if (!fs::is_regular_file(input, ec)) fail_input("input file not found", input.string());
-
-  // Everything that can fail on bad input happens before the GL context.
-  const bool scene_mode = is_scene_file(input);
-  Scene scene;
-  ShaderSource main_src;
-  if (scene_mode) {
-    scene = load_scene(input);
-    apply_disable(scene.quality, a.disable);
-    main_src = assemble_scene(scene, opts);
-  } else {
-    main_src = assemble_shadertoy(input, opts);
-  }
+  const AssembleOptions opts{resolve_shader_dir(a.shader_dir)};
+  const LoadedInput in = load_input(input, a.disable, opts);
+  const Scene& scene = in.scene;
   FrameParams fp;
-  fp.width = scene_mode ? scene.render.width : 640;
-  fp.height = scene_mode ? scene.render.height : 360;
+  fp.width = scene.render.width;
+  fp.height = scene.render.height;
   if (!a.size.empty()) {
     const Size s = parse_size(a.size);
     fp.width = s.width;
     fp.height = s.height;
   }
-  fp.spp = a.spp > 0 ? a.spp : (scene_mode ? scene.render.spp : 1);
-  fp.exposure = scene_mode ? scene.render.exposure : 1.0f;
-  const float time = a.time_set ? static_cast<float>(a.time) : (scene_mode ? scene.render.time : 0.0f);
-  // Shadertoy output is display-referred already: no tone map, no encode.
-  const ShaderSource post_src = assemble_post(scene_mode ? scene.render.tonemap : Tonemap::none,
-                                              scene_mode && display, opts);
+  fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
+  fp.exposure = scene.render.exposure;
+  const float time = a.time_set ? static_cast<float>(a.time) : scene.render.time;
+  // Shadertoy output is display-referred already: never encoded again.
+  const ShaderSource post_src = assemble_post(scene.render.tonemap, display && !in.shadertoy, opts);
 
+  Stopwatch clock;
   std::unique_ptr<Context> ctx = create_headless_context(backend);
+  const double t_context = clock.lap();
   if (a.verbose)
     std::fprintf(stderr, "marchstudio: backend %s, GL_RENDERER %s, GL_VERSION %s\n", ctx->backend().c_str(),
                  ctx->info().renderer.c_str(), ctx->info().version.c_str());
   check_frame_size(ctx->info(), fp.width, fp.height);
 
-  const Program main_prog(fullscreen_vertex_source(), main_src);
+  const Program main_prog(fullscreen_vertex_source(), in.main);
   const Program post_prog(fullscreen_vertex_source(), post_src);
+  const double t_compile = clock.lap();
   FrameRenderer renderer(*ctx);
   Image img;
-  if (scene_mode) {
+  if (!in.shadertoy) {
     img = renderer.render(main_prog, [&](const Program& p) {
       set_scene_uniforms(p, scene, fp.width, fp.height, time, a.frame);
     }, post_prog, fp);
   } else {
     BlackChannels channels;
-    ShadertoyInputs in;
-    in.time = time;
-    in.frame = a.frame;
+    ShadertoyInputs st;
+    st.time = time;
+    st.frame = a.frame;
     img = renderer.render(main_prog, [&](const Program& p) {
       channels.bind();
-      set_shadertoy_uniforms(p, fp.width, fp.height, in);
+      set_shadertoy_uniforms(p, fp.width, fp.height, st);
     }, post_prog, fp);
   }
   ImageMetadata meta{{"Software", "marchstudio 0.1.0"},
                      {"ImageDescription", input.filename().string() + " t=" + std::to_string(time) +
                                               " spp=" + std::to_string(fp.spp)}};
+  const double t_render = clock.lap();
   write_image(img, output, meta);
+  if (a.verbose)
+    std::fprintf(stderr, "marchstudio: context %.1f ms, compile %.1f ms, render %.1f ms, write %.1f ms\n",
+                 t_context * 1e3, t_compile * 1e3, t_render * 1e3, clock.lap() * 1e3);
   std::printf("%s\n", output.string().c_str());
   return 0;
 }

@@ -97,7 +97,7 @@ struct Section {
 struct Schema {
   std::vector<std::string_view> top{"scene", "camera", "render", "sky", "quality", "lights", "materials"};
   std::vector<Section> sections{
-      {"scene", false, {"name", "map"}},
+      {"scene", false, {"name", "map", "shadertoy"}},
       {"camera", false, keys_of(kCameraFields)},
       {"render", false, keys_of(kRenderFields, {"tonemap"})},
       {"sky", false, keys_of(kSkyFields)},
@@ -251,22 +251,40 @@ void read_materials(const Reader& r, const Schema& schema, const toml::table& ro
   }
 }
 
-// `scene.map` relative to the scene file's folder; it must be a readable file.
-fs::path resolve_map(const Reader& r, const toml::table* t, const fs::path& display_path) {
-  std::string map;
-  if (!t || !r.read(*t, "scene", "map", map))
-    r.fail(t ? Reader::line_of(*t) : 0, "scene.map", "missing required key 'scene.map'",
-           "add map = \"<file>.glsl\" under [scene]: the GLSL file that defines vec2 map(vec3 p)");
-  const int line = Reader::line_of(*t, "map");
-  if (map.empty()) r.fail(line, "scene.map", "'scene.map' must not be empty");
-  const fs::path resolved = (display_path.parent_path() / fs::path(map)).lexically_normal();
+// `scene.<key>` (map or shadertoy) relative to the scene file's folder; it
+// must be a readable file.
+fs::path resolve_glsl(const Reader& r, const toml::table& t, const fs::path& display_path, const std::string& key) {
+  const std::string dotted = "scene." + key;
+  std::string file;
+  r.read(t, "scene", key, file);
+  const int line = Reader::line_of(t, key);
+  if (file.empty()) r.fail(line, dotted, quote(dotted) + " must not be empty");
+  const fs::path resolved = (display_path.parent_path() / fs::path(file)).lexically_normal();
   std::error_code ec;
   if (fs::is_directory(resolved, ec))
-    r.fail(line, "scene.map", "map file " + quote(resolved.string()) + " is a directory");
+    r.fail(line, dotted, key + " file " + quote(resolved.string()) + " is a directory");
   if (!std::ifstream(resolved))
-    r.fail(line, "scene.map", "cannot open map file " + quote(resolved.string()),
-           fs::exists(resolved, ec) ? "it is not readable" : "no such file; 'scene.map' is relative to the scene file");
+    r.fail(line, dotted, "cannot open " + key + " file " + quote(resolved.string()),
+           fs::exists(resolved, ec) ? "it is not readable"
+                                    : "no such file; " + quote(dotted) + " is relative to the scene file");
   return resolved;
+}
+
+// Exactly one of scene.map (an SDF scene) and scene.shadertoy (a Shadertoy
+// shader given size, time and spp by this file).
+void resolve_sources(const Reader& r, const toml::table* t, const fs::path& display_path, Scene& scene) {
+  const bool has_map = t && t->contains("map"), has_shadertoy = t && t->contains("shadertoy");
+  if (has_map && has_shadertoy)
+    r.fail(Reader::line_of(*t, "shadertoy"), "scene.shadertoy", "'scene.map' and 'scene.shadertoy' exclude each other",
+           "a scene is either an SDF map or a Shadertoy shader");
+  if (has_shadertoy) {
+    scene.shadertoy_file = resolve_glsl(r, *t, display_path, "shadertoy");
+    return;
+  }
+  if (!has_map)
+    r.fail(t ? Reader::line_of(*t) : 0, "scene.map", "missing required key 'scene.map'",
+           "add map = \"<file>.glsl\" under [scene]: the GLSL file that defines vec2 map(vec3 p)");
+  scene.map_file = resolve_glsl(r, *t, display_path, "map");
 }
 
 }  // namespace
@@ -298,10 +316,11 @@ Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
            "too many lights: " + std::to_string(lights.size()) + " (at most " + std::to_string(kMaxLights) + ")");
   for (std::size_t i = 0; i < lights.size(); ++i)
     scene.lights.push_back(read_light(r, schema, *lights[i], "lights[" + std::to_string(i) + "]"));
-  read_materials(r, schema, root, scene);
+  // A Shadertoy scene has no map() and so needs no materials.
+  if (!(st && st->contains("shadertoy")) || root.contains("materials")) read_materials(r, schema, root, scene);
 
   // Last, so a broken scene file is reported before a missing map file.
-  scene.map_file = resolve_map(r, st, display_path);
+  resolve_sources(r, st, display_path, scene);
   return scene;
 }
 

@@ -82,6 +82,7 @@ struct Sky {
 struct Scene {
   std::filesystem::path file;      // the .toml, as given
   std::filesystem::path map_file;  // the GLSL with vec2 map(vec3 p), resolved
+  std::filesystem::path shadertoy_file;  // instead of map_file: a Shadertoy shader, resolved
   std::string name;
   Camera camera;
   std::vector<Light> lights;

@@ -95,6 +95,16 @@ TEST_F(BadInput, ShaderCompileErrorNamesTheGlslLine) {
       << r.err;
 }
 
+TEST_F(BadInput, CompileErrorTwoIncludesDeepMapsToItsFile) {
+  write_file(dir / "m.glsl", "#include \"a.glsl\"\nvec2 map(vec3 p) { return vec2(helper(p), MAT_GROUND); }\n");
+  write_file(dir / "a.glsl", "// level one\n#include \"b.glsl\"\nfloat helper(vec3 p) { return inner(p); }\n");
+  write_file(dir / "b.glsl", "// level two\n\nfloat inner(vec3 p) { return length(p) - undefined_radius; }\n");
+  write_file(dir / "s.toml", scene_text());
+  auto r = render_expecting_error({"render", "s.toml", "-o", "out.png"});
+  EXPECT_NE(r.err.find("b.glsl:3:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("undefined_radius"), std::string::npos) << r.err;
+}
+
 TEST_F(BadInput, IncludeCycle) {
   write_file(dir / "m.glsl", "#include \"a.glsl\"\nvec2 map(vec3 p) { return vec2(length(p) - 1.0, 0.0); }\n");
   write_file(dir / "a.glsl", "// a\n#include \"b.glsl\"\n");

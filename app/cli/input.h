@@ -1,0 +1,26 @@
+// What every subcommand starts from: a scene .toml (an SDF map or a wrapped
+// Shadertoy shader) or a bare Shadertoy .glsl, loaded and assembled into
+// shader source. Everything that can fail on bad input happens here, before
+// any GL context exists.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+#include "shader/assemble.h"
+#include "shader/preprocess.h"
+
+namespace ms {
+
+struct LoadedInput {
+  Scene scene;           // a bare .glsl gets a default scene: 640x360, no tone map
+  ShaderSource main;     // the main pass
+  bool shadertoy = false;
+};
+
+// `disable`: effects switched off (shadows, reflections, ao, checker-filter).
+LoadedInput load_input(const std::filesystem::path& input, const std::vector<std::string>& disable,
+                       const AssembleOptions& opts);
+
+}  // namespace ms
