@@ -12,9 +12,24 @@ namespace {
 // Two RGBA32F buffers; 4 GiB keeps llvmpipe and most GPUs out of trouble.
 constexpr double kMaxFrameBytes = 4.0 * 1024 * 1024 * 1024;
 
-struct Target {
+// Images are stored top row first; GL's first row is the bottom one.
+void flip_rows(Image& img) {
+  const size_t row = static_cast<size_t>(img.width) * img.nchannels();
+  std::vector<float> tmp(row);
+  for (int y = 0; y < img.height / 2; ++y) {
+    float* a = img.pixels.data() + y * row;
+    float* b = img.pixels.data() + (img.height - 1 - y) * row;
+    std::memcpy(tmp.data(), a, row * sizeof(float));
+    std::memcpy(a, b, row * sizeof(float));
+    std::memcpy(b, tmp.data(), row * sizeof(float));
+  }
+}
+
+}  // namespace
+
+struct RenderTarget {
   GLuint tex = 0, fbo = 0;
-  Target(int w, int h) {
+  RenderTarget(int w, int h) {
     glGenTextures(1, &tex);
     glBindTexture(GL_TEXTURE_2D, tex);
     glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, w, h);
@@ -26,15 +41,13 @@ struct Target {
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       fail_system("GL: float framebuffer is incomplete");
   }
-  ~Target() {
+  ~RenderTarget() {
     glDeleteFramebuffers(1, &fbo);
     glDeleteTextures(1, &tex);
   }
-  Target(const Target&) = delete;
-  Target& operator=(const Target&) = delete;
+  RenderTarget(const RenderTarget&) = delete;
+  RenderTarget& operator=(const RenderTarget&) = delete;
 };
-
-}  // namespace
 
 void check_frame_size(const GlInfo& info, int width, int height) {
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
@@ -57,18 +70,23 @@ void check_frame_size(const GlInfo& info, int width, int height) {
 
 FrameRenderer::FrameRenderer(const Context& ctx) : ctx_(ctx) { glGenVertexArrays(1, &vao_); }
 
-FrameRenderer::~FrameRenderer() { glDeleteVertexArrays(1, &vao_); }
+FrameRenderer::~FrameRenderer() { glDeleteVertexArrays(1, &vao_); }  // targets free themselves
 
-Image FrameRenderer::render(const Program& main, const UniformFn& set_uniforms, const Program& post,
-                            const FrameParams& p) {
+void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, const Program& post,
+                         const FrameParams& p) {
   check_frame_size(ctx_.info(), p.width, p.height);
-  Target accum(p.width, p.height), result(p.width, p.height);
+  if (p.width != width_ || p.height != height_ || !accum_) {
+    accum_ = std::make_unique<RenderTarget>(p.width, p.height);
+    result_ = std::make_unique<RenderTarget>(p.width, p.height);
+    width_ = p.width;
+    height_ = p.height;
+  }
   glBindVertexArray(vao_);
   glViewport(0, 0, p.width, p.height);
   glDisable(GL_DEPTH_TEST);
 
   // Samples add up in the float buffer; post divides by the count.
-  glBindFramebuffer(GL_FRAMEBUFFER, accum.fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, accum_->fbo);
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT);
   glEnable(GL_BLEND);
@@ -83,36 +101,41 @@ Image FrameRenderer::render(const Program& main, const UniformFn& set_uniforms, 
   }
   glDisable(GL_BLEND);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, result.fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);
   glUseProgram(post.id());
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, accum.tex);
+  glBindTexture(GL_TEXTURE_2D, accum_->tex);
   glUniform1i(post.loc("uAccum"), 0);
   glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(p.spp));
   glUniform1f(post.loc("uExposure"), p.exposure);
   glDrawArrays(GL_TRIANGLES, 0, 3);
-
-  Image img;
-  img.width = p.width;
-  img.height = p.height;
-  img.channels = {"R", "G", "B", "A"};
-  img.pixels.resize(static_cast<size_t>(p.width) * p.height * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, p.width, p.height, GL_RGBA, GL_FLOAT, img.pixels.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     fail_system("GL error " + std::to_string(err) + " while rendering");
-  // GL's first row is the bottom one; images are stored top row first.
-  const size_t row = static_cast<size_t>(p.width) * 4;
-  std::vector<float> tmp(row);
-  for (int y = 0; y < p.height / 2; ++y) {
-    float* a = img.pixels.data() + y * row;
-    float* b = img.pixels.data() + (p.height - 1 - y) * row;
-    std::memcpy(tmp.data(), a, row * sizeof(float));
-    std::memcpy(a, b, row * sizeof(float));
-    std::memcpy(b, tmp.data(), row * sizeof(float));
-  }
+}
+
+Image FrameRenderer::read_color() const {
+  Image img;
+  if (!result_) return img;
+  img.width = width_;
+  img.height = height_;
+  img.channels = {"R", "G", "B", "A"};
+  img.pixels.resize(static_cast<size_t>(width_) * height_ * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, img.pixels.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  flip_rows(img);
   return img;
+}
+
+GLuint FrameRenderer::color_texture() const { return result_ ? result_->tex : 0; }
+GLuint FrameRenderer::color_framebuffer() const { return result_ ? result_->fbo : 0; }
+
+Image FrameRenderer::render(const Program& main, const UniformFn& set_uniforms, const Program& post,
+                            const FrameParams& p) {
+  draw(main, set_uniforms, post, p);
+  return read_color();
 }
 
 }  // namespace ms

@@ -3,6 +3,7 @@
 // read back top row first. Shared by scenes and Shadertoy shaders.
 #pragma once
 #include <functional>
+#include <memory>
 
 #include "gl/context.h"
 #include "io/image.h"
@@ -24,6 +25,8 @@ using UniformFn = std::function<void(const Program&)>;
 // limits, or the buffers would exceed a sane memory budget.
 void check_frame_size(const GlInfo& info, int width, int height);
 
+struct RenderTarget;  // an RGBA32F texture with its framebuffer (frame.cpp)
+
 class FrameRenderer {
  public:
   explicit FrameRenderer(const Context& ctx);
@@ -31,12 +34,24 @@ class FrameRenderer {
   FrameRenderer(const FrameRenderer&) = delete;
   FrameRenderer& operator=(const FrameRenderer&) = delete;
 
-  // Image with channels R,G,B,A (float).
+  // Accumulate p.spp samples of `main`, then run `post` into the result
+  // target. Targets are kept while the size stays the same (the viewer draws
+  // every frame).
+  void draw(const Program& main, const UniformFn& set_uniforms, const Program& post, const FrameParams& p);
+  // The post output of the last draw(): channels R,G,B,A, top row first.
+  Image read_color() const;
+  // The post output as a texture and framebuffer (the viewer blits it).
+  GLuint color_texture() const;
+  GLuint color_framebuffer() const;
+
+  // draw() then read_color().
   Image render(const Program& main, const UniformFn& set_uniforms, const Program& post, const FrameParams& p);
 
  private:
   const Context& ctx_;
   GLuint vao_ = 0;
+  int width_ = 0, height_ = 0;
+  std::unique_ptr<RenderTarget> accum_, result_;
 };
 
 }  // namespace ms
