@@ -93,6 +93,11 @@ ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts) {
   define(root, "ENABLE_AO", q.ao ? 1 : 0);
   define(root, "ENABLE_REFLECTIONS", q.reflections ? 1 : 0);
   define(root, "ENABLE_CHECKER_FILTER", q.checker_filter ? 1 : 0);
+  for (const auto& [name, value] : opts.defines) {
+    if (root.find("#define " + name + " ") != std::string::npos)
+      fail_input("define '" + name + "' is already set by the scene", display_path(scene.file), 0, name);
+    define(root, name, value);
+  }
   root += "#include \"prelude.glsl\"\n";
   root += "#include \"primitives.glsl\"\n";
   root += "#include \"operators.glsl\"\n";

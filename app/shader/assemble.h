@@ -4,6 +4,8 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "scene/scene.h"
 #include "shader/preprocess.h"
@@ -12,6 +14,9 @@ namespace ms {
 
 struct AssembleOptions {
   std::filesystem::path shader_dir;  // the sdf_shaders/ directory
+  // Extra #defines (name, value) placed after the scene's own, e.g.
+  // AOV_OUTPUTS or DEBUG_VIEW; a name the scene already defines is an error.
+  std::vector<std::pair<std::string, std::string>> defines;
 };
 
 // The scene's main-pass fragment shader: NUM_LIGHTS, NUM_MATERIALS,

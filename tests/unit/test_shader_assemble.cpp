@@ -203,3 +203,24 @@ TEST(ShaderShadertoy, RejectsMainAndMissingFiles) {
 
 }  // namespace
 }  // namespace ms
+
+namespace ms {
+namespace {
+
+TEST(ShaderAssembleDefines, ExtraDefinesFollowTheScenesAndClashesAreErrors) {
+  Scene scene;
+  scene.file = std::filesystem::path(MARCH_TEST_DATA) / "shader/scene/scene.toml";
+  scene.map_file = std::filesystem::path(MARCH_TEST_DATA) / "shader/scene/map.glsl";
+  scene.materials.push_back(Material{});
+  scene.materials[0].name = "a";
+  AssembleOptions opts{std::filesystem::path(MARCH_TEST_DATA) / "shader/fake_lib", {{"DEBUG_VIEW", "2"}}};
+  const ShaderSource src = assemble_scene(scene, opts);
+  const size_t extra = src.text.find("#define DEBUG_VIEW 2\n");
+  ASSERT_NE(extra, std::string::npos);
+  EXPECT_LT(src.text.find("#define ENABLE_CHECKER_FILTER"), extra);
+  opts.defines = {{"MAX_STEPS", "10"}};
+  EXPECT_THROW(assemble_scene(scene, opts), Error);
+}
+
+}  // namespace
+}  // namespace ms
