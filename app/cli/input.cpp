@@ -1,5 +1,7 @@
 #include "cli/input.h"
 
+#include <regex>
+
 #include "core/error.h"
 #include "scene/load.h"
 #include "shader/shadertoy.h"
@@ -19,6 +21,21 @@ void apply_disable(Quality& q, const std::vector<std::string>& off) {
 }
 
 }  // namespace
+
+std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector<std::string>& flags) {
+  static const std::regex ident(R"(^[A-Za-z_][A-Za-z0-9_]*$)");
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& f : flags) {
+    const size_t eq = f.find('=');
+    std::string name = f.substr(0, eq), value = eq == std::string::npos ? "1" : f.substr(eq + 1);
+    if (!std::regex_match(name, ident))
+      fail_input("'" + name + "' is not a GLSL identifier", {}, 0, "-D", "use -D NAME or -D NAME=VALUE");
+    if (value.find_first_of("\r\n") != std::string::npos)
+      fail_input("the value of '" + name + "' spans lines", {}, 0, "-D");
+    out.emplace_back(std::move(name), std::move(value));
+  }
+  return out;
+}
 
 LoadedInput load_input(const fs::path& input, const std::vector<std::string>& disable, const AssembleOptions& opts) {
   std::error_code ec;

@@ -19,6 +19,10 @@ struct LoadedInput {
   bool shadertoy = false;
 };
 
+// "NAME" or "NAME=VALUE" flags as (name, value) #defines; NAME must be a
+// GLSL identifier, VALUE one line. Throws bad_input naming -D.
+std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector<std::string>& flags);
+
 // `disable`: effects switched off (shadows, reflections, ao, checker-filter).
 LoadedInput load_input(const std::filesystem::path& input, const std::vector<std::string>& disable,
                        const AssembleOptions& opts);

@@ -36,6 +36,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter")
       ->delimiter(',')
       ->check(CLI::IsMember({"shadows", "reflections", "ao", "checker-filter"}));
+  cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
   cmd->add_flag("-v,--verbose", a.verbose, "Print the backend, GL renderer and timings");
   return cmd;
 }
@@ -101,7 +102,7 @@ int run_render(const RenderArgs& a) {
   check_output_path(output);  // before any work: no file is ever half-made
   const bool display = is_display_format(image_format_for(output));
 
-  const AssembleOptions opts{resolve_shader_dir(a.shader_dir)};
+  const AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines)};
   const LoadedInput in = load_input(input, a.disable, opts);
   const Scene& scene = in.scene;
   FrameParams fp;

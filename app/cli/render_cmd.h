@@ -21,6 +21,7 @@ struct RenderArgs {
   std::string backend = "auto";
   std::string shader_dir; // empty: MARCH_SHADER_DIR or the built-in location
   std::vector<std::string> disable;  // effects switched off: shadows, reflections, ao, checker-filter
+  std::vector<std::string> defines;  // -D NAME[=VALUE], injected into the scene shader
   bool verbose = false;
 };
 

@@ -100,6 +100,7 @@ ShaderSource assemble_shadertoy(const fs::path& glsl_file, const AssembleOptions
     fail_input("the shader path contains a quote or newline", display_path(abs));
 
   std::string root = wrapper_head();
+  for (const auto& [name, value] : opts.defines) root += "#define " + name + " " + value + "\n";
   root += "#include \"" + path + "\"\n";
   root += wrapper_tail();
   ShaderSource src = preprocess(root, display_path(abs) + " (shadertoy wrapper)", abs.parent_path(),

@@ -105,6 +105,19 @@ TEST(Shadertoy, SceneWrappedShaderRendersIdentically) {
   EXPECT_GT(diff / ia.pixels.size(), 0.01);
 }
 
+TEST(Shadertoy, DefinesAreInjected) {
+  TempDir dir;
+  write_file(dir / "d.glsl", "#ifndef LEVEL\n#define LEVEL 0.0\n#endif\n"
+                             "void mainImage(out vec4 c, in vec2 f) { c = vec4(LEVEL, 0.0, 0.0, 1.0); }\n");
+  RunResult r = run_marchstudio({"render", "d.glsl", "-o", "d.exr", "--size", "2x2", "-D", "LEVEL=0.75"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FLOAT_EQ(read_image(dir / "d.exr").at(0, 0, 0), 0.75f);
+  r = run_marchstudio({"render", "d.glsl", "-o", "e.exr", "--size", "2x2", "-D", "9bad=1"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("-D"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "e.exr"));
+}
+
 TEST(Shadertoy, NotAShadertoyShaderIsRejected) {
   TempDir dir;
   write_file(dir / "x.glsl", "float f() { return 1.0; }\n");
