@@ -8,21 +8,18 @@
 namespace ms {
 namespace {
 
-std::string shader_log(GLuint shader) {
+// Info log of a shader or program: the two differ only in their getters.
+template <class GetIv, class GetLog>
+std::string info_log(GLuint object, GetIv get_iv, GetLog get_log) {
   GLint len = 0;
-  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &len);
+  get_iv(object, GL_INFO_LOG_LENGTH, &len);
   std::string log(len > 0 ? len : 0, '\0');
-  if (len > 0) glGetShaderInfoLog(shader, len, nullptr, log.data());
+  if (len > 0) get_log(object, len, nullptr, log.data());
   return log;
 }
 
-std::string program_log(GLuint program) {
-  GLint len = 0;
-  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &len);
-  std::string log(len > 0 ? len : 0, '\0');
-  if (len > 0) glGetProgramInfoLog(program, len, nullptr, log.data());
-  return log;
-}
+std::string shader_log(GLuint shader) { return info_log(shader, glGetShaderiv, glGetShaderInfoLog); }
+std::string program_log(GLuint program) { return info_log(program, glGetProgramiv, glGetProgramInfoLog); }
 
 // The first error-level diagnostic as the one-line Error; the count of the
 // rest goes into the hint so nothing is silently dropped.
