@@ -1,5 +1,6 @@
 // ao.glsl: ambient occlusion from the distance field alone (Quilez).
 #pragma once
+#include "aov.glsl"
 
 // Occlusion factor in [0,1] (1 = open) at surface point p with unit normal n.
 // AO_TAPS samples at h_i = 0.01 + (AO_RADIUS - 0.01) * i/(AO_TAPS-1) along n:
@@ -17,6 +18,7 @@ float ambientOcclusion(vec3 p, vec3 n) {
     occ += (h - map(p + h * n).x) * s;
     s *= 0.95;
   }
+  MS_COUNT_SDF(AO_TAPS);
   return saturate(1.0 - 3.0 * occ * (5.0 / float(AO_TAPS)));
 #else
   return 1.0;

@@ -11,6 +11,34 @@
 #include "ao.glsl"
 #include "material.glsl"
 #include "lighting.glsl"
+#include "aov.glsl"
+
+#if AOV_OUTPUTS
+// Extra targets, accumulated additively over samples like outColor (the host
+// divides by spp). Layout and miss values: docs/shader-library.md, "AOVs".
+layout(location = 1) out vec4 outGeom;  // depth t (world units), N.x, N.y, N.z
+layout(location = 2) out vec4 outMisc;  // primary steps, material id, shadow, ao
+layout(location = 3) out vec4 outCost;  // shadow steps, reflection steps, map() calls, 1 if primary hit the step cap
+#endif
+#if DEBUG_VIEW < 0 || DEBUG_VIEW > 6
+#error "marchstudio: DEBUG_VIEW must be 0..6 (1 steps, 2 normals, 3 depth, 4 AO, 5 shadow, 6 material)"
+#endif
+
+#if MS_CAPTURE
+// What the primary ray found, for AOVs and debug views. The per-hit fields
+// stay 0 on a miss (and n, shadow, ao on hits lost in the haze, which are not
+// shaded), so averaging over samples weights them by coverage.
+struct PrimaryAov {
+  bool  hit, capped;
+  float depth;       // TraceResult.t of the primary ray
+  vec3  n;           // the shading normal (after the silhouette tilt)
+  int   mat;
+  float shadow;      // mean softShadow() over lights with N.L > 0; 1 when there is none
+  float ao;
+  int   reflSteps;   // steps of all reflection segments
+};
+PrimaryAov msPrimary = PrimaryAov(false, false, 0.0, vec3(0.0), 0, 0.0, 0.0, 0);
+#endif
 
 #if ENABLE_REFLECTIONS && MAX_BOUNCES > 0
 #define MS_SEGMENTS (MAX_BOUNCES + 1)   // primary ray + one per bounce
@@ -45,6 +73,16 @@ vec3 renderSample(vec2 pix, out int primarySteps) {
   for (int seg = 0; seg < MS_SEGMENTS; ++seg) {
     TraceResult tr = trace(ray, 0.0);
     if (seg == 0) primarySteps = tr.steps;
+#if MS_CAPTURE
+    if (seg == 0) {
+      msPrimary.hit = tr.hit;
+      msPrimary.capped = tr.capped;
+      msPrimary.depth = tr.hit ? tr.t : 0.0;
+      msPrimary.mat = tr.hit ? tr.mat : 0;
+    } else {
+      msPrimary.reflSteps += tr.steps;
+    }
+#endif
     if (!tr.hit) {
       radiance += throughput * skyColor(ray.d);
       break;
@@ -69,7 +107,15 @@ vec3 renderSample(vec2 pix, out int primarySteps) {
     vec3 dPdy = transferToSurface(ray.dOdy + tr.t * ray.dDdy, ray.d, n);
     Surface s = getSurface(tr.mat, p, n, dPdx, dPdy);
     float offset = surfaceOffset(fp);
-    vec3 local = shadeBlinnPhong(s, p, n, -ray.d, ambientOcclusion(p, n), offset);
+    float ao = ambientOcclusion(p, n);
+    vec3 local = shadeBlinnPhong(s, p, n, -ray.d, ao, offset);
+#if MS_CAPTURE
+    if (seg == 0) {  // the primary hit's shading cast the sample's first shadow rays
+      msPrimary.n = n;
+      msPrimary.ao = ao;
+      msPrimary.shadow = msShadowCount > 0 ? msShadowSum / float(msShadowCount) : 1.0;
+    }
+#endif
 
 #if MS_SEGMENTS > 1
     float F = s.f0 > 0.0 ? fresnelSchlick(s.f0, dot(n, -ray.d)) : 0.0;
@@ -97,11 +143,45 @@ vec3 renderSample(vec2 pix, out int primarySteps) {
   return radiance;
 }
 
+#if DEBUG_VIEW
+// The debug view's linear colour (the post pass still tone maps it). Misses
+// are black except in the steps view, where their steps are real cost.
+vec3 debugViewColor(int primarySteps) {
+  PrimaryAov a = msPrimary;
+#if DEBUG_VIEW == 1
+  return stepsHeat(float(primarySteps));
+#elif DEBUG_VIEW == 2
+  return dot(a.n, a.n) > 0.0 ? 0.5 * a.n + 0.5 : vec3(0.0);
+#elif DEBUG_VIEW == 3
+  return a.hit ? vec3(depthShade(a.depth)) : vec3(0.0);
+#elif DEBUG_VIEW == 4
+  return vec3(a.ao);
+#elif DEBUG_VIEW == 5
+  return vec3(a.shadow);
+#else
+  return a.hit ? materialColor(a.mat) : vec3(0.0);
+#endif
+}
+#endif
+
 void main() {
   int primarySteps;  // kept for the step-count AOV
   vec3 c = renderSample(floor(gl_FragCoord.xy) + uJitter, primarySteps);
   // Last line of defence: the pipeline guards its divisions, but a user map()
   // may not; a NaN would poison the whole accumulation buffer.
   if (notFinite(c)) c = vec3(0.0);
+#if DEBUG_VIEW
+  c = debugViewColor(primarySteps);
+#endif
+#if AOV_OUTPUTS
+  // Alpha carries hit coverage here (post ignores the accumulated alpha and
+  // writes 1), so accumulated alpha / spp = the fraction of samples that hit.
+  outColor = vec4(max(c, vec3(0.0)), msPrimary.hit ? 1.0 : 0.0);
+  outGeom = vec4(msPrimary.depth, msPrimary.n);
+  outMisc = vec4(float(primarySteps), float(msPrimary.mat), msPrimary.shadow, msPrimary.ao);
+  outCost = vec4(float(msShadowSteps), float(msPrimary.reflSteps), float(msSdfEvals),
+                 msPrimary.capped ? 1.0 : 0.0);
+#else
   outColor = vec4(max(c, vec3(0.0)), 1.0);
+#endif
 }

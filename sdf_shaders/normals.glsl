@@ -1,5 +1,6 @@
 // normals.glsl: surface normals from the distance field's gradient.
 #pragma once
+#include "aov.glsl"
 
 // Normal epsilon for a hit whose pixel footprint is `footprint` wide: half a
 // footprint (matches the hit tolerance, so the 4 taps straddle what the
@@ -20,5 +21,6 @@ vec3 calcNormal(vec3 p, float eps, vec3 fallback) {
     vec3 e = 2.0 * vec3(((i + 3) >> 1) & 1, (i >> 1) & 1, i & 1) - 1.0;
     n += e * map(p + e * eps).x;
   }
+  MS_COUNT_SDF(4);
   return safeNormalize(n, fallback);
 }

@@ -4,6 +4,7 @@
 // exact outside and a bound inside; intersection and subtraction are bounds
 // (never overestimate), so sphere tracing stays safe with LIPSCHITZ 1.
 #pragma once
+#include "common.glsl"
 
 // Union: min. 1-Lipschitz; exact outside all shapes.
 float opUnion(float a, float b) { return min(a, b); }

@@ -4,6 +4,7 @@
 // Move a shape by evaluating it at p - centre; rotate with an orthonormal
 // matrix (both keep exactness). Scaling by s: sdX(p / s) * s stays exact.
 #pragma once
+#include "common.glsl"
 
 // Sphere of radius r. Exact.
 float sdSphere(vec3 p, float r) {

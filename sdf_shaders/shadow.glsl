@@ -1,5 +1,6 @@
 // shadow.glsl: soft shadows from the distance field, penumbra sized by the light.
 #pragma once
+#include "aov.glsl"
 
 // Penumbra sharpness for a light of angular radius theta: k = 1/tan(theta)
 // (the estimator reaches 1 where an occluder clears the ray by the light's
@@ -18,13 +19,15 @@ float shadowSharpness(float tanTheta) {
 // [SHADOW_MIN_STEP, SHADOW_MAX_STEP]; exits early once fully shadowed; the
 // result is smoothstepped (removes the estimator's hard knee at the
 // umbra edge).
-float softShadow(vec3 ro, vec3 rd, float tmax, float k) {
+float softShadowMarch(vec3 ro, vec3 rd, float tmax, float k) {
 #if ENABLE_SHADOWS && SHADOW_STEPS > 0
   float res = 1.0;
   float ph = BIG;
   float t = 0.0;
   for (int i = 0; i < SHADOW_STEPS; ++i) {
     float h = map(ro + rd * t).x;
+    MS_COUNT_SDF(1);
+    MS_COUNT_SHADOW_STEP();
     if (h < float(HIT_EPSILON)) return 0.0;
     float y = h * h / (2.0 * ph);
     float d = sqrt(max(h * h - y * y, 0.0));
@@ -38,4 +41,12 @@ float softShadow(vec3 ro, vec3 rd, float tmax, float k) {
 #else
   return 1.0;
 #endif
+}
+
+// The shadow term lighting.glsl uses: softShadowMarch(), plus (only for AOVs
+// and debug views) recording the result for the shadow AOV.
+float softShadow(vec3 ro, vec3 rd, float tmax, float k) {
+  float v = softShadowMarch(ro, rd, tmax, k);
+  MS_RECORD_SHADOW(v);
+  return v;
 }

@@ -1,5 +1,6 @@
 // trace.glsl: sphere tracing (Hart 1996) with a pixel-footprint hit tolerance.
 #pragma once
+#include "aov.glsl"
 
 // What a traced ray found. `steps` is kept for the step-count AOV.
 struct TraceResult {
@@ -8,6 +9,7 @@ struct TraceResult {
   int   mat;    // material id at the hit, clamped to [0, NUM_MATERIALS-1]
   int   steps;  // map() evaluations spent
   bool  hit;    // true: t is on a surface (converged, or step budget spent near one)
+  bool  capped; // true: MAX_STEPS ran out before converging or passing MAX_DIST (the step-cap AOV)
 };
 
 // Sphere-traces `r` from tmin to MAX_DIST, stepping d / LIPSCHITZ, which is
@@ -27,6 +29,7 @@ TraceResult trace(Ray r, float tmin) {
   res.mat = 0;
   res.steps = 0;
   res.hit = false;
+  res.capped = false;
   float t = tmin;
   vec2 h = vec2(BIG, 0.0);
   for (int i = 0; i < MAX_STEPS; ++i) {
@@ -40,7 +43,9 @@ TraceResult trace(Ray r, float tmin) {
     t += h.x / float(LIPSCHITZ);
     if (t > float(MAX_DIST)) break;
   }
-  res.hit = res.hit || t <= float(MAX_DIST);  // budget spent close to a surface
+  res.capped = !res.hit && t <= float(MAX_DIST);
+  res.hit = res.hit || res.capped;  // budget spent close to a surface
+  MS_COUNT_SDF(res.steps);          // one map() per step
   res.t = min(t, float(MAX_DIST));
   res.d = h.x;
   res.mat = clamp(int(h.y + 0.5), 0, NUM_MATERIALS - 1);

@@ -1,15 +1,20 @@
 #include "render/frame.h"
 
+#include <algorithm>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
+#include "render/aov.h"
 #include "render/samples.h"
 
 namespace ms {
 namespace {
 
-// Two RGBA32F buffers; 4 GiB keeps llvmpipe and most GPUs out of trouble.
+// The AOV attachments after the colour one (outGeom, outMisc, outCost).
+constexpr int kAovTargets = 3;
+// All RGBA32F buffers of a frame; 4 GiB keeps llvmpipe and most GPUs out of trouble.
 constexpr double kMaxFrameBytes = 4.0 * 1024 * 1024 * 1024;
 
 // Images are stored top row first; GL's first row is the bottom one.
@@ -27,29 +32,55 @@ void flip_rows(Image& img) {
 
 }  // namespace
 
+// `n` RGBA32F textures as colour attachments 0..n-1 of one framebuffer
+// (n > 1: the AOV targets, written in one pass through glDrawBuffers).
 struct RenderTarget {
-  GLuint tex = 0, fbo = 0;
-  RenderTarget(int w, int h) {
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, w, h);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  std::vector<GLuint> tex;
+  GLuint fbo = 0;
+  RenderTarget(int w, int h, int n = 1) : tex(n) {
+    glGenTextures(n, tex.data());
     glGenFramebuffers(1, &fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    std::vector<GLenum> bufs;
+    for (int i = 0; i < n; ++i) {
+      glBindTexture(GL_TEXTURE_2D, tex[i]);
+      glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, w, h);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, tex[i], 0);
+      bufs.push_back(GL_COLOR_ATTACHMENT0 + i);
+    }
+    glDrawBuffers(n, bufs.data());
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       fail_system("GL: float framebuffer is incomplete");
   }
   ~RenderTarget() {
     glDeleteFramebuffers(1, &fbo);
-    glDeleteTextures(1, &tex);
+    glDeleteTextures(static_cast<GLsizei>(tex.size()), tex.data());
   }
   RenderTarget(const RenderTarget&) = delete;
   RenderTarget& operator=(const RenderTarget&) = delete;
+  int count() const { return static_cast<int>(tex.size()); }
 };
 
-void check_frame_size(const GlInfo& info, int width, int height) {
+// Reads colour attachment `i` of `fbo` as RGBA float, top row first.
+static std::vector<float> read_attachment(GLuint fbo, int i, int w, int h) {
+  Image img;
+  img.width = w;
+  img.height = h;
+  img.channels = {"R", "G", "B", "A"};
+  img.pixels.resize(static_cast<size_t>(w) * h * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, img.pixels.data());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  flip_rows(img);
+  return std::move(img.pixels);
+}
+
+void check_frame_size(const GlInfo& info, int width, int height, int targets) {
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   if (width < 1 || height < 1) fail_input("image size " + size + " must be at least 1x1", {}, 0, "--size");
   int max_w = info.max_viewport[0], max_h = info.max_viewport[1];
@@ -61,7 +92,7 @@ void check_frame_size(const GlInfo& info, int width, int height) {
     fail_input("image size " + size + " exceeds this GL's limit of " + std::to_string(max_w) + "x" +
                    std::to_string(max_h),
                {}, 0, "--size", "GL_MAX_VIEWPORT_DIMS / GL_MAX_TEXTURE_SIZE of " + info.renderer);
-  const double bytes = 2.0 * 16.0 * width * height;
+  const double bytes = 16.0 * targets * width * height;
   if (bytes > kMaxFrameBytes)
     fail_input("image size " + size + " needs " + std::to_string(static_cast<long long>(bytes / (1 << 20))) +
                    " MiB of frame buffers, over the 4096 MiB budget",
@@ -74,18 +105,21 @@ FrameRenderer::~FrameRenderer() { glDeleteVertexArrays(1, &vao_); }  // targets 
 
 void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, const Program& post,
                          const FrameParams& p) {
-  check_frame_size(ctx_.info(), p.width, p.height);
-  if (p.width != width_ || p.height != height_ || !accum_) {
-    accum_ = std::make_unique<RenderTarget>(p.width, p.height);
+  const int attachments = p.aovs ? 1 + kAovTargets : 1;
+  check_frame_size(ctx_.info(), p.width, p.height, attachments + 1);
+  if (p.width != width_ || p.height != height_ || !accum_ || accum_->count() != attachments) {
+    accum_ = std::make_unique<RenderTarget>(p.width, p.height, attachments);
     result_ = std::make_unique<RenderTarget>(p.width, p.height);
     width_ = p.width;
     height_ = p.height;
   }
+  spp_ = std::max(p.spp, 1);
   glBindVertexArray(vao_);
   glViewport(0, 0, p.width, p.height);
   glDisable(GL_DEPTH_TEST);
 
-  // Samples add up in the float buffer; post divides by the count.
+  // Samples add up in the float buffers (blending applies to every draw
+  // buffer, AOVs included); post divides the colour by the count.
   glBindFramebuffer(GL_FRAMEBUFFER, accum_->fbo);
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT);
@@ -104,7 +138,7 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);
   glUseProgram(post.id());
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, accum_->tex);
+  glBindTexture(GL_TEXTURE_2D, accum_->tex[0]);
   glUniform1i(post.loc("uAccum"), 0);
   glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(p.spp));
   glUniform1f(post.loc("uExposure"), p.exposure);
@@ -120,16 +154,35 @@ Image FrameRenderer::read_color() const {
   img.width = width_;
   img.height = height_;
   img.channels = {"R", "G", "B", "A"};
-  img.pixels.resize(static_cast<size_t>(width_) * height_ * 4);
-  glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, img.pixels.data());
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  flip_rows(img);
+  img.pixels = read_attachment(result_->fbo, 0, width_, height_);
   return img;
 }
 
-GLuint FrameRenderer::color_texture() const { return result_ ? result_->tex : 0; }
+Image FrameRenderer::read_aovs() const {
+  Image img;
+  if (!accum_ || accum_->count() != 1 + kAovTargets) return img;
+  img.width = width_;
+  img.height = height_;
+  img.channels = kAovChannels;
+  const size_t npix = static_cast<size_t>(width_) * height_, nch = kAovChannels.size();
+  img.pixels.resize(npix * nch);
+  // Attachment 0's alpha counts the hits; 1..3 hold 4 channels each, in
+  // kAovChannels order after `hit`.
+  const float inv = 1.0f / static_cast<float>(spp_);
+  for (int a = 0; a <= kAovTargets; ++a) {
+    const std::vector<float> px = read_attachment(accum_->fbo, a, width_, height_);
+    for (size_t p = 0; p < npix; ++p) {
+      if (a == 0) {
+        img.pixels[p * nch] = px[p * 4 + 3] * inv;
+      } else {
+        for (int c = 0; c < 4; ++c) img.pixels[p * nch + 1 + (a - 1) * 4 + c] = px[p * 4 + c] * inv;
+      }
+    }
+  }
+  return img;
+}
+
+GLuint FrameRenderer::color_texture() const { return result_ ? result_->tex[0] : 0; }
 GLuint FrameRenderer::color_framebuffer() const { return result_ ? result_->fbo : 0; }
 
 Image FrameRenderer::render(const Program& main, const UniformFn& set_uniforms, const Program& post,

@@ -16,14 +16,18 @@ struct FrameParams {
   int height = 0;
   int spp = 1;
   float exposure = 1.0f;
+  // Also accumulate the AOV targets (locations 1..3): the main program must be
+  // assembled with AOV_OUTPUTS 1 (render/aov.h). read_aovs() reads them.
+  bool aovs = false;
 };
 
 // Sets the main program's per-frame uniforms (it is bound when called).
 using UniformFn = std::function<void(const Program&)>;
 
 // Throws bad_input (key "--size") when width/height is not in 1..the GL
-// limits, or the buffers would exceed a sane memory budget.
-void check_frame_size(const GlInfo& info, int width, int height);
+// limits, or the buffers would exceed a sane memory budget. `targets`: how
+// many RGBA32F buffers the frame needs (2 plain, 5 with AOVs).
+void check_frame_size(const GlInfo& info, int width, int height, int targets = 2);
 
 struct RenderTarget;  // an RGBA32F texture with its framebuffer (frame.cpp)
 
@@ -40,6 +44,10 @@ class FrameRenderer {
   void draw(const Program& main, const UniformFn& set_uniforms, const Program& post, const FrameParams& p);
   // The post output of the last draw(): channels R,G,B,A, top row first.
   Image read_color() const;
+  // The AOVs of the last draw() with FrameParams::aovs, averaged over its
+  // samples: channels kAovChannels (render/aov.h), top row first. Empty
+  // Image when the last draw had no AOVs.
+  Image read_aovs() const;
   // The post output as a texture and framebuffer (the viewer blits it).
   GLuint color_texture() const;
   GLuint color_framebuffer() const;
@@ -50,7 +58,7 @@ class FrameRenderer {
  private:
   const Context& ctx_;
   GLuint vao_ = 0;
-  int width_ = 0, height_ = 0;
+  int width_ = 0, height_ = 0, spp_ = 1;
   std::unique_ptr<RenderTarget> accum_, result_;
 };
 

@@ -57,6 +57,25 @@ void set_scene_uniforms(const Program& p, const Scene& s, int width, int height,
   }
 }
 
+BlackChannels::BlackChannels() {
+  const float black[4] = {0, 0, 0, 1};
+  glGenTextures(1, &tex_);
+  glBindTexture(GL_TEXTURE_2D, tex_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, 1, 0, GL_RGBA, GL_FLOAT, black);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+BlackChannels::~BlackChannels() { glDeleteTextures(1, &tex_); }
+
+void BlackChannels::bind() const {
+  for (int i = 0; i < 4; ++i) {
+    glActiveTexture(GL_TEXTURE0 + i);
+    glBindTexture(GL_TEXTURE_2D, tex_);
+  }
+  glActiveTexture(GL_TEXTURE0);
+}
+
 void set_shadertoy_uniforms(const Program& p, int width, int height, const ShadertoyInputs& in) {
   glUniform3f(p.loc("iResolution"), static_cast<float>(width), static_cast<float>(height), 1.0f);
   set1(p, "iTime", in.time);

@@ -16,6 +16,20 @@ struct ShadertoyInputs {
   float mouse[4] = {0, 0, 0, 0};
 };
 
+// iChannel0..3 of a Shadertoy shader: a black 1x1 texture, as an unbound
+// Shadertoy input reads. bind() puts it on texture units 0..3.
+class BlackChannels {
+ public:
+  BlackChannels();
+  ~BlackChannels();
+  BlackChannels(const BlackChannels&) = delete;
+  BlackChannels& operator=(const BlackChannels&) = delete;
+  void bind() const;
+
+ private:
+  GLuint tex_ = 0;
+};
+
 // iResolution, iTime, iTimeDelta, iFrameRate, iFrame, iMouse, iDate,
 // iChannel*. iDate is 2000-01-01 plus iTime seconds: deterministic, never
 // the wall clock. iChannel0..3 are bound to a black 1x1 texture (the caller

@@ -1,0 +1,124 @@
+#include "bench/bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+#include "core/error.h"
+#include "render/frame.h"
+#include "render/gpu_timer.h"
+#include "render/uniforms.h"
+#include "shader/assemble.h"
+
+namespace ms {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+std::vector<double> channel(const Image& img, const std::string& name) {
+  const auto it = std::find(img.channels.begin(), img.channels.end(), name);
+  if (it == img.channels.end()) fail_system("bench: the counting pass has no '" + name + "' channel");
+  const size_t c = static_cast<size_t>(it - img.channels.begin()), n = img.channels.size();
+  std::vector<double> v(static_cast<size_t>(img.width) * img.height);
+  for (size_t p = 0; p < v.size(); ++p) v[p] = img.pixels[p * n + c];
+  return v;
+}
+
+double fraction_over_half(const std::vector<double>& v) {
+  if (v.empty()) return 0.0;
+  const auto k = std::count_if(v.begin(), v.end(), [](double x) { return x > 0.5; });
+  return static_cast<double>(k) / static_cast<double>(v.size());
+}
+
+}  // namespace
+
+void check_bench_settings(const BenchSettings& s) {
+  if (s.frames < 1 || s.frames > 100000) fail_input("--frames must be in 1..100000", {}, 0, "--frames");
+  if (s.warmup < 0 || s.warmup > 100000) fail_input("--warmup must be in 0..100000", {}, 0, "--warmup");
+  if (s.spp < 1 || s.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
+}
+
+BenchCost measure_cost(const Image& aovs) {
+  BenchCost c;
+  c.pixels = static_cast<long long>(aovs.width) * aovs.height;
+  c.primary_steps = count_stats(channel(aovs, "steps"));
+  c.shadow_steps = count_stats(channel(aovs, "shadow_steps"));
+  c.reflection_steps = count_stats(channel(aovs, "reflection_steps"));
+  c.sdf_evals = count_stats(channel(aovs, "sdf_evals"));
+  c.step_cap_fraction = fraction_over_half(channel(aovs, "step_cap"));
+  c.hit_fraction = fraction_over_half(channel(aovs, "hit"));
+  return c;
+}
+
+BenchResult run_bench(const Context& ctx, const Scene& scene, const ShaderSource& main,
+                      const ShaderSource& counting, const ShaderSource& post, const BenchSettings& s) {
+  check_bench_settings(s);
+  check_frame_size(ctx.info(), s.width, s.height, 6);  // the counting pass's AOV targets
+  BenchResult r;
+  r.backend = ctx.backend();
+  r.gl_renderer = ctx.info().renderer;
+  r.gl_vendor = ctx.info().vendor;
+  r.gl_version = ctx.info().version;
+
+  FrameRenderer renderer(ctx);
+  FrameParams fp;
+  fp.width = s.width;
+  fp.height = s.height;
+  fp.spp = s.spp;
+  fp.exposure = scene.render.exposure;
+  auto uniforms_at = [&](int w, int h) {
+    return [&scene, &s, w, h](const Program& p) { set_scene_uniforms(p, scene, w, h, s.time, 0); };
+  };
+
+  // Startup: compile and link, then force the lazy code generation with a
+  // 1x1 frame, then the first full-size frame.
+  const Clock::time_point t0 = Clock::now();
+  const std::string vs = fullscreen_vertex_source();
+  const Program main_prog(vs, main);
+  const Program post_prog(vs, post);
+  r.link_ms = ms_since(t0);
+  FrameParams tiny = fp;
+  tiny.width = tiny.height = 1;
+  tiny.spp = 1;
+  renderer.draw(main_prog, uniforms_at(1, 1), post_prog, tiny);
+  glFinish();
+  r.compile_link_ms = ms_since(t0);
+  renderer.draw(main_prog, uniforms_at(s.width, s.height), post_prog, fp);
+  glFinish();
+  r.first_frame_ms = ms_since(t0);
+
+  // Timed frames: the GPU timer brackets exactly the draw; wall time adds
+  // the wait for completion (glFinish), which is what a user sees.
+  for (int i = 0; i < s.warmup; ++i) renderer.draw(main_prog, uniforms_at(s.width, s.height), post_prog, fp);
+  glFinish();
+  GpuTimer timer;
+  std::vector<double> gpu, wall;
+  for (int i = 0; i < s.frames; ++i) {
+    const Clock::time_point w0 = Clock::now();
+    timer.begin();
+    renderer.draw(main_prog, uniforms_at(s.width, s.height), post_prog, fp);
+    timer.end();
+    glFinish();
+    wall.push_back(ms_since(w0));
+    gpu.push_back(timer.wait_ms());
+  }
+  r.gpu_timer = std::any_of(gpu.begin(), gpu.end(), [](double x) { return x > 0.0; });
+  r.gpu_ms = summarize(gpu);
+  r.wall_ms = summarize(wall);
+
+  // The counting pass: one sample per pixel at the pixel centre, so the
+  // counts are those of the image's primary rays and nothing random.
+  const Program count_prog(vs, counting);
+  FrameParams cp = fp;
+  cp.spp = 1;
+  cp.aovs = true;
+  renderer.draw(count_prog, uniforms_at(s.width, s.height), post_prog, cp);
+  r.cost = measure_cost(renderer.read_aovs());
+  return r;
+}
+
+}  // namespace ms

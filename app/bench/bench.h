@@ -1,0 +1,71 @@
+// `marchstudio bench`: how long a scene takes to compile and to render, and
+// what it costs in deterministic units (steps and map() calls per pixel).
+// Drives the same FrameRenderer as `render`; never forks the pipeline.
+// Output format and schema: docs/bench.md.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "bench/stats.h"
+#include "gl/context.h"
+#include "io/image.h"
+#include "scene/scene.h"
+#include "shader/preprocess.h"
+
+namespace ms {
+
+struct BenchSettings {
+  int width = 0, height = 0;
+  int spp = 1;        // samples per timed frame (the counting pass always uses 1)
+  int frames = 30;    // timed frames
+  int warmup = 3;     // untimed frames drawn first
+  float time = 0.0f;  // scene time of every frame (uFrame is 0: every frame does the same work)
+  // Whether the drivers' on-disk shader caches may serve the compile. Off by
+  // default, so compile times are cold and repeatable (the caller sets the
+  // driver environment before creating the context: see bench_cmd.cpp).
+  bool shader_cache = false;
+};
+
+// The deterministic cost of one frame at spp 1, from the AOV counters.
+// Every figure is over ALL pixels (sky pixels included: their primary rays
+// cost steps too); fractions are counts / pixels.
+struct BenchCost {
+  long long pixels = 0;
+  CountStats primary_steps;     // map() calls of the primary ray
+  CountStats shadow_steps;      // all shadow rays of the pixel (every light, every bounce)
+  CountStats reflection_steps;  // all reflection segments of the pixel
+  CountStats sdf_evals;         // every map() call: trace, normals, shadows, AO, reflections
+  double step_cap_fraction = 0; // primary ray ran out of MAX_STEPS (neither converged nor escaped)
+  double hit_fraction = 0;      // primary ray hit a surface
+};
+
+// Cost from FrameRenderer::read_aovs() of a spp-1 AOV frame (channels
+// steps, shadow_steps, reflection_steps, sdf_evals, step_cap, hit).
+BenchCost measure_cost(const Image& aovs);
+
+struct BenchResult {
+  std::string backend, gl_renderer, gl_vendor, gl_version;
+  // Startup, milliseconds of wall time. llvmpipe compiles a program's
+  // machine code lazily at its first draw, so link_ms (the Program
+  // constructors returning) hides most of the work: compile_link_ms also
+  // includes a 1x1 frame drawn and finished, which forces it.
+  double link_ms = 0, compile_link_ms = 0;
+  // From before compiling to the end of the first full-size frame (finished).
+  double first_frame_ms = 0;
+  bool gpu_timer = true;  // false: the driver reported no GL_TIME_ELAPSED results (all 0)
+  Summary gpu_ms;         // GL_TIME_ELAPSED around each frame's draw (samples + post)
+  Summary wall_ms;        // steady clock around draw + glFinish
+  BenchCost cost;
+};
+
+// Throws bad_input for settings out of range (keys --frames, --warmup,
+// --spp); run_bench() calls it too, callers may call it before making a
+// context.
+void check_bench_settings(const BenchSettings& s);
+
+// Times `main` (a scene's plain main pass) and counts `counting` (the same
+// scene assembled with AOV_OUTPUTS 1) in the current context.
+BenchResult run_bench(const Context& ctx, const Scene& scene, const ShaderSource& main,
+                      const ShaderSource& counting, const ShaderSource& post, const BenchSettings& s);
+
+}  // namespace ms

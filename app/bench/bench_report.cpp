@@ -1,0 +1,92 @@
+#include "bench/bench_report.h"
+
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+namespace ms {
+namespace {
+
+using nlohmann::ordered_json;  // keeps the documented field order
+
+ordered_json to_json(const Summary& s) {
+  return {{"min", s.min}, {"median", s.median}, {"p95", s.p95}, {"max", s.max}, {"mean", s.mean}};
+}
+
+ordered_json to_json(const CountStats& c) { return {{"mean", c.mean}, {"p99", c.p99}, {"max", c.max}}; }
+
+std::string format(const char* fmt, double a, double b, double c, double d) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, fmt, a, b, c, d);
+  return buf;
+}
+
+}  // namespace
+
+std::string bench_json(const BenchSubject& subject, const BenchSettings& s, const BenchResult& r) {
+  ordered_json j;
+  j["schema"] = kBenchSchema;
+  j["scene"] = {{"file", subject.scene_file}, {"name", subject.scene_name}};
+  j["settings"] = {{"width", s.width},   {"height", s.height}, {"spp", s.spp},
+                   {"frames", s.frames}, {"warmup", s.warmup}, {"time", s.time},
+                   {"disable", subject.disable}, {"shader_cache", s.shader_cache}};
+  j["machine"] = {{"backend", r.backend},
+                  {"gl_renderer", r.gl_renderer},
+                  {"gl_vendor", r.gl_vendor},
+                  {"gl_version", r.gl_version}};
+  j["startup_ms"] = {{"link", r.link_ms},
+                     {"compile_link", r.compile_link_ms},
+                     {"first_frame", r.first_frame_ms},
+                     {"lazy_compile_forced_by", "1x1 frame"}};
+  j["frame_ms"] = {{"gpu_timer", r.gpu_timer}, {"gpu", to_json(r.gpu_ms)}, {"wall", to_json(r.wall_ms)}};
+  const BenchCost& c = r.cost;
+  j["cost"] = {{"spp", 1},
+               {"pixels", c.pixels},
+               {"primary_steps", to_json(c.primary_steps)},
+               {"shadow_steps", to_json(c.shadow_steps)},
+               {"reflection_steps", to_json(c.reflection_steps)},
+               {"sdf_evals", to_json(c.sdf_evals)},
+               {"step_cap_fraction", c.step_cap_fraction},
+               {"hit_fraction", c.hit_fraction}};
+  return j.dump(2) + "\n";
+}
+
+std::string bench_table(const BenchSubject& subject, const BenchSettings& s, const BenchResult& r) {
+  std::string out;
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "scene     %s (%s)\nsettings  %dx%d, spp %d, %d frames after %d warm-up\n",
+                subject.scene_name.c_str(), subject.scene_file.c_str(), s.width, s.height, s.spp, s.frames,
+                s.warmup);
+  out += buf;
+  std::snprintf(buf, sizeof buf, "machine   %s, %s, GL %s\n", r.backend.c_str(), r.gl_renderer.c_str(),
+                r.gl_version.c_str());
+  out += buf;
+  std::snprintf(buf, sizeof buf,
+                "startup   link %.1f ms, compile+link %.1f ms (incl. a 1x1 frame), first frame %.1f ms (%s)\n",
+                r.link_ms, r.compile_link_ms, r.first_frame_ms,
+                s.shader_cache ? "shader cache allowed" : "cold: shader cache off");
+  out += buf;
+  out += "\nframe ms       min    median       p95       max\n";
+  if (r.gpu_timer)
+    out += format("  gpu   %9.2f %9.2f %9.2f %9.2f\n", r.gpu_ms.min, r.gpu_ms.median, r.gpu_ms.p95, r.gpu_ms.max);
+  else
+    out += "  gpu   (no GL_TIME_ELAPSED results from this driver)\n";
+  out += format("  wall  %9.2f %9.2f %9.2f %9.2f\n", r.wall_ms.min, r.wall_ms.median, r.wall_ms.p95, r.wall_ms.max);
+  const BenchCost& c = r.cost;
+  std::snprintf(buf, sizeof buf, "\ncost per pixel (spp 1, %lld pixels)  mean       p99       max\n", c.pixels);
+  out += buf;
+  auto row = [&](const char* name, const CountStats& st) {
+    std::snprintf(buf, sizeof buf, "  %-18s %14.2f %9.0f %9.0f\n", name, st.mean, st.p99, st.max);
+    out += buf;
+  };
+  row("primary steps", c.primary_steps);
+  row("shadow steps", c.shadow_steps);
+  row("reflection steps", c.reflection_steps);
+  row("sdf evaluations", c.sdf_evals);
+  std::snprintf(buf, sizeof buf, "  step-cap pixels    %13.3f%%\n  hit pixels         %13.1f%%\n",
+                100.0 * c.step_cap_fraction, 100.0 * c.hit_fraction);
+  out += buf;
+  return out;
+}
+
+}  // namespace ms

@@ -1,0 +1,90 @@
+#include "cli/bench_cmd.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <regex>
+
+#include "bench/bench.h"
+#include "bench/bench_report.h"
+#include "cli/input.h"
+#include "cli/shader_dir.h"
+#include "core/error.h"
+#include "render/aov.h"
+#include "scene/animation.h"
+#include "shader/assemble.h"
+
+namespace ms {
+
+CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
+  CLI::App* cmd = app.add_subcommand("bench", "Time a scene and count its steps per pixel (docs/bench.md)");
+  cmd->add_option("scene", a.input, "Scene .toml")->required();
+  cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)");
+  cmd->add_option("--frames", a.frames, "Timed frames (default 30)");
+  cmd->add_option("--warmup", a.warmup, "Untimed frames before them (default 3)");
+  cmd->add_option("--spp", a.spp, "Samples per timed frame (default: the scene's; the cost pass uses 1)");
+  cmd->add_flag("--json", a.json, "Print one JSON object (schema marchstudio.bench/1) instead of a table");
+  cmd->add_flag("--shader-cache", a.shader_cache,
+                "Allow the driver's on-disk shader cache (default: off, so compile times are cold)");
+  cmd->add_option("--backend", a.backend, "GL context: auto, egl or osmesa")
+      ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+  cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
+  cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"shadows", "reflections", "ao", "checker-filter"}));
+  return cmd;
+}
+
+namespace {
+
+// Mesa (llvmpipe included) and NVIDIA keep compiled shaders on disk; a
+// cache hit turns a 100 ms compile into 10 ms, so a second bench run would
+// report a different compile time. Read by the driver at context creation.
+void set_shader_cache(bool allowed) {
+  ::setenv("MESA_SHADER_CACHE_DISABLE", allowed ? "false" : "true", 1);
+  ::setenv("__GL_SHADER_DISK_CACHE", allowed ? "1" : "0", 1);
+}
+
+}  // namespace
+
+int run_bench_command(const BenchArgs& a) {
+  const Backend backend = parse_backend(a.backend);
+  AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}};
+  const LoadedInput in = load_input(a.input, a.disable, opts);
+  if (in.shadertoy)
+    fail_input("bench needs an SDF scene: a Shadertoy shader has no step counters", a.input, 0, {},
+               "wrap the map in a scene .toml");
+  // The counting pass: the same scene with the AOV counters compiled in.
+  opts.defines = aov_defines();
+  const ShaderSource counting = assemble_scene(in.scene, opts);
+  const ShaderSource post = assemble_post(in.scene.render.tonemap, true, opts);
+
+  BenchSettings s;
+  s.width = in.scene.render.width;
+  s.height = in.scene.render.height;
+  if (!a.size.empty()) {
+    const ImageSize size = parse_size_flag(a.size);
+    s.width = size.width;
+    s.height = size.height;
+  }
+  s.spp = a.spp > 0 ? a.spp : in.scene.render.spp;
+  if (a.spp < 0) s.spp = a.spp;  // run_bench rejects it with the flag's name
+  s.frames = a.frames;
+  s.warmup = a.warmup;
+  s.time = in.scene.render.time;
+
+  s.shader_cache = a.shader_cache;
+  check_bench_settings(s);  // before the (slow) context
+  set_shader_cache(s.shader_cache);
+  std::unique_ptr<Context> ctx = create_headless_context(backend);
+  // Keyframed values at the benchmarked time, as render poses them.
+  const Scene posed = animated(in.scene, s.time);
+  const BenchResult r = run_bench(*ctx, posed, in.main, counting, post, s);
+  const BenchSubject subject{a.input, in.scene.name, a.disable};
+  const std::string text = a.json ? bench_json(subject, s, r) : bench_table(subject, s, r);
+  std::fputs(text.c_str(), stdout);
+  return 0;
+}
+
+}  // namespace ms

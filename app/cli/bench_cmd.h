@@ -1,0 +1,29 @@
+// `marchstudio bench SCENE`: frame times, startup times and per-pixel cost
+// of a scene, as a table or one JSON object (docs/bench.md).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace ms {
+
+struct BenchArgs {
+  std::string input;       // a scene .toml with an SDF map
+  std::string size;        // "WxH", empty: the scene's
+  int frames = 30;
+  int warmup = 3;
+  int spp = 0;             // 0: the scene's
+  bool json = false;
+  bool shader_cache = false;  // let the driver's disk cache serve the compile
+  std::string backend = "auto";
+  std::string shader_dir;  // empty: MARCH_SHADER_DIR or the built-in location
+  std::vector<std::string> disable;
+};
+
+CLI::App* add_bench_command(CLI::App& app, BenchArgs& args);
+int run_bench_command(const BenchArgs& args);
+
+}  // namespace ms
