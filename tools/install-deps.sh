@@ -13,6 +13,7 @@ PACKAGES=(
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev
   xvfb xauth                        # viewer tests get a real X window
+  slurm-wlm munge                   # tests/slurm: a real job array on a localhost cluster
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq

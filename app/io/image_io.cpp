@@ -36,16 +36,22 @@ void check_output_path(const fs::path& path) {
   if (fs::is_directory(path, ec)) fail_input("output path is a directory", path.string(), 0, "-o");
 }
 
-namespace {
-
-// Hidden sibling with the same extension, so OpenImageIO picks the same format.
-fs::path temp_path_for(const fs::path& path) {
-  const std::string name = "." + path.stem().string() + ".tmp" + std::to_string(::getpid()) +
-                           path.extension().string();
-  return path.parent_path() / name;
+fs::path temp_path_for(const fs::path& target, long pid) {
+  std::string name = ".";
+  name.append(target.stem().string()).append(".tmp").append(std::to_string(pid));
+  name.append(target.extension().string());
+  return target.parent_path() / name;
 }
 
-}  // namespace
+std::string temp_target_name(const std::string& name) {
+  const size_t at = name.rfind(".tmp");
+  if (name.size() < 2 || name[0] != '.' || at == std::string::npos || at < 1) return {};
+  const size_t digits_end = name.find_first_not_of("0123456789", at + 4);
+  if (digits_end == at + 4) return {};  // no pid
+  const std::string ext = digits_end == std::string::npos ? "" : name.substr(digits_end);
+  if (!ext.empty() && (ext[0] != '.' || ext.find('.', 1) != std::string::npos)) return {};
+  return name.substr(1, at - 1) + ext;
+}
 
 void write_image(const Image& image, const fs::path& path, const ImageMetadata& meta) {
   const ImageFormat format = image_format_for(path);
@@ -61,11 +67,17 @@ void write_image(const Image& image, const fs::path& path, const ImageMetadata& 
   spec.alpha_channel = (!drop_alpha && nch == 4 && image.channels[3] == "A") ? 3 : -1;
   if (format == ImageFormat::exr) spec.attribute("compression", "zip");
   if (format == ImageFormat::jpeg) spec.attribute("Compression", "jpeg:95");
+  // Fast zlib settings: about 30% larger files, encoding about 3x faster,
+  // which keeps sequence writing hidden behind rendering (docs/animation.md).
+  if (format == ImageFormat::png) {
+    spec.attribute("png:compressionLevel", 1);
+    spec.attribute("png:filter", 16);  // PNG_FILTER_SUB
+  }
   if (is_display_format(format)) spec.attribute("oiio:ColorSpace", "sRGB");
   else spec.attribute("oiio:ColorSpace", "Linear");
   for (const auto& [k, v] : meta) spec.attribute(k, v);
 
-  const fs::path tmp = temp_path_for(path);
+  const fs::path tmp = temp_path_for(path, ::getpid());
   auto out = OIIO::ImageOutput::create(tmp.string());
   if (!out) fail_system("cannot create an image writer: " + OIIO::geterror(), path.string());
   const OIIO::stride_t xstride = static_cast<OIIO::stride_t>(nch * sizeof(float));
@@ -98,7 +110,7 @@ Image read_image(const fs::path& path) {
   img.height = spec.height;
   for (int c = 0; c < spec.nchannels; ++c)
     img.channels.push_back(c < static_cast<int>(spec.channelnames.size()) ? spec.channelnames[c]
-                                                                          : "C" + std::to_string(c));
+                                                                          : std::string("C").append(std::to_string(c)));
   img.pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data())) {
     const std::string err = in->geterror();

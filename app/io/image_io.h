@@ -28,6 +28,13 @@ using ImageMetadata = std::map<std::string, std::string>;
 // never leaves the target or the temporary behind on failure.
 void write_image(const Image& image, const std::filesystem::path& path, const ImageMetadata& meta = {});
 
+// write_image's temporary for `target`: a hidden sibling with the same
+// extension (".<stem>.tmp<pid><ext>"), so OpenImageIO picks the same format.
+std::filesystem::path temp_path_for(const std::filesystem::path& target, long pid);
+// The file name of the target that `name` is a write_image temporary for,
+// or empty when it is not one. Lets a resumed run clean up after a killed one.
+std::string temp_target_name(const std::string& name);
+
 // Read any format OpenImageIO knows, as float. Throws bad_input naming the file.
 Image read_image(const std::filesystem::path& path);
 

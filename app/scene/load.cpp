@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/error.h"
+#include "scene/animation.h"
 #include "scene/toml_read.h"
 
 namespace ms {
@@ -95,7 +96,7 @@ struct Section {
 };
 
 struct Schema {
-  std::vector<std::string_view> top{"scene", "camera", "render", "sky", "quality", "lights", "materials"};
+  std::vector<std::string_view> top{"scene", "camera", "render", "sky", "quality", "lights", "materials", "animation"};
   std::vector<Section> sections{
       {"scene", false, {"name", "map", "shadertoy"}},
       {"camera", false, keys_of(kCameraFields)},
@@ -104,6 +105,7 @@ struct Schema {
       {"quality", false, keys_of(kQualityFields)},
       {"lights", true, keys_of(kLightFields, {"type"})},
       {"materials", true, keys_of(kMaterialFields, {"name", "pattern"})},
+      {"animation", true, {"target", "interpolation", "keys"}},  // scene/animation.cpp
   };
 
   const Section& section(std::string_view name) const {
@@ -318,6 +320,13 @@ Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
     scene.lights.push_back(read_light(r, schema, *lights[i], "lights[" + std::to_string(i) + "]"));
   // A Shadertoy scene has no map() and so needs no materials.
   if (!(st && st->contains("shadertoy")) || root.contains("materials")) read_materials(r, schema, root, scene);
+  // After lights and materials: a track's target must name one that exists.
+  const auto tracks = r.tables(root, {}, "animation");
+  for (std::size_t i = 0; i < tracks.size(); ++i) {
+    const std::string path = "animation[" + std::to_string(i) + "]";
+    schema.check(r, *tracks[i], "animation", path);
+    scene.animation.push_back(read_animation_track(r, *tracks[i], path, scene));
+  }
 
   // Last, so a broken scene file is reported before a missing map file.
   resolve_sources(r, st, display_path, scene);

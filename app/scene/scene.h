@@ -79,6 +79,20 @@ struct Sky {
   glm::vec3 ambient{0.15f, 0.17f, 0.20f};  // Ia, ambient light
 };
 
+enum class Interpolation { linear, smooth };
+
+// One keyframed value, [[animation]] in the scene file (docs/scene-format.md).
+// scene/animation.h evaluates it; the static fields above hold the values at
+// no particular time and are what an unanimated render uses.
+struct AnimationTrack {
+  std::string target;          // as written and checked: "camera.position", "lights[0].intensity"
+  Interpolation interpolation = Interpolation::linear;
+  int arity = 1;               // values per key: 1 (float) or 3 (vec3)
+  std::vector<double> times;   // seconds, strictly increasing, at least one
+  std::vector<double> values;  // times.size() * arity; double so key values stay exact
+  int line = 0;                // of the [[animation]] table, for errors at render time
+};
+
 struct Scene {
   std::filesystem::path file;      // the .toml, as given
   std::filesystem::path map_file;  // the GLSL with vec2 map(vec3 p), resolved
@@ -90,6 +104,7 @@ struct Scene {
   Quality quality;
   RenderSettings render;
   Sky sky;
+  std::vector<AnimationTrack> animation;  // applied by animated(scene, time)
 };
 
 }  // namespace ms

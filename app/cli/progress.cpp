@@ -1,0 +1,79 @@
+#include "cli/progress.h"
+
+#include <cmath>
+
+namespace ms {
+
+std::string format_duration(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0) return "-";
+  const long long s = std::llround(seconds);
+  char buf[32];
+  if (s >= 3600) std::snprintf(buf, sizeof buf, "%lld:%02lld:%02lld", s / 3600, s / 60 % 60, s % 60);
+  else std::snprintf(buf, sizeof buf, "%lld:%02lld", s / 60, s % 60);
+  return buf;
+}
+
+Progress::Progress(int total, bool tty, std::FILE* out) : total_(total), tty_(tty), out_(out) {}
+
+void Progress::start() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  start_ = std::chrono::steady_clock::now();
+}
+
+void Progress::skipped(int frame, const std::string& path) {
+  // On a terminal the summary line says how many were skipped; a line per
+  // frame would scroll the bar away on a large resume.
+  if (tty_) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::fprintf(out_, "marchstudio: frame %d skipped: %s is complete\n", frame, path.c_str());
+  std::fflush(out_);
+}
+
+void Progress::redo(int frame, const std::string& path, const std::string& why) {
+  line("frame " + std::to_string(frame) + ": " + path + " is not a complete frame (" + why + "), rendering it again");
+}
+
+void Progress::rendered(int frame, double seconds) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++done_;
+  if (tty_) {
+    draw_locked(frame);
+    return;
+  }
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double fps = elapsed > 0 ? done_ / elapsed : 0.0;
+  std::fprintf(out_, "marchstudio: frame %d rendered in %.3f s (%d/%d, %.2f frames/s, ETA %s)\n", frame, seconds,
+               done_, total_, fps, format_duration(fps > 0 ? (total_ - done_) / fps : -1).c_str());
+  std::fflush(out_);
+}
+
+void Progress::draw_locked(int frame) {
+  constexpr int kWidth = 30;
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double fps = elapsed > 0 ? done_ / elapsed : 0.0;
+  const int filled = total_ > 0 ? done_ * kWidth / total_ : kWidth;
+  std::string bar(static_cast<std::size_t>(filled), '#');
+  bar.resize(kWidth, '.');
+  // \r and "erase to end of line": the bar redraws over itself.
+  std::fprintf(out_, "\r[%s] %d/%d frames  %.2f fps  ETA %s  (frame %d)\x1b[K", bar.c_str(), done_, total_, fps,
+               format_duration(fps > 0 ? (total_ - done_) / fps : -1).c_str(), frame);
+  std::fflush(out_);
+  bar_shown_ = true;
+}
+
+void Progress::line(const std::string& text) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (bar_shown_) std::fprintf(out_, "\r\x1b[K");
+  std::fprintf(out_, "marchstudio: %s\n", text.c_str());
+  std::fflush(out_);
+  bar_shown_ = false;
+}
+
+void Progress::finish() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (bar_shown_) std::fprintf(out_, "\n");
+  bar_shown_ = false;
+  std::fflush(out_);
+}
+
+}  // namespace ms

@@ -1,0 +1,286 @@
+#include "cli/sequence_cmd.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cmath>
+#include <cstdio>
+#include <regex>
+#include <thread>
+
+#include "cli/input.h"
+#include "cli/progress.h"
+#include "cli/render_cmd.h"
+#include "cli/shader_dir.h"
+#include "core/error.h"
+#include "gl/context.h"
+#include "io/frame_writer.h"
+#include "io/image_io.h"
+#include "io/sequence.h"
+#include "io/video.h"
+#include "render/aov.h"
+#include "render/frame.h"
+#include "render/uniforms.h"
+#include "scene/animation.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kDefaultFps = 24.0;
+// Frames waiting for the writer: enough to ride out a slow write, small
+// enough that 4 float frames stay modest (640x360: 15 MB; 4K: 530 MB).
+constexpr std::size_t kQueuedFrames = 4;
+
+// The process's one piece of global state: a signal handler can only set a
+// flag. SIGINT (Ctrl-C) and SIGTERM (what Slurm's scancel and time limit
+// send first) stop the loop after the frame in flight; the frames already
+// rendered are still written. SA_RESETHAND: a second signal kills at once.
+volatile std::sig_atomic_t g_stop_signal = 0;
+extern "C" void on_stop_signal(int sig) { g_stop_signal = sig; }
+
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop_signal = 0;
+    struct sigaction sa {};
+    sa.sa_handler = on_stop_signal;
+    sa.sa_flags = SA_RESETHAND;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int_);
+    sigaction(SIGTERM, &sa, &old_term_);
+  }
+  ~StopSignals() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+  int signal() const { return g_stop_signal; }
+
+ private:
+  struct sigaction old_int_ {}, old_term_ {};
+};
+
+// One writer per four cores, at most 4: on a small machine the renderer
+// (llvmpipe) needs the cores; on a big one with a GPU, PNG encoding is the
+// bottleneck and parallel writers keep up with it.
+int writer_threads() {
+  const unsigned cores = std::thread::hardware_concurrency();
+  return std::clamp(static_cast<int>(cores / 4), 1, 4);
+}
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Everything decided from the flags before any file is read.
+struct Plan {
+  FrameRange range;
+  Shard shard;
+  ShardMode mode = ShardMode::stride;
+  double fps = kDefaultFps;
+  std::string pattern;
+};
+
+Plan plan_from_flags(const RenderArgs& a) {
+  if (a.frames.empty())
+    fail_input("--fps, --shard, --shard-mode, --video and --no-write need --frames", {}, 0, "--frames",
+               "e.g. --frames 0..59 --fps 24 -o out/frame_%04d.png");
+  if (a.time_set)
+    fail_input("--time conflicts with --frames: each frame's time is frame / fps", {}, 0, "--time",
+               "shift the animation with --frames instead");
+  if (a.frame != 0) fail_input("--frame conflicts with --frames", {}, 0, "--frame");
+  if (a.spp < 0 || a.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
+  Plan p;
+  p.range = parse_frame_range(a.frames);
+  p.fps = a.fps_set ? a.fps : kDefaultFps;
+  if (!std::isfinite(p.fps) || p.fps <= 0)
+    fail_input("--fps must be a positive number, got " + std::to_string(p.fps), {}, 0, "--fps");
+  if (!a.shard.empty()) p.shard = parse_shard(a.shard);
+  if (!a.shard_mode.empty()) p.mode = parse_shard_mode(a.shard_mode);
+  if (a.output.empty()) {
+    // <stem>_%04d.png, with any '%' of the stem escaped for the pattern.
+    for (char c : fs::path(a.input).stem().string()) p.pattern += c == '%' ? std::string("%%") : std::string(1, c);
+    p.pattern += "_%04d.png";
+  } else {
+    p.pattern = a.output;
+  }
+  if (!a.video.empty()) {
+    if (p.shard.count > 1)
+      fail_input("--video needs the whole sequence, not one shard of it", {}, 0, "--video",
+                 "encode once every shard has finished: rerun without --shard, which skips the finished frames");
+    if (a.no_write) fail_input("--video needs the frames written; drop --no-write", {}, 0, "--video");
+    check_video_path(a.video);
+  }
+  return p;
+}
+
+// What a rerun finds on disk for this shard's frames.
+struct ResumeScan {
+  std::vector<int> todo;                              // to render, ascending
+  std::vector<std::pair<int, std::string>> skipped;  // complete: frame, path
+  std::vector<std::pair<int, std::string>> redone;   // present but broken: frame, why
+};
+
+// Remove a killed run's temporaries, then sort the frames into complete
+// (skipped) and missing or broken (rendered again, atomically replaced).
+ResumeScan scan_existing(const FramePattern& pattern, const std::vector<int>& mine, const FrameParams& fp) {
+  for (const fs::path& p : remove_stale_temps(pattern, mine))
+    std::fprintf(stderr, "marchstudio: removed %s, left by an interrupted run\n", p.string().c_str());
+  ResumeScan scan;
+  for (int f : mine) {
+    std::string why;
+    const fs::path p = pattern.path(f);
+    if (frame_is_complete(p, fp.width, fp.height, &why)) {
+      scan.skipped.emplace_back(f, p.string());
+      continue;
+    }
+    if (why != "missing") scan.redone.emplace_back(f, why);
+    scan.todo.push_back(f);
+  }
+  return scan;
+}
+
+}  // namespace
+
+bool wants_sequence(const RenderArgs& a) {
+  return !a.frames.empty() || a.fps_set || !a.shard.empty() || !a.shard_mode.empty() || !a.video.empty() ||
+         a.no_write;
+}
+
+int run_sequence(const RenderArgs& a) {
+  // Flags, output pattern, ffmpeg, scene, shaders and every frame's pose are
+  // checked before the GL context exists: bad input never leaves a file.
+  const Plan plan = plan_from_flags(a);
+  const FramePattern pattern(plan.pattern);
+  check_output_path(pattern.path(plan.range.first));
+  const bool display = is_display_format(image_format_for(pattern.path(plan.range.first)));
+  const bool aovs = !a.aov.empty();
+  const std::vector<std::string> aov_names = aovs ? aov_channels(a.aov) : std::vector<std::string>{};
+  if (aovs && display) fail_input("--aov needs an .exr output pattern", plan.pattern, 0, "--aov");
+  fs::path ffmpeg;
+  if (!a.video.empty()) {
+    if (!display) fail_input("--video needs PNG, JPEG or TIFF frames, not EXR", plan.pattern, 0, "--video");
+    ffmpeg = find_on_path("ffmpeg");
+    if (ffmpeg.empty())
+      throw Error(ErrorInfo{Exit::system, {}, 0, "--video", "ffmpeg is not installed (not found on PATH)",
+                            "install it (Debian: apt-get install ffmpeg), or drop --video and encode the frames later"});
+  }
+
+  AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines)};
+  if (aovs)
+    for (const auto& d : aov_defines()) opts.defines.push_back(d);
+  const LoadedInput in = load_input(a.input, a.disable, opts);
+  if (aovs && in.shadertoy) fail_input("--aov needs a scene, not a Shadertoy shader", a.input, 0, "--aov");
+  const Scene& scene = in.scene;
+  FrameParams fp;
+  fp.width = scene.render.width;
+  fp.height = scene.render.height;
+  if (!a.size.empty()) {
+    const ImageSize size = parse_size_flag(a.size);
+    fp.width = size.width;
+    fp.height = size.height;
+  }
+  fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
+  fp.aovs = aovs;
+  const ShaderSource post_src = assemble_post(scene.render.tonemap, display && !in.shadertoy, opts);
+  // The frame's time exactly as the shader gets it (a float); the pose uses
+  // the same value, so a sequence frame equals `render --time` of it.
+  const auto frame_time = [&](int f) { return static_cast<float>(static_cast<double>(f) / plan.fps); };
+  const std::vector<int> mine = shard_frames(plan.range, plan.shard, plan.mode);
+  for (int f : mine) animated(scene, frame_time(f));  // throws on a pose that cannot render
+
+  const ResumeScan scan = a.no_write ? ResumeScan{mine, {}, {}} : scan_existing(pattern, mine, fp);
+  const std::vector<int>& todo = scan.todo;
+  Progress progress(static_cast<int>(todo.size()), ::isatty(2) == 1);
+  for (const auto& [f, p] : scan.skipped) progress.skipped(f, p);
+  for (const auto& [f, why] : scan.redone) progress.redo(f, pattern.path(f).string(), why);
+  if (!scan.skipped.empty() || mine.size() != static_cast<std::size_t>(plan.range.count()))
+    progress.line("shard " + std::to_string(plan.shard.index) + "/" + std::to_string(plan.shard.count) + ": " +
+                  std::to_string(mine.size()) + " of " + std::to_string(plan.range.count()) + " frames, " +
+                  std::to_string(scan.skipped.size()) + " already complete, " + std::to_string(todo.size()) +
+                  " to render");
+
+  int stop_signal = 0;
+  double render_s = 0, wait_s = 0, loop_s = 0, writer_busy_s = 0;
+  if (!todo.empty()) {
+    std::unique_ptr<Context> ctx = create_headless_context(parse_backend(a.backend));
+    if (a.verbose)
+      std::fprintf(stderr, "marchstudio: backend %s, GL_RENDERER %s\n", ctx->backend().c_str(),
+                   ctx->info().renderer.c_str());
+    check_frame_size(ctx->info(), fp.width, fp.height, aovs ? 6 : 2);
+    const Program main_prog(fullscreen_vertex_source(), in.main);
+    const Program post_prog(fullscreen_vertex_source(), post_src);
+    FrameRenderer renderer(*ctx);
+    BlackChannels channels;
+    // Paths on stdout as each frame lands, like `render` prints its one path.
+    FrameWriter writer(
+        kQueuedFrames,
+        [](const WriteJob& job, double) {
+          std::printf("%s\n", job.path.string().c_str());
+          std::fflush(stdout);
+        },
+        {}, writer_threads());
+    StopSignals signals;
+    progress.start();
+    const auto loop_start = std::chrono::steady_clock::now();
+    for (int f : todo) {
+      if ((stop_signal = signals.signal()) != 0) break;
+      const auto t0 = std::chrono::steady_clock::now();
+      const float time = frame_time(f);
+      const Scene posed = animated(scene, time);
+      fp.exposure = posed.render.exposure;
+      Image img;
+      if (!in.shadertoy) {
+        img = renderer.render(main_prog, [&](const Program& p) {
+          set_scene_uniforms(p, posed, fp.width, fp.height, time, f);
+        }, post_prog, fp);
+        if (aovs) img = append_channels(img, select_channels(renderer.read_aovs(), aov_names));
+      } else {
+        ShadertoyInputs st;
+        st.time = time;
+        st.frame = f;
+        st.time_delta = static_cast<float>(1.0 / plan.fps);
+        img = renderer.render(main_prog, [&](const Program& p) {
+          channels.bind();
+          set_shadertoy_uniforms(p, fp.width, fp.height, st);
+        }, post_prog, fp);
+      }
+      const double took = since(t0);
+      render_s += took;
+      progress.rendered(f, took);
+      if (a.no_write) continue;
+      ImageMetadata meta{{"Software", "marchstudio 0.1.0"},
+                         {"ImageDescription", fs::path(a.input).filename().string() + " t=" + std::to_string(time) +
+                                                  " spp=" + std::to_string(fp.spp) + " frame=" + std::to_string(f)}};
+      wait_s += writer.push(WriteJob{f, std::move(img), pattern.path(f), std::move(meta)});
+    }
+    writer.finish();
+    loop_s = since(loop_start);
+    writer_busy_s = writer.busy_seconds();
+  }
+  progress.finish();
+  const int done = progress.done();
+  char summary[256];
+  std::snprintf(summary, sizeof summary,
+                "%d frames in %.2f s (%.2f frames/s): rendering %.2f s, waiting for the writer %.2f s, writer busy "
+                "%.2f s; %zu skipped",
+                done, loop_s, loop_s > 0 ? done / loop_s : 0.0, render_s, wait_s, writer_busy_s, scan.skipped.size());
+  progress.line(summary);
+  if (stop_signal != 0) {
+    progress.line(std::string("stopped by ") + (stop_signal == SIGINT ? "SIGINT" : "SIGTERM") +
+                  ": the frames rendered so far are written; run the same command again to render the rest");
+    return 128 + stop_signal;
+  }
+  if (!a.video.empty()) {
+    encode_video(VideoJob{ffmpeg, plan.pattern, plan.range.first, plan.fps, a.video});
+    std::printf("%s\n", a.video.c_str());
+  }
+  return 0;
+}
+
+}  // namespace ms

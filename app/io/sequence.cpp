@@ -1,0 +1,170 @@
+#include "io/sequence.h"
+
+#include "io/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <regex>
+#include <set>
+
+#include "core/error.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Eight digits: frame arithmetic stays far from int overflow, and at 60 fps
+// that is over two weeks of animation.
+constexpr long long kMaxFrame = 99'999'999;
+
+}  // namespace
+
+FrameRange parse_frame_range(const std::string& text) {
+  static const std::regex re(R"(^\s*(-?\d{1,12})\s*(?:\.\.\s*(-?\d{1,12})\s*)?$)");
+  std::smatch m;
+  if (!std::regex_match(text, m, re))
+    fail_input("invalid frame range '" + text + "'", {}, 0, "--frames", "expected A..B, e.g. 0..59 (both included)");
+  const long long a = std::stoll(m[1]), b = m[2].matched ? std::stoll(m[2]) : a;
+  if (a < 0 || b < 0)
+    fail_input("frame numbers must not be negative, got '" + text + "'", {}, 0, "--frames", "frames count from 0");
+  if (a > kMaxFrame || b > kMaxFrame)
+    fail_input("frame number over " + std::to_string(kMaxFrame) + " in '" + text + "'", {}, 0, "--frames");
+  if (b < a)
+    fail_input("frame range '" + text + "' ends before it starts", {}, 0, "--frames",
+               "write the first frame first: " + std::to_string(b) + ".." + std::to_string(a));
+  return {static_cast<int>(a), static_cast<int>(b)};
+}
+
+Shard parse_shard(const std::string& text) {
+  static const std::regex re(R"(^\s*(-?\d{1,9})\s*/\s*(-?\d{1,9})\s*$)");
+  std::smatch m;
+  if (!std::regex_match(text, m, re))
+    fail_input("invalid shard '" + text + "'", {}, 0, "--shard", "expected I/N with 0 <= I < N, e.g. 0/4");
+  const Shard s{std::stoi(m[1]), std::stoi(m[2])};
+  if (s.count < 1) fail_input("shard count must be at least 1, got '" + text + "'", {}, 0, "--shard");
+  if (s.index < 0 || s.index >= s.count)
+    fail_input("shard index must be in 0.." + std::to_string(s.count - 1) + ", got '" + text + "'", {}, 0, "--shard",
+               "shards count from 0: 0/" + std::to_string(s.count) + " .. " + std::to_string(s.count - 1) + "/" +
+                   std::to_string(s.count));
+  return s;
+}
+
+ShardMode parse_shard_mode(const std::string& text) {
+  if (text == "stride") return ShardMode::stride;
+  if (text == "chunk") return ShardMode::chunk;
+  fail_input("unknown shard mode '" + text + "'", {}, 0, "--shard-mode", "expected 'stride' or 'chunk'");
+}
+
+std::vector<int> shard_frames(FrameRange range, Shard s, ShardMode mode) {
+  std::vector<int> out;
+  const long long n = range.count();
+  if (mode == ShardMode::stride) {
+    for (long long f = range.first + s.index; f <= range.last; f += s.count) out.push_back(static_cast<int>(f));
+    return out;
+  }
+  // Chunk i is [i*n/N, (i+1)*n/N): sizes differ by at most one, none overlap.
+  const long long begin = s.index * n / s.count, end = (s.index + 1LL) * n / s.count;
+  for (long long k = begin; k < end; ++k) out.push_back(static_cast<int>(range.first + k));
+  return out;
+}
+
+bool has_frame_field(const std::string& text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '%') continue;
+    if (i + 1 < text.size() && text[i + 1] == '%') ++i;
+    else return true;
+  }
+  return false;
+}
+
+FramePattern::FramePattern(const std::string& pattern) : text_(pattern) {
+  const std::size_t slash = pattern.find_last_of('/');
+  const std::size_t name_start = slash == std::string::npos ? 0 : slash + 1;
+  const auto bad = [&](const std::string& what, const std::string& hint) {
+    fail_input(what, pattern, 0, "-o", hint);
+  };
+  bool found = false;
+  std::string* part = &prefix_;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '%') {
+      *part += pattern[i];
+      continue;
+    }
+    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+      *part += '%';
+      ++i;
+      continue;
+    }
+    // %[0][N]d
+    std::size_t j = i + 1;
+    const bool zero = j < pattern.size() && pattern[j] == '0';
+    if (zero) ++j;
+    std::size_t digits = 0;
+    int width = 0;
+    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && digits < 3)
+      width = width * 10 + (pattern[j++] - '0'), ++digits;
+    // printf pads %4d with spaces, ffmpeg with zeros: only %0Nd is unambiguous.
+    if (j >= pattern.size() || pattern[j] != 'd' || width > 12 || (digits > 0 && !zero))
+      bad("unsupported '%' sequence in the output pattern", "use one %d or %04d for the frame number, %% for '%'");
+    if (found) bad("the output pattern has more than one frame field", "use exactly one %d or %04d");
+    if (i < name_start)
+      bad("the frame field must be in the file name, not a directory", "e.g. out/frame_%04d.png");
+    found = true;
+    zero_pad_ = zero;
+    width_ = width;
+    part = &suffix_;
+    i = j;
+  }
+  if (!found)
+    bad("the output pattern has no frame field", "with --frames, -o needs %d or %04d, e.g. out/frame_%04d.png");
+}
+
+fs::path FramePattern::path(int frame) const {
+  std::string num = std::to_string(frame);
+  if (static_cast<int>(num.size()) < width_) num.insert(0, static_cast<std::size_t>(width_) - num.size(), zero_pad_ ? '0' : ' ');
+  return fs::path(prefix_ + num + suffix_);
+}
+
+bool frame_is_complete(const fs::path& path, int width, int height, std::string* why) {
+  // OpenImageIO's messages can span lines; the log keeps one line per event.
+  const auto no = [&](std::string reason) {
+    if (why) *why = reason.substr(0, reason.find('\n'));
+    return false;
+  };
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return no("missing");
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) return no("unreadable: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width != width || spec.height != height)
+    return no(std::to_string(width) + "x" + std::to_string(height) + " expected, file is " +
+              std::to_string(spec.width) + "x" + std::to_string(spec.height));
+  // Decoding every pixel is what catches a file cut short by something
+  // other than our atomic writer (a copy, a full disk); a few ms per frame.
+  std::vector<unsigned char> pixels(spec.image_bytes());
+  if (!in->read_image(0, 0, 0, spec.nchannels, spec.format, pixels.data()))
+    return no("cannot decode: " + in->geterror());
+  return true;
+}
+
+std::vector<fs::path> remove_stale_temps(const FramePattern& pattern, const std::vector<int>& frames) {
+  std::vector<fs::path> removed;
+  if (frames.empty()) return removed;
+  const fs::path dir = pattern.path(frames.front()).parent_path();
+  std::set<std::string> targets;
+  for (int f : frames) targets.insert(pattern.path(f).filename().string());
+  std::error_code ec;
+  fs::directory_iterator it(dir.empty() ? fs::path(".") : dir, ec);
+  if (ec) return removed;
+  for (const fs::directory_entry& e : it) {
+    const std::string name = e.path().filename().string();
+    if (!targets.count(temp_target_name(name))) continue;
+    if (fs::remove(e.path(), ec)) removed.push_back(dir / name);
+  }
+  return removed;
+}
+
+}  // namespace ms

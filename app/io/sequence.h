@@ -1,0 +1,76 @@
+// Image sequences on disk: which frames to render (a range, split into
+// shards), where each frame goes (a printf-style pattern such as
+// out/frame_%04d.png), and which frames a rerun can skip (complete files
+// already there). No GL here; app/cli/sequence_cmd.cpp drives it.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ms {
+
+// Frames first..last, both included, first >= 0.
+struct FrameRange {
+  int first = 0;
+  int last = 0;
+  int count() const { return last - first + 1; }
+};
+
+// "A..B" (or "A" for one frame). Throws bad_input (key --frames) for
+// malformed text, negative numbers, B < A or numbers over 99,999,999.
+FrameRange parse_frame_range(const std::string& text);
+
+// One of `count` independent processes; `index` counts from 0.
+struct Shard {
+  int index = 0;
+  int count = 1;
+};
+
+// "I/N" with 0 <= I < N. Throws bad_input (key --shard).
+Shard parse_shard(const std::string& text);
+
+// stride: frames first+I, first+I+N, ... (every shard sees the whole time
+// range, so a partial run already shows the entire animation coarsely);
+// chunk: the I-th of N contiguous runs, sizes differing by at most one (a
+// shard's frames stay together, for tools that want one contiguous clip).
+enum class ShardMode { stride, chunk };
+
+ShardMode parse_shard_mode(const std::string& text);  // "stride" | "chunk"; bad_input (--shard-mode)
+
+// The frames shard `s` renders, ascending. Over all s.index in [0, s.count)
+// the lists partition the range: every frame exactly once. Empty when a
+// shard has nothing to do (more shards than frames).
+std::vector<int> shard_frames(FrameRange range, Shard s, ShardMode mode);
+
+// An output pattern: exactly one %d or %0Nd field (N <= 12) in the file
+// name, "%%" for a literal '%', as printf and ffmpeg read it. (%Nd is
+// refused: printf pads it with spaces, ffmpeg with zeros.)
+class FramePattern {
+ public:
+  // Throws bad_input (key -o) when the pattern has no field, more than one,
+  // a field in a directory name, or another '%' sequence.
+  explicit FramePattern(const std::string& pattern);
+  const std::string& text() const { return text_; }
+  std::filesystem::path path(int frame) const;
+
+ private:
+  std::string text_, prefix_, suffix_;  // prefix_ and suffix_ with "%%" already made '%'
+  int width_ = 0;
+  bool zero_pad_ = false;
+};
+
+// True when `text` contains a frame field (any '%' that is not "%%").
+bool has_frame_field(const std::string& text);
+
+// Does `path` hold a complete image of width x height? It must open, have
+// that size and decode to the last pixel. `why` (may be null) gets the
+// reason when not, e.g. "640x360 expected, file is 320x180".
+bool frame_is_complete(const std::filesystem::path& path, int width, int height, std::string* why = nullptr);
+
+// Remove the temporaries that write_image leaves when its process is
+// killed (".<stem>.tmp<pid><ext>" beside the frame) for `frames` only, so
+// that shards sharing a directory never touch each other's files. Returns
+// the paths removed.
+std::vector<std::filesystem::path> remove_stale_temps(const FramePattern& pattern, const std::vector<int>& frames);
+
+}  // namespace ms

@@ -1,0 +1,32 @@
+// Encoding a finished image sequence into a video with ffmpeg, when it is
+// installed. ffmpeg is found on PATH and run directly (no shell), so
+// patterns and paths need no quoting.
+#pragma once
+#include <filesystem>
+#include <string>
+
+namespace ms {
+
+// The full path of `program` in a PATH directory (executable regular
+// file), or empty when there is none.
+std::filesystem::path find_on_path(const std::string& program);
+
+// Check before rendering that `out` can be written: a file name with an
+// extension (ffmpeg picks the container by it), an existing writable
+// directory. Throws bad_input naming --video.
+void check_video_path(const std::filesystem::path& out);
+
+struct VideoJob {
+  std::filesystem::path ffmpeg;  // from find_on_path("ffmpeg")
+  std::string pattern;           // printf-style frame pattern, as ffmpeg's image2 reads it
+  int first_frame = 0;
+  double fps = 24.0;
+  std::filesystem::path output;
+};
+
+// Run ffmpeg: H.264-compatible yuv420p (odd sizes padded to even), written
+// to a temporary beside `output` and renamed into place, as images are.
+// Throws system naming --video when ffmpeg cannot start or fails.
+void encode_video(const VideoJob& job);
+
+}  // namespace ms
