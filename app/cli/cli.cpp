@@ -6,6 +6,9 @@
 #include <exception>
 
 #include "cli/render_cmd.h"
+#include "cli/view_cmd.h"
+#include "cli/bench_cmd.h"
+#include "cli/compare_cmd.h"
 #include "core/error.h"
 
 namespace ms {
@@ -16,6 +19,12 @@ int run_cli(int argc, char** argv) {
   app.require_subcommand(1);
   RenderArgs render_args;
   CLI::App* render = add_render_command(app, render_args);
+  ViewArgs view_args;
+  CLI::App* view = add_view_command(app, view_args);
+  BenchArgs bench_args;
+  CLI::App* bench = add_bench_command(app, bench_args);
+  CompareArgs compare_args;
+  CLI::App* compare = add_compare_command(app, compare_args);
 
   try {
     app.parse(argc, argv);
@@ -32,6 +41,9 @@ int run_cli(int argc, char** argv) {
 
   try {
     if (render->parsed()) return run_render(render_args);
+    if (view->parsed()) return run_view(view_args);
+    if (bench->parsed()) return run_bench_command(bench_args);
+    if (compare->parsed()) return run_compare(compare_args);
   } catch (const Error& e) {
     std::fprintf(stderr, "marchstudio: %s\n", e.what());
     return static_cast<int>(e.code());

@@ -22,6 +22,16 @@ void apply_disable(Quality& q, const std::vector<std::string>& off) {
 
 }  // namespace
 
+ImageSize parse_size_flag(const std::string& text, const std::string& flag) {
+  static const std::regex re(R"(^\s*(\d{1,9})\s*[xX]\s*(\d{1,9})\s*$)");
+  std::smatch m;
+  if (!std::regex_match(text, m, re))
+    fail_input("invalid size '" + text + "'", {}, 0, flag, "expected WxH, e.g. 1280x720");
+  ImageSize out{std::stoi(m[1]), std::stoi(m[2])};
+  if (out.width < 1 || out.height < 1) fail_input("image size " + text + " must be at least 1x1", {}, 0, flag);
+  return out;
+}
+
 std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector<std::string>& flags) {
   static const std::regex ident(R"(^[A-Za-z_][A-Za-z0-9_]*$)");
   std::vector<std::pair<std::string, std::string>> out;

@@ -19,6 +19,14 @@ struct LoadedInput {
   bool shadertoy = false;
 };
 
+// A "WxH" flag value (render/bench --size, view --size/--shot-size); each
+// side at least 1. Whether the GL can make it is checked later, with a context.
+struct ImageSize {
+  int width = 0;
+  int height = 0;
+};
+ImageSize parse_size_flag(const std::string& text, const std::string& flag = "--size");
+
 // "NAME" or "NAME=VALUE" flags as (name, value) #defines; NAME must be a
 // GLSL identifier, VALUE one line. Throws bad_input naming -D.
 std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector<std::string>& flags);

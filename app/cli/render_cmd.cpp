@@ -9,13 +9,17 @@
 #include <filesystem>
 #include <regex>
 
+#include "cli/sequence_cmd.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
 #include "gl/context.h"
 #include "io/image_io.h"
+#include "render/aov.h"
 #include "render/frame.h"
 #include "render/uniforms.h"
+#include "scene/animation.h"
 #include "cli/input.h"
+#include "live/render_watch.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -37,26 +41,24 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
       ->delimiter(',')
       ->check(CLI::IsMember({"shadows", "reflections", "ao", "checker-filter"}));
   cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
+  cmd->add_option("--frames", a.frames, "Render frames A..B (both included) to -o PATTERN, e.g. out/f_%04d.png");
+  cmd->add_option("--fps", a.fps, "Frames per second of --frames: frame f is at time f / fps (default 24)")
+      ->each([&a](const std::string&) { a.fps_set = true; });
+  cmd->add_option("--shard", a.shard, "Render only shard I of N (I/N, from 0) of --frames");
+  cmd->add_option("--shard-mode", a.shard_mode, "How --shard splits the frames: stride (default) or chunk");
+  cmd->add_option("--video", a.video, "Encode the --frames sequence with ffmpeg into this file (e.g. out.mp4)");
+  cmd->add_flag("--no-write", a.no_write, "Render --frames but write nothing (throughput measurements)")
+      ->group("");
+  cmd->add_option("--aov", a.aov,
+                  "Add AOV channels to the .exr: depth, normal, steps, material, shadow, ao, cost, hit "
+                  "(see docs/usage.md)")
+      ->delimiter(',');
   cmd->add_flag("-v,--verbose", a.verbose, "Print the backend, GL renderer and timings");
+  cmd->add_flag("--watch", a.watch, "Render again on every save of the scene or a file it includes, until Ctrl+C");
   return cmd;
 }
 
 namespace {
-
-struct Size {
-  int width = 0, height = 0;
-};
-
-Size parse_size(const std::string& s) {
-  static const std::regex re(R"(^\s*(\d{1,9})\s*[xX]\s*(\d{1,9})\s*$)");
-  std::smatch m;
-  if (!std::regex_match(s, m, re))
-    fail_input("invalid size '" + s + "'", {}, 0, "--size", "expected WxH, e.g. 1280x720");
-  Size out{std::stoi(m[1]), std::stoi(m[2])};
-  if (out.width < 1 || out.height < 1)
-    fail_input("image size " + s + " must be at least 1x1", {}, 0, "--size");
-  return out;
-}
 
 // Seconds since the last lap, for --verbose phase timings.
 struct Stopwatch {
@@ -69,30 +71,28 @@ struct Stopwatch {
   }
 };
 
-// iChannel0..3 read black, as an unbound Shadertoy input does.
-struct BlackChannels {
-  GLuint tex = 0;
-  BlackChannels() {
-    const float black[4] = {0, 0, 0, 1};
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, 1, 0, GL_RGBA, GL_FLOAT, black);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  }
-  void bind() const {
-    for (int i = 0; i < 4; ++i) {
-      glActiveTexture(GL_TEXTURE0 + i);
-      glBindTexture(GL_TEXTURE_2D, tex);
-    }
-    glActiveTexture(GL_TEXTURE0);
-  }
-  ~BlackChannels() { glDeleteTextures(1, &tex); }
-};
-
 }  // namespace
 
+// --watch: this same function without --watch, after every save; the files
+// to watch are whatever loading the input reads.
+static int run_render_watch(const RenderArgs& a) {
+  if (wants_sequence(a)) fail_input("--watch renders one image, not a --frames sequence", {}, 0, "--watch");
+  RenderArgs once = a;
+  once.watch = false;
+  live::WatchRenderOptions w;
+  w.render = [once] { run_render(once); };
+  w.files = [&a] {
+    const AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines)};
+    std::vector<fs::path> files = {a.input};
+    for (const fs::path& p : load_input(a.input, a.disable, opts).main.dependencies) files.push_back(p);
+    return files;
+  };
+  return live::watch_and_render(w);
+}
+
 int run_render(const RenderArgs& a) {
+  if (a.watch) return run_render_watch(a);
+  if (wants_sequence(a)) return run_sequence(a);
   if (!std::isfinite(a.time)) fail_input("--time must be a finite number", {}, 0, "--time");
   if (a.spp < 0 || a.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
   if (a.frame < 0) fail_input("--frame must be >= 0", {}, 0, "--frame");
@@ -101,21 +101,32 @@ int run_render(const RenderArgs& a) {
   const fs::path output = a.output.empty() ? fs::path(input.stem().string() + ".png") : fs::path(a.output);
   check_output_path(output);  // before any work: no file is ever half-made
   const bool display = is_display_format(image_format_for(output));
+  const bool aovs = !a.aov.empty();
+  const std::vector<std::string> aov_names = aovs ? aov_channels(a.aov) : std::vector<std::string>{};
+  if (aovs && display)
+    fail_input("--aov needs an .exr output, not '" + output.filename().string() + "'", {}, 0, "--aov",
+               "AOVs are extra float channels, which only OpenEXR holds");
 
-  const AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines)};
+  AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines)};
+  if (aovs) for (const auto& d : aov_defines()) opts.defines.push_back(d);
   const LoadedInput in = load_input(input, a.disable, opts);
+  if (aovs && in.shadertoy)
+    fail_input("--aov needs a scene: a Shadertoy shader has no AOV outputs", input.string(), 0, "--aov");
   const Scene& scene = in.scene;
   FrameParams fp;
   fp.width = scene.render.width;
   fp.height = scene.render.height;
   if (!a.size.empty()) {
-    const Size s = parse_size(a.size);
+    const ImageSize s = parse_size_flag(a.size);
     fp.width = s.width;
     fp.height = s.height;
   }
   fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
   fp.exposure = scene.render.exposure;
+  fp.aovs = aovs;
   const float time = a.time_set ? static_cast<float>(a.time) : scene.render.time;
+  const Scene posed = animated(scene, time);  // [[animation]] keyframes at this time
+  fp.exposure = posed.render.exposure;
   // Shadertoy output is display-referred already: never encoded again.
   const ShaderSource post_src = assemble_post(scene.render.tonemap, display && !in.shadertoy, opts);
 
@@ -125,7 +136,7 @@ int run_render(const RenderArgs& a) {
   if (a.verbose)
     std::fprintf(stderr, "marchstudio: backend %s, GL_RENDERER %s, GL_VERSION %s\n", ctx->backend().c_str(),
                  ctx->info().renderer.c_str(), ctx->info().version.c_str());
-  check_frame_size(ctx->info(), fp.width, fp.height);
+  check_frame_size(ctx->info(), fp.width, fp.height, aovs ? 6 : 2);
 
   const Program main_prog(fullscreen_vertex_source(), in.main);
   const Program post_prog(fullscreen_vertex_source(), post_src);
@@ -134,8 +145,9 @@ int run_render(const RenderArgs& a) {
   Image img;
   if (!in.shadertoy) {
     img = renderer.render(main_prog, [&](const Program& p) {
-      set_scene_uniforms(p, scene, fp.width, fp.height, time, a.frame);
+      set_scene_uniforms(p, posed, fp.width, fp.height, time, a.frame);
     }, post_prog, fp);
+    if (aovs) img = append_channels(img, select_channels(renderer.read_aovs(), aov_names));
   } else {
     BlackChannels channels;
     ShadertoyInputs st;

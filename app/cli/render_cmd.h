@@ -22,7 +22,17 @@ struct RenderArgs {
   std::string shader_dir; // empty: MARCH_SHADER_DIR or the built-in location
   std::vector<std::string> disable;  // effects switched off: shadows, reflections, ao, checker-filter
   std::vector<std::string> defines;  // -D NAME[=VALUE], injected into the scene shader
+  // Sequences (cli/sequence_cmd.h): --frames turns `render` into one.
+  std::string frames;      // "A..B", both included
+  double fps = 24.0;       // time of frame f is f / fps
+  bool fps_set = false;
+  std::string shard;       // "I/N"
+  std::string shard_mode;  // "stride" (when empty) or "chunk"
+  std::string video;       // encode the frames with ffmpeg afterwards
+  bool no_write = false;   // hidden: render but discard (throughput measurements)
   bool verbose = false;
+  bool watch = false;       // re-render on every save of the scene or its includes (live/render_watch.h)
+  std::vector<std::string> aov;      // AOVs to add to an .exr: depth, normal, steps, material, shadow, ao, cost, hit
 };
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args);

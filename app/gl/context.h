@@ -4,6 +4,8 @@
 #include <memory>
 #include <string>
 
+struct GLFWwindow;
+
 namespace ms {
 
 enum class Backend { automatic, egl, osmesa };
@@ -45,5 +47,11 @@ std::unique_ptr<Context> create_headless_context(Backend backend);
 // Backend-specific constructors; each throws Exit::system on failure.
 std::unique_ptr<Context> create_egl_context();
 std::unique_ptr<Context> create_osmesa_context();
+
+// A visible window with a GL 4.5 core context (GLFW; the viewer), current on
+// this thread. `window` receives the GLFWwindow, which lives as long as the
+// Context. Throws Exit::system when there is no display. In marchlive.
+std::unique_ptr<Context> create_window_context(int width, int height, const std::string& title,
+                                               GLFWwindow*& window);
 
 }  // namespace ms

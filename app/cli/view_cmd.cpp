@@ -1,0 +1,83 @@
+#include "cli/view_cmd.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <regex>
+
+#include "cli/input.h"
+#include "cli/shader_dir.h"
+#include "core/error.h"
+#include "live/viewer.h"
+#include "scene/load.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
+  CLI::App* cmd = app.add_subcommand("view", "Open a window on a scene (.toml) or Shadertoy shader (.glsl); "
+                                             "reloads on every save (docs/viewer.md)");
+  cmd->add_option("input", a.input, "Scene .toml or Shadertoy .glsl/.frag")->required();
+  cmd->add_option("--size", a.size, "Window size WxH (default: the scene's, at most 1280x720)");
+  cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
+  cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
+  cmd->add_option("--debug-view", a.debug_view,
+                  "Start in a debug view: 0 lit, 1 steps, 2 normals, 3 depth, 4 AO, 5 shadow, 6 material id")
+      ->check(CLI::Range(0, 6));
+  cmd->add_option("--time", a.time, "Start time in seconds (default: the scene's)")->check(CLI::Range(0.0, 1e9));
+  cmd->add_flag("--paused", a.paused, "Start with time paused");
+  cmd->add_option("--log", a.log, "Write event lines (reload ok/failed, captures, frame times) here, not stderr");
+  cmd->add_option("--capture-dir", a.capture_dir,
+                  "Write the first frame after start and after each reload as DIR/frame_<k>.png");
+  cmd->add_option("--shot-dir", a.shot_dir, "Where screenshots (P, Shift+P) go (default: the current directory)");
+  cmd->add_option("--shot-size", a.shot_size, "Screenshot size WxH, re-rendered (default: the window's)");
+  cmd->add_option("--shot-frame", a.shot_frame, "Take both screenshots after frame N (scripts)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--exit-after", a.exit_after, "Quit after this many seconds")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-frames", a.max_frames, "Quit after this many frames")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--debounce-ms", a.debounce_ms, "Quiet time that ends a save, ms (default 10)")
+      ->check(CLI::Range(0, 1000));
+  cmd->add_flag("--no-panel", a.no_panel, "Start with the panel hidden (Tab shows it)");
+  return cmd;
+}
+
+int run_view(const ViewArgs& a) {
+  live::ViewerOptions o;
+  o.input = a.input;
+  o.assemble = AssembleOptions{resolve_shader_dir(a.shader_dir), parse_defines(a.defines)};
+  const fs::path input = a.input;
+  const AssembleOptions opts = o.assemble;
+  // A .toml is only parsed here (the viewer assembles itself, and shows an
+  // include error in the window instead of exiting); a bare Shadertoy file
+  // goes through the same loader as `render`.
+  o.load = [input, opts]() -> Scene {
+    std::error_code ec;
+    if (!fs::is_regular_file(input, ec)) fail_input("input file not found", input.string());
+    if (input.extension() == ".toml") return load_scene(input);
+    return load_input(input, {}, opts).scene;
+  };
+  if (!a.size.empty()) {
+    const ImageSize size = parse_size_flag(a.size, "--size");
+    o.width = size.width;
+    o.height = size.height;
+  }
+  if (!a.shot_size.empty()) {
+    const ImageSize size = parse_size_flag(a.shot_size, "--shot-size");
+    o.shot_width = size.width;
+    o.shot_height = size.height;
+  }
+  o.debug_view = a.debug_view;
+  o.time = a.time;
+  o.paused = a.paused;
+  o.log_file = a.log;
+  o.capture_dir = a.capture_dir;
+  o.shot_dir = a.shot_dir;
+  o.shot_frame = a.shot_frame;
+  o.exit_after = a.exit_after;
+  o.max_frames = a.max_frames;
+  o.debounce_ms = a.debounce_ms;
+  o.hide_panel = a.no_panel;
+  return live::run_viewer(o);
+}
+
+}  // namespace ms

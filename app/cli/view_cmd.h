@@ -1,0 +1,35 @@
+// `marchstudio view`: the live viewer (app/live/) with hot reload, for a
+// scene (.toml) or a Shadertoy shader (.glsl). docs/viewer.md.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace ms {
+
+struct ViewArgs {
+  std::string input;
+  std::string size;          // window "WxH"; empty: the scene's, at most 1280x720
+  std::string shader_dir;
+  std::vector<std::string> defines;  // -D NAME[=VALUE]
+  int debug_view = 0;
+  double time = -1.0;        // < 0: the scene's
+  bool paused = false;
+  std::string log;           // --log FILE; empty: stderr
+  std::string capture_dir;
+  std::string shot_dir = ".";
+  std::string shot_size;     // "WxH"
+  long shot_frame = -1;
+  double exit_after = 0.0;
+  long max_frames = 0;
+  int debounce_ms = 10;
+  bool no_panel = false;
+};
+
+CLI::App* add_view_command(CLI::App& app, ViewArgs& args);
+int run_view(const ViewArgs& args);
+
+}  // namespace ms

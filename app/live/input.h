@@ -1,0 +1,22 @@
+// Keyboard and mouse for the viewer (every binding is listed in
+// docs/viewer.md and in the panel's Keys section). GLFW callbacks reach the
+// ViewState through glfwSetWindowUserPointer; Dear ImGui's GLFW backend is
+// installed after these and chains to them, and input ImGui wants (typing
+// in a field, dragging a slider) is not also applied to the camera.
+#pragma once
+#include "live/view_state.h"
+
+struct GLFWwindow;
+
+namespace ms::live {
+
+// Call before ImGui_ImplGlfw_InitForOpenGL(window, true).
+void install_input_callbacks(GLFWwindow* window, ViewState* state);
+
+// Held keys (WASD/QE fly) for this frame, `dt` seconds long.
+void apply_held_keys(GLFWwindow* window, ViewState& state, double dt);
+
+// One line per binding, for the panel and the help overlay.
+const char* const* key_help();
+
+}  // namespace ms::live

@@ -1,0 +1,26 @@
+// The viewer's Dear ImGui panel: frame times (graph + median over the last
+// second), time, debug view, quality toggles and preset, camera, lights,
+// materials, sky and the scene's own ranged uniforms. Uniform values apply
+// on the next frame; values that are #defines (quality) ask for a
+// re-assembly when a widget is released, so a drag does not recompile per
+// frame. Writing to the TOML is a request served by the loop.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "live/session.h"
+#include "live/view_state.h"
+
+namespace ms {
+struct GlInfo;
+}
+
+namespace ms::live {
+
+void draw_panel(ViewState& state, Session& session, const GlInfo& gl);
+
+// The scene parameters' current values as GLSL declarations with their
+// annotations, ready to paste back into the map file.
+std::string param_declarations(const std::vector<SceneParam>& params);
+
+}  // namespace ms::live

@@ -1,0 +1,89 @@
+#include "live/session.h"
+
+#include <chrono>
+
+#include "core/error.h"
+#include "shader/shadertoy.h"
+
+namespace ms::live {
+namespace fs = std::filesystem;
+
+namespace {
+
+bool same_camera(const Camera& a, const Camera& b) {
+  return a.position == b.position && a.target == b.target && a.up == b.up && a.fov_deg == b.fov_deg;
+}
+
+}  // namespace
+
+void Session::set_preset(QualityPreset p) {
+  preset_ = p;
+  const Quality cur = scene_.quality;
+  scene_.quality = apply_preset(file_scene_.quality, p);
+  scene_.quality.shadows = cur.shadows;
+  scene_.quality.ao = cur.ao;
+  scene_.quality.reflections = cur.reflections;
+  scene_.quality.checker_filter = cur.checker_filter;
+}
+
+ReloadResult Session::reload(bool from_disk) {
+  ReloadResult r;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    if (from_disk || !disk_ok_) {
+      Scene fresh;
+      try {
+        fresh = opts_.load();
+      } catch (const Error&) {
+        disk_ok_ = false;
+        throw;
+      }
+      r.camera_changed = !disk_ok_ || !same_camera(fresh.camera, file_scene_.camera);
+      disk_ok_ = true;
+      file_scene_ = fresh;
+      scene_ = fresh;  // a saved TOML replaces the panel's values
+      scene_.quality = apply_preset(fresh.quality, preset_);
+    }
+    AssembleOptions opts = opts_.assemble;
+    const int view = shadertoy() ? 0 : debug_view;
+    if (view > 0) opts.defines.emplace_back("DEBUG_VIEW", std::to_string(view));
+    const ShaderSource main_src =
+        shadertoy() ? assemble_shadertoy(scene_.shadertoy_file, opts) : assemble_scene(scene_, opts);
+    deps_ = main_src.dependencies;  // preprocessing worked: these are the files now
+    const ShaderSource post_src = assemble_post(scene_.render.tonemap, !shadertoy(), opts_.assemble);
+    auto main = std::make_unique<Program>(fullscreen_vertex_source(), main_src);
+    auto post = std::make_unique<Program>(fullscreen_vertex_source(), post_src);
+    main_ = std::move(main);
+    post_ = std::move(post);
+    std::vector<SceneParam> params = parse_scene_params(main_src.text);
+    carry_over_values(params, params_);
+    params_ = std::move(params);
+    compiled_debug_view_ = view;
+    ++generation_;
+    error_.clear();
+    error_file_.clear();
+    r.ok = true;
+  } catch (const Error& e) {
+    error_ = format_error(e.info());
+    error_file_ = e.info().file;
+    r.error = error_;
+  }
+  r.compile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+std::vector<fs::path> Session::watched_files() const {
+  std::vector<fs::path> out;
+  if (!scene_.file.empty()) out.push_back(scene_.file);
+  if (!scene_.shadertoy_file.empty()) out.push_back(scene_.shadertoy_file);
+  if (!scene_.map_file.empty()) out.push_back(scene_.map_file);
+  out.insert(out.end(), deps_.begin(), deps_.end());
+  if (!error_file_.empty()) {
+    std::error_code ec;
+    if (fs::exists(error_file_, ec) || fs::exists(fs::path(error_file_).parent_path(), ec))
+      out.push_back(error_file_);
+  }
+  return out;
+}
+
+}  // namespace ms::live

@@ -1,0 +1,89 @@
+// What the viewer shows, and how it gets rebuilt: the scene (as last read
+// from disk and as edited in the panel), the compiled main and post programs
+// (the last GOOD ones: a failed reload keeps them), the scene's own
+// parameters, and the files to watch. Loading and assembly are the same as
+// `render`'s (the caller passes cli/'s loader in); only the compiled
+// programs are kept here. Needs the GL context current for reload().
+#pragma once
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "live/presets.h"
+#include "live/scene_params.h"
+#include "render/program.h"
+#include "scene/scene.h"
+#include "shader/assemble.h"
+
+namespace ms::live {
+
+struct SessionOptions {
+  // Reads the input (.toml scene or Shadertoy .glsl) from disk; throws ms::Error.
+  std::function<Scene()> load;
+  AssembleOptions assemble;  // the shader dir; DEBUG_VIEW is added per reload
+};
+
+struct ReloadResult {
+  bool ok = false;
+  std::string error;           // "file:line: message (hint)" when !ok
+  bool camera_changed = false; // the file's [camera] differs from the previous read
+  double compile_ms = 0.0;     // load + assemble + compile + link
+};
+
+class Session {
+ public:
+  explicit Session(SessionOptions opts) : opts_(std::move(opts)) {}
+
+  // from_disk: read the input again (the TOML changed); otherwise rebuild
+  // the current, possibly edited scene (a GLSL file, a toggle or the debug
+  // view changed). While the last disk read failed every reload reads the
+  // disk. Never throws for bad input: the error is in the result and in
+  // error(), and the last good programs stay.
+  ReloadResult reload(bool from_disk);
+
+  Scene& scene() { return scene_; }
+  const Scene& scene() const { return scene_; }
+  const Scene& file_scene() const { return file_scene_; }  // writeback diffs against it
+  bool shadertoy() const { return !scene_.shadertoy_file.empty(); }
+  bool has_toml() const { return scene_.file.extension() == ".toml"; }
+
+  const Program* main_program() const { return main_.get(); }
+  const Program* post_program() const { return post_.get(); }
+  int generation() const { return generation_; }  // +1 per successful reload
+  const std::string& error() const { return error_; }
+
+  // The preset applies to the file's [quality]; toggles survive a preset change.
+  void set_preset(QualityPreset p);
+  QualityPreset preset() const { return preset_; }
+  // DEBUG_VIEW compiled into the current program (0 = lit), and the one to use next.
+  int compiled_debug_view() const { return compiled_debug_view_; }
+  int debug_view = 0;
+
+  // Delete the GL programs now, while the context is still current (the
+  // viewer calls this before the window goes).
+  void release_gl() {
+    main_.reset();
+    post_.reset();
+  }
+
+  std::vector<SceneParam>& params() { return params_; }
+  // The scene file, every file the last successful preprocess read, and the
+  // file named by the last error.
+  std::vector<std::filesystem::path> watched_files() const;
+
+ private:
+  SessionOptions opts_;
+  Scene scene_, file_scene_;
+  bool disk_ok_ = false;
+  QualityPreset preset_ = QualityPreset::balanced;
+  std::unique_ptr<Program> main_, post_;
+  int generation_ = 0;
+  int compiled_debug_view_ = 0;
+  std::string error_, error_file_;
+  std::vector<std::filesystem::path> deps_;
+  std::vector<SceneParam> params_;
+};
+
+}  // namespace ms::live

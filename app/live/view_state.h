@@ -1,0 +1,61 @@
+// The viewer's interactive state, shared by the loop (viewer.cpp), the GLFW
+// callbacks (input.cpp, reached through glfwSetWindowUserPointer) and the
+// ImGui panel and overlay. Keys and buttons only set requests here; the loop
+// serves them between frames, so file writes and recompiles never happen
+// inside a callback.
+#pragma once
+#include <string>
+
+#include "live/frame_stats.h"
+#include "scene/scene.h"
+
+namespace ms::live {
+
+inline constexpr int kDebugViews = 7;  // DEBUG_VIEW 0 (lit) .. 6
+const char* debug_view_name(int view);
+
+enum class Drag { none, orbit, pan, look, shadertoy_mouse };
+
+struct ViewState {
+  Camera camera;        // what the window shows
+  Camera scene_camera;  // what R goes back to: the scene file's
+  double time = 0.0;    // uTime / iTime, seconds
+  double start_time = 0.0;
+  bool paused = false;
+  float speed = 1.0f;
+  int debug_view = 0;   // requested; the session compiles it
+  bool show_panel = true;
+  bool show_help = false;
+  float render_scale = 1.0f;  // render at a fraction of the window, for slow GPUs
+  bool shadertoy = false;
+
+  // Mouse drag in progress.
+  Drag drag = Drag::none;
+  double last_x = 0.0, last_y = 0.0;
+  float mouse[4] = {0, 0, 0, 0};  // Shadertoy iMouse, pixels, origin bottom-left
+  int fb_width = 1, fb_height = 1;
+
+  // Requests, served and cleared by the loop.
+  bool want_reassemble = false;   // a #define (toggle, preset, quality value) changed
+  bool want_disk_reload = false;  // F5
+  bool want_shot = false;         // P: the frame, through the render capture path
+  bool want_window_shot = false;  // Shift+P: the window with the UI
+  bool want_write_camera = false; // C
+  bool want_write_values = false; // Ctrl+S / panel button
+
+  // Shown at the bottom of the window for a few seconds.
+  std::string message;
+  double message_until = 0.0;
+
+  // Frame times: GPU (timer query), CPU (our work per frame, before the
+  // swap), frame (swap to swap).
+  TimeSeries gpu_ms, cpu_ms, frame_ms;
+  double now = 0.0;  // seconds, for the medians
+
+  void say(const std::string& text, double seconds = 4.0) {
+    message = text;
+    message_until = now + seconds;
+  }
+};
+
+}  // namespace ms::live

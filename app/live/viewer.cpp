@@ -1,0 +1,292 @@
+#include "live/viewer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "gl/gl.h"  // glad before GLFW and the ImGui backends
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include "core/error.h"
+#include "gl/context.h"
+#include "io/image_io.h"
+#include "live/capture.h"
+#include "live/input.h"
+#include "live/live_log.h"
+#include "live/overlay.h"
+#include "live/panel.h"
+#include "live/session.h"
+#include "live/viewer_frame.h"
+#include "live/watcher.h"
+#include "render/frame.h"
+#include "render/gpu_timer.h"
+#include "scene/load.h"
+#include "scene/writeback.h"
+
+namespace ms::live {
+namespace fs = std::filesystem;
+
+namespace {
+
+double seconds_now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// Dear ImGui's context and backends, torn down before the window goes.
+struct ImGuiScope {
+  explicit ImGuiScope(GLFWwindow* w) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // never drop an imgui.ini into the user's folder
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(w, true);  // chains to our callbacks (input.cpp)
+    ImGui_ImplOpenGL3_Init("#version 450 core");
+  }
+  ~ImGuiScope() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+};
+
+// A reload in flight: seen at `t_event`, logged once its first frame is drawn.
+struct PendingReload {
+  bool active = false;
+  int number = 0;
+  double t_event = 0.0;
+  long frame_at_event = 0, iteration_at_event = 0;
+  ReloadResult result;
+};
+
+class Viewer {
+ public:
+  explicit Viewer(const ViewerOptions& o)
+      : o_(o), log_(o.log_file), session_(SessionOptions{o.load, o.assemble}) {}
+  int run();
+
+ private:
+  void reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event);
+  void poll_files();
+  void after_frame();
+  void serve_requests();
+  void screenshot();
+  void write_camera();
+  void write_values();
+
+  const ViewerOptions& o_;
+  LiveLog log_;
+  Session session_;
+  ViewState s_;
+  Watcher watcher_;
+  GLFWwindow* window_ = nullptr;
+  FrameDrawer* drawer_ = nullptr;
+  long frames_ = 0, iterations_ = 0;
+  int reloads_ = 0;
+  PendingReload pending_;
+};
+
+void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event) {
+  pending_ = {true, reloads_++, t_event, frame_at_event, iteration_at_event, session_.reload(from_disk)};
+  const ReloadResult& r = pending_.result;
+  if (r.camera_changed) s_.camera = s_.scene_camera = session_.scene().camera;
+  // New includes are watched from now on, removed ones dropped; while
+  // broken, any source-like file next to the watched ones counts.
+  watcher_.watch(session_.watched_files());
+  watcher_.set_match_any(!r.ok);
+  if (!r.ok) std::fprintf(stderr, "marchstudio: %s\n", r.error.c_str());
+}
+
+void Viewer::poll_files() {
+  std::vector<fs::path> changed = watcher_.poll();
+  if (!changed.empty()) {
+    const double t_event = seconds_now();
+    watcher_.settle(changed, o_.debounce_ms, 100);
+    const fs::path scene_file = fs::absolute(session_.scene().file).lexically_normal();
+    const bool toml = std::find(changed.begin(), changed.end(), scene_file) != changed.end();
+    reload(toml, t_event, frames_, iterations_);
+  } else if (s_.want_disk_reload) {
+    s_.want_disk_reload = false;
+    reload(true, seconds_now(), frames_, iterations_);
+  } else if (s_.want_reassemble || s_.debug_view != session_.debug_view) {
+    // A toggle, preset, quality value or debug view: same files, new defines.
+    s_.want_reassemble = false;
+    session_.debug_view = s_.debug_view;
+    const ReloadResult r = session_.reload(false);
+    log_.line(std::string("rebuild ") + (r.ok ? "ok" : "failed") + " debug_view=" +
+              std::to_string(session_.compiled_debug_view()) + " compile_ms=" + fmt("%.1f", r.compile_ms) +
+              (r.ok ? "" : " -- " + r.error));
+    if (!r.ok) std::fprintf(stderr, "marchstudio: %s\n", r.error.c_str());
+  }
+}
+
+// Runs after the swap of every frame: the reload line (with its latency in
+// frames, loop iterations and ms), the capture, the once-a-second stats.
+void Viewer::after_frame() {
+  if (pending_.active) {
+    pending_.active = false;
+    const ReloadResult& r = pending_.result;
+    const std::string latency = " frames=" + std::to_string(frames_ - pending_.frame_at_event) +
+                                " iterations=" + std::to_string(iterations_ - pending_.iteration_at_event + 1) +
+                                " ms=" + fmt("%.1f", (seconds_now() - pending_.t_event) * 1e3) +
+                                " compile_ms=" + fmt("%.1f", r.compile_ms);
+    log_.line("reload " + std::string(r.ok ? "ok " : "failed ") + std::to_string(pending_.number) + latency +
+              (r.ok ? "" : " -- " + r.error));
+    if (!o_.capture_dir.empty()) drawer_->capture(o_.capture_dir, pending_.number, log_);
+  }
+}
+
+void Viewer::serve_requests() {
+  if (s_.want_shot) {
+    s_.want_shot = false;
+    screenshot();
+  }
+  if (s_.want_write_camera) {
+    s_.want_write_camera = false;
+    write_camera();
+  }
+  if (s_.want_write_values) {
+    s_.want_write_values = false;
+    write_values();
+  }
+}
+
+void Viewer::screenshot() {
+  const int w = o_.shot_width > 0 ? o_.shot_width : drawer_->render_width();
+  const int h = o_.shot_height > 0 ? o_.shot_height : drawer_->render_height();
+  try {
+    const fs::path path = next_free_path(o_.shot_dir, o_.input.stem().string());
+    drawer_->screenshot(path, w, h);
+    log_.line("screenshot " + path.string());
+    s_.say("saved " + path.string());
+  } catch (const Error& e) {
+    std::fprintf(stderr, "marchstudio: %s\n", e.what());
+    s_.say(std::string("screenshot failed: ") + e.what());
+  }
+}
+
+void Viewer::write_camera() {
+  if (!session_.has_toml()) return s_.say("no scene TOML to write the camera to");
+  const Scene& scene = session_.scene();
+  try {
+    write_toml_edits(scene.file, camera_edits(s_.camera), [&](const std::string& text) { parse_scene(text, scene.file); });
+    log_.line("writeback camera " + scene.file.string());
+    s_.say("camera written to " + scene.file.string());
+  } catch (const Error& e) {
+    std::fprintf(stderr, "marchstudio: %s\n", e.what());
+    s_.say(std::string("not written: ") + e.what());
+  }
+}
+
+void Viewer::write_values() {
+  if (!session_.has_toml()) return s_.say("no scene TOML to write to");
+  const Scene& scene = session_.scene();
+  const std::vector<TomlEdit> edits = scene_value_edits(session_.file_scene(), scene);
+  if (edits.empty()) return s_.say("nothing changed since the file was read");
+  try {
+    write_toml_edits(scene.file, edits, [&](const std::string& text) { parse_scene(text, scene.file); });
+    log_.line("writeback values " + std::to_string(edits.size()) + " " + scene.file.string());
+    s_.say(std::to_string(edits.size()) + " values written to " + scene.file.string());
+  } catch (const Error& e) {
+    std::fprintf(stderr, "marchstudio: %s\n", e.what());
+    s_.say(std::string("not written: ") + e.what());
+  }
+}
+
+int Viewer::run() {
+  const Scene first = o_.load();  // bad input fails here, before any window
+  int w = o_.width, h = o_.height;
+  if (w <= 0 || h <= 0) {
+    const double fit = std::min({1.0, 1280.0 / first.render.width, 720.0 / first.render.height});
+    w = std::max(1, static_cast<int>(std::lround(first.render.width * fit)));
+    h = std::max(1, static_cast<int>(std::lround(first.render.height * fit)));
+  }
+  std::unique_ptr<Context> ctx =
+      create_window_context(w, h, "marchstudio view - " + o_.input.filename().string(), window_);
+  // The session's programs must go before the context, also on the way out
+  // of an exception.
+  struct ReleaseGl {
+    Session& s;
+    ~ReleaseGl() { s.release_gl(); }
+  } release_gl{session_};
+  install_input_callbacks(window_, &s_);
+  ImGuiScope imgui(window_);
+  FrameDrawer drawer(window_, *ctx, session_, s_);
+  drawer_ = &drawer;
+  log_.line("start backend=glfw renderer=\"" + ctx->info().renderer + "\" size=" + std::to_string(w) + "x" +
+            std::to_string(h));
+
+  s_.show_panel = !o_.hide_panel;
+  s_.paused = o_.paused;
+  s_.debug_view = session_.debug_view = std::clamp(o_.debug_view, 0, kDebugViews - 1);
+  reload(true, seconds_now(), 0, 1);  // the initial build is number 0 (frame_0.png)
+  s_.shadertoy = session_.shadertoy();
+  s_.start_time = o_.time >= 0.0 ? o_.time : session_.scene().render.time;
+  s_.time = s_.start_time;
+
+  const double t_start = seconds_now();
+  double t_last = t_start, t_stats = t_start, t_swap = t_start;
+  while (!glfwWindowShouldClose(window_)) {
+    ++iterations_;
+    const double t0 = seconds_now();
+    glfwPollEvents();
+    s_.now = t0;
+    poll_files();
+    const double dt = std::min(0.25, t0 - t_last);
+    t_last = t0;
+    apply_held_keys(window_, s_, dt);
+    if (!s_.paused) s_.time += dt * s_.speed;
+
+    const bool window_shot = s_.want_window_shot || frames_ + 1 == o_.shot_frame;
+    s_.want_window_shot = false;
+    const bool drawn = drawer.draw(frames_, dt, [&] {
+      if (s_.show_panel) draw_panel(s_, session_, ctx->info());
+      draw_overlay(s_, session_);
+    });
+    if (drawn && window_shot) drawer.window_shot(next_free_path(o_.shot_dir, o_.input.stem().string() + "_window"), log_);
+    const double t_cpu = seconds_now();
+    glfwSwapBuffers(window_);
+    const double t1 = seconds_now();
+    if (drawn) {
+      ++frames_;
+      s_.cpu_ms.add(t1, (t_cpu - t0) * 1e3);
+      s_.frame_ms.add(t1, (t1 - t_swap) * 1e3);
+      t_swap = t1;
+      drawer.poll_gpu_time(t1);
+      after_frame();
+      if (frames_ == o_.shot_frame) s_.want_shot = true;
+    }
+    serve_requests();
+    if (t1 - t_stats >= 1.0) {
+      t_stats = t1;
+      log_.line("frames " + std::to_string(frames_) + " gpu_ms=" + fmt("%.2f", s_.gpu_ms.median(t1)) +
+                " cpu_ms=" + fmt("%.2f", s_.cpu_ms.median(t1)) + " frame_ms=" + fmt("%.2f", s_.frame_ms.median(t1)));
+    }
+    if (o_.max_frames > 0 && frames_ >= o_.max_frames) break;
+    if (o_.exit_after > 0.0 && t1 - t_start >= o_.exit_after) break;
+    if (!drawn) glfwWaitEventsTimeout(0.05);  // minimised: do not spin
+    else if (!session_.main_program()) glfwWaitEventsTimeout(1.0 / 60.0);  // nothing to render yet: UI only
+  }
+  log_.line("exit frames=" + std::to_string(frames_));
+  drawer_ = nullptr;
+  return 0;
+}
+
+}  // namespace
+
+int run_viewer(const ViewerOptions& opts) {
+  Viewer v(opts);
+  return v.run();
+}
+
+}  // namespace ms::live

@@ -1,0 +1,40 @@
+// `marchstudio view`: a GLFW window that renders the scene continuously with
+// the same assembly, programs and FrameRenderer as `render`, reloads on
+// every save of the scene or any file it includes (inotify), and keeps the
+// last good frame on errors. The loop lives in viewer.cpp; camera, watcher,
+// panel, overlay and input each have their own file.
+#pragma once
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "scene/scene.h"
+#include "shader/assemble.h"
+
+namespace ms::live {
+
+struct ViewerOptions {
+  std::filesystem::path input;       // .toml or Shadertoy .glsl, for titles and names
+  std::function<Scene()> load;       // reads the input from disk (cli/input.h); throws ms::Error
+  AssembleOptions assemble;          // the shader dir
+  int width = 0, height = 0;         // window size; 0: the scene's, at most 1280x720
+  int debug_view = 0;                // DEBUG_VIEW at start (0 = lit)
+  bool paused = false;
+  double time = -1.0;                // start time; < 0: the scene's [render] time
+  std::filesystem::path log_file;    // empty: log lines go to stderr
+  std::filesystem::path capture_dir; // empty: no captures
+  std::filesystem::path shot_dir = ".";
+  int shot_width = 0, shot_height = 0;  // 0: screenshots at the window's render size
+  long shot_frame = -1;              // take both screenshots after this frame (scripts, docs)
+  double exit_after = 0.0;           // seconds; 0: run until closed
+  long max_frames = 0;               // 0: no limit
+  int debounce_ms = 10;              // quiet time that ends a save (editors write in steps)
+  bool hide_panel = false;
+};
+
+// Runs until the window closes, Esc, --exit-after or --max-frames. Returns
+// the process exit code. Throws ms::Error only before the window is up (no
+// display, bad flags); later problems are shown and logged, never fatal.
+int run_viewer(const ViewerOptions& opts);
+
+}  // namespace ms::live

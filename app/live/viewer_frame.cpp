@@ -1,0 +1,183 @@
+#include "live/viewer_frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "gl/gl.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include "core/error.h"
+#include "io/image_io.h"
+#include "live/capture.h"
+#include "render/uniforms.h"
+#include "scene/animation.h"
+
+namespace ms::live {
+namespace fs = std::filesystem;
+
+namespace {
+
+void set_params(const Program& p, const std::vector<SceneParam>& params) {
+  for (const SceneParam& q : params) {
+    const GLint loc = p.loc(q.name);
+    if (loc < 0) continue;  // compiled out
+    switch (q.is_int ? 0 : q.components) {
+      case 0: glUniform1i(loc, static_cast<int>(q.value[0])); break;
+      case 1: glUniform1f(loc, q.value[0]); break;
+      case 2: glUniform2fv(loc, 1, q.value.data()); break;
+      case 3: glUniform3fv(loc, 1, q.value.data()); break;
+      default: glUniform4fv(loc, 1, q.value.data()); break;
+    }
+  }
+}
+
+}  // namespace
+
+FrameDrawer::FrameDrawer(GLFWwindow* window, const Context& ctx, Session& session, ViewState& state)
+    : window_(window), ctx_(ctx), session_(session), s_(state), renderer_(ctx) {}
+
+UniformFn FrameDrawer::uniforms(int w, int h) {
+  return [this, w, h](const Program& p) {
+    const float time = static_cast<float>(s_.time);
+    if (session_.shadertoy()) {
+      channels_.bind();
+      ShadertoyInputs in;
+      in.time = time;
+      in.time_delta = static_cast<float>(dt_);
+      in.frame = static_cast<int>(frame_);
+      std::copy(std::begin(s_.mouse), std::end(s_.mouse), in.mouse);
+      set_shadertoy_uniforms(p, w, h, in);
+    } else {
+      set_scene_uniforms(p, posed(time), w, h, time, static_cast<int>(frame_));
+    }
+    set_params(p, session_.params());
+  };
+}
+
+Scene FrameDrawer::posed(float time) const {
+  const Scene& scene = session_.scene();
+  Scene view = scene;
+  try {
+    view = animated(scene, time);  // [[animation]] tracks, as `render` applies them
+  } catch (const Error&) {
+    // The keys make the scene unrenderable at this time (say, the camera
+    // on its target): show it unanimated rather than nothing.
+  }
+  // The camera follows its animation until the user moves it (R resumes).
+  const bool untouched = s_.camera.position == s_.scene_camera.position &&
+                         s_.camera.target == s_.scene_camera.target && s_.camera.fov_deg == s_.scene_camera.fov_deg;
+  if (!untouched) view.camera = s_.camera;
+  return view;
+}
+
+bool FrameDrawer::draw(long frame, double dt, const std::function<void()>& ui) {
+  glfwGetFramebufferSize(window_, &fbw_, &fbh_);
+  if (fbw_ <= 0 || fbh_ <= 0) return false;
+  s_.fb_width = fbw_;
+  s_.fb_height = fbh_;
+  frame_ = frame;
+  dt_ = dt;
+  rw_ = std::max(1, static_cast<int>(std::lround(fbw_ * s_.render_scale)));
+  rh_ = std::max(1, static_cast<int>(std::lround(fbh_ * s_.render_scale)));
+
+  const Program* main = session_.main_program();
+  const Program* post = session_.post_program();
+  bool rendered = false;
+  if (main && post) {
+    // FrameRenderer checks glGetError at its end: errors from before it
+    // (none expected) must not be blamed on the scene.
+    for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
+    }
+    FrameParams fp;
+    fp.width = rw_;
+    fp.height = rh_;
+    fp.spp = 1;  // interactive: one sample per pixel; screenshots use the scene's spp
+    fp.exposure = session_.scene().render.exposure;
+    gpu_.begin();
+    try {
+      renderer_.draw(*main, uniforms(rw_, rh_), *post, fp);
+      rendered = true;
+      last_error_.clear();
+    } catch (const Error& e) {
+      if (last_error_ != e.what()) std::fprintf(stderr, "marchstudio: %s\n", e.what());
+      last_error_ = e.what();
+    }
+    gpu_.end();
+  }
+  have_frame_ = have_frame_ || rendered;
+
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fbw_, fbh_);
+  glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  if (rendered) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer_.color_framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    // Float to the 8-bit window: values are display-encoded already.
+    glBlitFramebuffer(0, 0, rw_, rh_, 0, 0, fbw_, fbh_, GL_COLOR_BUFFER_BIT,
+                      rw_ == fbw_ && rh_ == fbh_ ? GL_NEAREST : GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  ui();
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  return true;
+}
+
+void FrameDrawer::poll_gpu_time(double now) {
+  if (std::optional<double> ms = gpu_.poll_ms()) s_.gpu_ms.add(now, *ms);
+}
+
+void FrameDrawer::capture(const fs::path& dir, int k, LiveLog& log) {
+  if (!have_frame_) {
+    log.line("capture " + std::to_string(k) + " none");
+    return;
+  }
+  try {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    const fs::path path = dir / ("frame_" + std::to_string(k) + ".png");
+    write_image(renderer_.read_color(), path, {{"Software", "marchstudio 0.1.0 view"}});
+    log.line("capture " + std::to_string(k) + " " + path.string());
+  } catch (const Error& e) {
+    log.line("capture " + std::to_string(k) + " failed -- " + e.what());
+  }
+}
+
+void FrameDrawer::screenshot(const fs::path& path, int w, int h) {
+  const Program* main = session_.main_program();
+  const Program* post = session_.post_program();
+  if (!main || !post) fail_input("no program to render: the scene has not compiled yet");
+  check_output_path(path);
+  FrameParams fp;
+  fp.width = w;
+  fp.height = h;
+  fp.spp = std::max(1, session_.scene().render.spp);
+  fp.exposure = session_.scene().render.exposure;
+  const Image img = renderer_.render(*main, uniforms(w, h), *post, fp);
+  write_image(img, path,
+              {{"Software", "marchstudio 0.1.0 view"},
+               {"ImageDescription", session_.scene().name + " t=" + std::to_string(s_.time) +
+                                        " spp=" + std::to_string(fp.spp) + " debug_view=" +
+                                        std::to_string(session_.compiled_debug_view())}});
+}
+
+void FrameDrawer::window_shot(const fs::path& path, LiveLog& log) {
+  try {
+    write_image(grab_window(fbw_, fbh_), path, {{"Software", "marchstudio 0.1.0 view"}});
+    log.line("window_shot " + path.string());
+  } catch (const Error& e) {
+    log.line(std::string("window_shot failed -- ") + e.what());
+  }
+}
+
+}  // namespace ms::live

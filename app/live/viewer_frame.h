@@ -1,0 +1,65 @@
+// One window frame of the viewer: the scene rendered by FrameRenderer (the
+// same passes as `render`, into its float targets), blitted to the window,
+// then the ImGui layer. Also the pictures taken from that frame: captures
+// for --capture-dir, screenshots re-rendered at any size, window grabs.
+#pragma once
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "gl/context.h"
+#include "live/live_log.h"
+#include "live/session.h"
+#include "live/view_state.h"
+#include "render/frame.h"
+#include "render/gpu_timer.h"
+#include "render/uniforms.h"
+
+namespace ms::live {
+
+class FrameDrawer {
+ public:
+  FrameDrawer(GLFWwindow* window, const Context& ctx, Session& session, ViewState& state);
+  ~FrameDrawer() = default;
+  FrameDrawer(const FrameDrawer&) = delete;
+  FrameDrawer& operator=(const FrameDrawer&) = delete;
+
+  // Render the scene (when a program exists), show it, run `ui` inside an
+  // ImGui frame and render that. False when the window has no area.
+  // A GL error while rendering is reported once, never thrown.
+  bool draw(long frame, double dt, const std::function<void()>& ui);
+  // Feed the GPU timer's newest result into the state's series.
+  void poll_gpu_time(double now);
+
+  // The last frame's image (post output, render size) as dir/frame_<k>.png;
+  // logs "capture <k> <path>".
+  void capture(const std::filesystem::path& dir, int k, LiveLog& log);
+  // Re-render the current view at w x h with the scene's spp and write it,
+  // the way `render` does. Throws ms::Error.
+  void screenshot(const std::filesystem::path& path, int w, int h);
+  // The window's back buffer with the UI (call between draw() and the swap).
+  void window_shot(const std::filesystem::path& path, LiveLog& log);
+
+  int render_width() const { return rw_; }
+  int render_height() const { return rh_; }
+
+ private:
+  UniformFn uniforms(int w, int h);
+  // The scene as drawn at `time`: animation applied, the interactive camera.
+  Scene posed(float time) const;
+
+  GLFWwindow* window_;
+  const Context& ctx_;
+  Session& session_;
+  ViewState& s_;
+  FrameRenderer renderer_;
+  GpuTimer gpu_;
+  BlackChannels channels_;  // iChannel0..3 of a Shadertoy shader read black
+  int rw_ = 1, rh_ = 1, fbw_ = 1, fbh_ = 1;
+  long frame_ = 0;
+  double dt_ = 0.0;
+  bool have_frame_ = false;
+  std::string last_error_;
+};
+
+}  // namespace ms::live

@@ -1,0 +1,278 @@
+#include "scene/writeback.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "core/error.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+std::string toml_float(float v) {
+  if (!std::isfinite(v)) fail_input("cannot write a non-finite number into a scene file");
+  char buf[64];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  std::string s(buf, end);
+  // "100" would read back as an integer; "1e-04" is already a TOML float.
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string toml_int(int v) { return std::to_string(v); }
+std::string toml_bool(bool v) { return v ? "true" : "false"; }
+
+std::string toml_vec3(glm::vec3 v) {
+  return "[" + toml_float(v.x) + ", " + toml_float(v.y) + ", " + toml_float(v.z) + "]";
+}
+
+std::string toml_string(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+namespace {
+
+toml::table parse(std::string_view text, const std::string& name) {
+#if TOML_EXCEPTIONS
+  try {
+    return toml::parse(text, std::string_view{name});
+  } catch (const toml::parse_error& e) {
+    fail_input("invalid TOML: " + std::string(e.description()), name, static_cast<int>(e.source().begin.line));
+  }
+#else
+  toml::parse_result r = toml::parse(text, std::string_view{name});
+  if (!r) fail_input("invalid TOML: " + std::string(r.error().description()), name,
+                     static_cast<int>(r.error().source().begin.line));
+  return std::move(r).table();
+#endif
+}
+
+// toml++ positions are 1-based lines and 1-based columns counted in code
+// points; turn them into byte offsets of `text`.
+class Offsets {
+ public:
+  explicit Offsets(std::string_view text) : text_(text) {
+    starts_.push_back(0);
+    for (size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '\n') starts_.push_back(i + 1);
+  }
+  size_t at(const toml::source_position& p) const {
+    size_t off = line_start(p.line);
+    for (toml::source_index col = 1; col < p.column && off < text_.size(); ++col) {
+      ++off;  // past the lead byte, then past continuation bytes
+      while (off < text_.size() && (static_cast<unsigned char>(text_[off]) & 0xC0) == 0x80) ++off;
+    }
+    return off;
+  }
+  size_t line_start(toml::source_index line) const {
+    return line >= 1 && line <= starts_.size() ? starts_[line - 1] : text_.size();
+  }
+  // Offset just past the '\n' ending `line` (or the end of the text).
+  size_t next_line(toml::source_index line) const { return line_start(line + 1); }
+
+ private:
+  std::string_view text_;
+  std::vector<size_t> starts_;
+};
+
+bool before(const toml::source_position& a, const toml::source_position& b) {
+  return a.line != b.line ? a.line < b.line : a.column < b.column;
+}
+
+std::string apply_one(const std::string& text, const TomlEdit& e, const std::string& name) {
+  toml::table root = parse(text, name);
+  const Offsets off(text);
+  std::string out = text;
+  const std::string what = e.index >= 0 ? e.table + "[" + std::to_string(e.index) + "]" : e.table;
+
+  toml::table* t = nullptr;
+  if (e.index >= 0) {
+    toml::array* arr = root[e.table].as_array();
+    if (!arr || static_cast<size_t>(e.index) >= arr->size() || !(*arr)[e.index].as_table())
+      fail_input("cannot write '" + what + "." + e.key + "': the file has no such entry", name, 0, what);
+    t = (*arr)[e.index].as_table();
+  } else if (toml::node* n = root.get(e.table)) {
+    t = n->as_table();
+    if (!t) fail_input("cannot write '" + e.table + "." + e.key + "': '" + e.table + "' is not a table", name, 0,
+                       e.table);
+  } else {
+    // No such table yet: a new section at the end of the file.
+    if (!out.empty() && out.back() != '\n') out += '\n';
+    return out + "\n[" + e.table + "]\n" + e.key + " = " + e.value + "\n";
+  }
+
+  if (toml::node* v = t->get(e.key)) {
+    const size_t b = off.at(v->source().begin), en = off.at(v->source().end);
+    return out.replace(b, en - b, e.value);
+  }
+
+  // Absent key: after the table's last key/value.
+  const toml::key* last_key = nullptr;
+  const toml::node* last_val = nullptr;
+  for (auto&& [k, v] : *t) {
+    if (!last_val || before(last_val->source().end, v.source().end)) {
+      last_key = &k;
+      last_val = &v;
+    }
+  }
+  if (t->is_inline()) {
+    if (last_val) return out.insert(off.at(last_val->source().end), ", " + e.key + " = " + e.value);
+    return out.insert(off.at(t->source().begin) + 1, " " + e.key + " = " + e.value + " ");  // after '{'
+  }
+  if (!last_val) {  // an empty [table] or [[entry]]: right under its header
+    return out.insert(off.next_line(t->source().begin.line), e.key + " = " + e.value + "\n");
+  }
+  // Copy the sibling's indentation and any dotted prefix ("camera." in
+  // `camera.fov = 30`) so the new line lands in the same table.
+  const size_t line_b = off.line_start(last_key->source().begin.line);
+  const std::string prefix = out.substr(line_b, off.at(last_key->source().begin) - line_b);
+  size_t at = off.next_line(last_val->source().end.line);
+  std::string line = prefix + e.key + " = " + e.value + "\n";
+  if (at == out.size() && !out.empty() && out.back() != '\n') line = "\n" + line;
+  return out.insert(at, line);
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) fail_input("cannot read the scene file", file.string());
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+std::string apply_toml_edits(std::string_view text, const std::vector<TomlEdit>& edits,
+                             const std::string& display_name) {
+  std::string out(text);
+  // One at a time: each edit re-parses, so positions are never stale.
+  for (const TomlEdit& e : edits) out = apply_one(out, e, display_name);
+  parse(out, display_name);  // never hand back text that does not read
+  return out;
+}
+
+void write_toml_edits(const fs::path& file, const std::vector<TomlEdit>& edits, const TomlCheck& check) {
+  const std::string text = apply_toml_edits(read_text(file), edits, file.string());
+  if (check) check(text);
+  struct stat st {};
+  const mode_t mode = ::stat(file.c_str(), &st) == 0 ? (st.st_mode & 07777) : 0644;
+  std::string tmp = (file.parent_path() / ("." + file.filename().string() + ".XXXXXX")).string();
+  if (file.parent_path().empty()) tmp = "." + file.filename().string() + ".XXXXXX";
+  const int fd = ::mkstemp(tmp.data());
+  if (fd < 0) fail_system("cannot create a temporary file next to the scene file", file.string());
+  bool ok = ::fchmod(fd, mode) == 0;
+  for (size_t done = 0; ok && done < text.size();) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    ok = n > 0;
+    if (ok) done += static_cast<size_t>(n);
+  }
+  ok = ::fsync(fd) == 0 && ok;
+  ok = ::close(fd) == 0 && ok;
+  if (!ok || ::rename(tmp.c_str(), file.c_str()) != 0) {
+    ::unlink(tmp.c_str());
+    fail_system("cannot write the scene file", file.string());
+  }
+}
+
+std::vector<TomlEdit> camera_edits(const Camera& cam) {
+  return {{"camera", -1, "position", toml_vec3(cam.position)},
+          {"camera", -1, "target", toml_vec3(cam.target)},
+          {"camera", -1, "up", toml_vec3(cam.up)},
+          {"camera", -1, "fov", toml_float(cam.fov_deg)}};
+}
+
+namespace {
+
+// Collects an edit for each field whose value changed.
+struct Differ {
+  std::vector<TomlEdit>& out;
+  std::string table;
+  int index = -1;
+  void num(const char* key, float a, float b) {
+    if (a != b) out.push_back({table, index, key, toml_float(b)});
+  }
+  void count(const char* key, int a, int b) {
+    if (a != b) out.push_back({table, index, key, toml_int(b)});
+  }
+  void flag(const char* key, bool a, bool b) {
+    if (a != b) out.push_back({table, index, key, toml_bool(b)});
+  }
+  void vec(const char* key, glm::vec3 a, glm::vec3 b) {
+    if (a != b) out.push_back({table, index, key, toml_vec3(b)});
+  }
+};
+
+}  // namespace
+
+std::vector<TomlEdit> scene_value_edits(const Scene& before, const Scene& after) {
+  std::vector<TomlEdit> out;
+  const Quality &qa = before.quality, &qb = after.quality;
+  Differ q{out, "quality"};
+  q.count("max_steps", qa.max_steps, qb.max_steps);
+  q.num("max_distance", qa.max_distance, qb.max_distance);
+  q.num("hit_tolerance", qa.hit_tolerance, qb.hit_tolerance);
+  q.num("hit_epsilon", qa.hit_epsilon, qb.hit_epsilon);
+  q.num("lipschitz", qa.lipschitz, qb.lipschitz);
+  q.count("shadow_steps", qa.shadow_steps, qb.shadow_steps);
+  q.count("ao_taps", qa.ao_taps, qb.ao_taps);
+  q.count("bounces", qa.bounces, qb.bounces);
+  q.flag("shadows", qa.shadows, qb.shadows);
+  q.flag("ao", qa.ao, qb.ao);
+  q.flag("reflections", qa.reflections, qb.reflections);
+  q.flag("checker_filter", qa.checker_filter, qb.checker_filter);
+  Differ sky{out, "sky"};
+  sky.vec("horizon", before.sky.horizon, after.sky.horizon);
+  sky.vec("zenith", before.sky.zenith, after.sky.zenith);
+  sky.vec("ambient", before.sky.ambient, after.sky.ambient);
+  Differ render{out, "render"};
+  render.num("exposure", before.render.exposure, after.render.exposure);
+
+  for (size_t k = 0; k < after.lights.size() && k < before.lights.size(); ++k) {
+    const Light &a = before.lights[k], &b = after.lights[k];
+    Differ d{out, "lights", static_cast<int>(k)};
+    if (b.kind == LightKind::point) {
+      d.vec("position", a.position, b.position);
+      d.vec("attenuation", a.attenuation, b.attenuation);
+    } else {
+      d.vec("direction", a.direction, b.direction);
+    }
+    d.vec("color", a.color, b.color);
+    d.num("intensity", a.intensity, b.intensity);
+    d.num("size", a.size, b.size);
+  }
+  for (size_t k = 0; k < after.materials.size() && k < before.materials.size(); ++k) {
+    const Material &a = before.materials[k], &b = after.materials[k];
+    Differ d{out, "materials", static_cast<int>(k)};
+    d.vec("color", a.color, b.color);
+    d.num("ambient", a.ambient, b.ambient);
+    d.num("diffuse", a.diffuse, b.diffuse);
+    d.num("specular", a.specular, b.specular);
+    d.num("shininess", a.shininess, b.shininess);
+    d.num("reflectivity", a.reflectivity, b.reflectivity);
+    if (b.pattern == Pattern::checker) {
+      d.vec("color2", a.color2, b.color2);
+      d.num("pattern_scale", a.pattern_scale, b.pattern_scale);
+      d.vec("pattern_velocity", a.pattern_velocity, b.pattern_velocity);
+    }
+  }
+  return out;
+}
+
+}  // namespace ms

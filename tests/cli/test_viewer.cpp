@@ -1,0 +1,208 @@
+// `marchstudio view` under Xvfb (a real GLFW window on Mesa llvmpipe): hot
+// reload on rename-saves, compile errors that keep the last good frame and
+// name file:line, recovery, new includes watched and removed ones dropped,
+// reload latency counted in frames, and every debug view.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "io/image_io.h"
+#include "run.h"
+#include "test_viewer_util.h"
+
+namespace ms::test {
+namespace {
+namespace fs = std::filesystem;
+
+// The seed scene's map with the ball in the floor's material; the tests
+// turn it red (MAT_BALL), break it, fix it, grow it from an include.
+std::string map_glsl(const std::string& ball_mat, const std::string& radius = "1.0",
+                     const std::string& include = "") {
+  return include +
+         "// viewer test map\n"
+         "vec2 map(vec3 p) {\n"
+         "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
+         "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), " + radius + "), " + ball_mat + ");\n"
+         "  return opUnion(ground, ball);\n"
+         "}\n";
+}
+
+constexpr int kMaxLatencyFrames = 3;
+
+class Viewer : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    std::string toml = read_file(source_dir() / "scenes/seed.toml");
+    write_file(dir / "seed.toml", toml);  // map = "seed.glsl", next to it
+    write_file(dir / "seed.glsl", map_glsl("MAT_FLOOR"));
+  }
+
+  void start(std::vector<std::string> extra = {}) {
+    // -a from a per-process start number: parallel ctest runs do not race
+    // for the same display.
+    const std::string server = std::to_string(100 + getpid() % 20000);
+    std::vector<std::string> argv = {"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+                                     (dir / "seed.toml").string(), "--size", "160x90", "--paused", "--no-panel",
+                                     "--log", log().string(), "--capture-dir", (dir / "cap").string(),
+                                     "--exit-after", "55"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    proc = std::make_unique<BackgroundProcess>(argv, dir / "out.txt", dir / "err.txt");
+    ASSERT_TRUE(proc->started());
+    const std::string first = wait_for_line(log(), "^reload (ok|failed) 0 ", 30);
+    ASSERT_FALSE(first.empty()) << read_file(dir / "err.txt");
+    ASSERT_FALSE(wait_for_line(log(), "^capture 0 ", 10).empty());
+  }
+
+  fs::path log() const { return dir / "log.txt"; }
+  Image capture(int k) { return read_image(dir / "cap" / ("frame_" + std::to_string(k) + ".png")); }
+
+  // Saves by rename, waits for reload number `k`, checks its latency and
+  // returns its log line.
+  std::string save_and_wait(const fs::path& file, const std::string& text, int k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    save_by_rename(file, text);
+    const std::string line = wait_for_line(log(), "^reload (ok|failed) " + std::to_string(k) + " ", 20);
+    const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_FALSE(line.empty()) << "no reload " << k << "\n" << read_file(log()) << read_file(dir / "err.txt");
+    if (line.empty()) return line;
+    EXPECT_GE(field(line, "frames"), 1);
+    EXPECT_LE(field(line, "frames"), kMaxLatencyFrames) << line;
+    EXPECT_FALSE(wait_for_line(log(), "^capture " + std::to_string(k) + " ", 10).empty());
+    // For docs/viewer.md: save -> log line, as a person would see it.
+    std::cout << "[ latency ] reload " << k << ": " << wall_ms << " ms from the rename to the log line; " << line
+              << "\n";
+    return line;
+  }
+
+  int frames_logged() {
+    int n = -1;
+    for (const std::string& l : file_lines(log()))
+      if (l.rfind("frames ", 0) == 0) n = std::stoi(l.substr(7));
+    return n;
+  }
+
+  TempDir dir;
+  std::unique_ptr<BackgroundProcess> proc;
+};
+
+TEST_F(Viewer, EditBreakFixRecover) {
+  start();
+  const Image grey = capture(0);
+
+  // 1. A colour change in the GLSL, saved by rename: the ball turns red.
+  std::string line = save_and_wait(dir / "seed.glsl", map_glsl("MAT_BALL"), 1);
+  ASSERT_EQ(line.rfind("reload ok 1", 0), 0u) << line;
+  const Image red = capture(1);
+  EXPECT_GT(redness(red), redness(grey) + 0.02) << "the frame did not get redder";
+
+  // 2. A syntax error: still running, file:line reported, frames still come,
+  //    and the frame shown is the last good one.
+  const int frames_before = frames_logged();
+  line = save_and_wait(dir / "seed.glsl", map_glsl("MAT_BAL"), 2);  // undeclared identifier on line 4
+  ASSERT_EQ(line.rfind("reload failed 2", 0), 0u) << line;
+  EXPECT_NE(line.find("seed.glsl:4:"), std::string::npos) << line;
+  EXPECT_NE(read_file(dir / "err.txt").find("seed.glsl:4:"), std::string::npos);  // and on the console
+  EXPECT_TRUE(proc->running());
+  EXPECT_TRUE(wait_until([&] { return frames_logged() > std::max(frames_before, 0) + 1; }, 10))
+      << "frames stopped coming after the error";
+  EXPECT_LT(mean_abs_diff(capture(2), red), 1e-3) << "the last good frame is not what is shown";
+
+  // 3. Fixed: recovers (a different colour proves it is the new program).
+  line = save_and_wait(dir / "seed.glsl", map_glsl("MAT_BALL", "1.2"), 3);
+  ASSERT_EQ(line.rfind("reload ok 3", 0), 0u) << line;
+  EXPECT_GT(redness(capture(3)), redness(red) + 0.005) << "a bigger red ball should be redder";
+  EXPECT_TRUE(proc->running());
+  // The viewer never writes the scene file unless asked (C, Ctrl+S).
+  EXPECT_EQ(read_file(dir / "seed.toml"), read_file(source_dir() / "scenes/seed.toml"));
+}
+
+TEST_F(Viewer, NewIncludeIsWatchedAndRemovedOneIsNot) {
+  start();
+  write_file(dir / "radius.glsl", "float ballRadius() { return 0.8; }\n");
+  // 4. A new #include of a new file...
+  std::string line =
+      save_and_wait(dir / "seed.glsl", map_glsl("MAT_BALL", "ballRadius()", "#include \"radius.glsl\"\n"), 1);
+  ASSERT_EQ(line.rfind("reload ok 1", 0), 0u) << line;
+  const Image small = capture(1);
+  // ...then an edit of that file alone reloads.
+  line = save_and_wait(dir / "radius.glsl", "float ballRadius() { return 1.3; }\n", 2);
+  ASSERT_EQ(line.rfind("reload ok 2", 0), 0u) << line;
+  EXPECT_GT(redness(capture(2)), redness(small) + 0.01);
+
+  // Drop the include: the file is no longer watched.
+  line = save_and_wait(dir / "seed.glsl", map_glsl("MAT_BALL"), 3);
+  ASSERT_EQ(line.rfind("reload ok 3", 0), 0u) << line;
+  save_by_rename(dir / "radius.glsl", "float ballRadius() { return 0.5; }\n");
+  EXPECT_TRUE(wait_for_line(log(), "^reload (ok|failed) 4 ", 1.5).empty()) << "an unused file triggered a reload";
+}
+
+TEST_F(Viewer, BrokenAtStartThenDeletedThenRecreated) {
+  write_file(dir / "seed.glsl", map_glsl("MAT_NOPE"));
+  start();
+  EXPECT_FALSE(wait_for_line(log(), "^reload failed 0 .*seed.glsl:4:", 1).empty()) << read_file(log());
+  EXPECT_TRUE(proc->running());
+  // Fixed: the first good program.
+  std::string line = save_and_wait(dir / "seed.glsl", map_glsl("MAT_BALL"), 1);
+  ASSERT_EQ(line.rfind("reload ok 1", 0), 0u) << line;
+  // Deleted: an error, still running; recreated: back.
+  fs::remove(dir / "seed.glsl");
+  ASSERT_FALSE(wait_for_line(log(), "^reload failed 2 ", 20).empty()) << read_file(log());
+  EXPECT_TRUE(proc->running());
+  line = save_and_wait(dir / "seed.glsl", map_glsl("MAT_BALL"), 3);
+  EXPECT_EQ(line.rfind("reload ok 3", 0), 0u) << line;
+  // A half-written file (truncated mid-save) then the full one.
+  { std::ofstream(dir / "seed.glsl") << "vec2 map(vec3 p) {\n  vec2 ground = "; }
+  ASSERT_FALSE(wait_for_line(log(), "^reload failed 4 ", 20).empty()) << read_file(log());
+  line = save_and_wait(dir / "seed.glsl", map_glsl("MAT_FLOOR"), 5);
+  EXPECT_EQ(line.rfind("reload ok 5", 0), 0u) << line;
+  EXPECT_TRUE(proc->running());
+}
+
+TEST_F(Viewer, ScreenshotsAtWindowAndChosenSize) {
+  start({"--shot-frame", "2", "--shot-size", "200x120", "--shot-dir", (dir / "shots").string()});
+  ASSERT_FALSE(wait_for_line(log(), "^screenshot ", 20).empty()) << read_file(log());
+  const Image shot = read_image(dir / "shots/seed_1.png");
+  EXPECT_EQ(shot.width, 200);
+  EXPECT_EQ(shot.height, 120);
+  ASSERT_FALSE(wait_for_line(log(), "^window_shot ", 5).empty());
+  const Image window = read_image(dir / "shots/seed_window_1.png");
+  EXPECT_EQ(window.width, 160);
+  EXPECT_EQ(window.height, 90);
+}
+
+// Before any window: a missing scene is bad input (2), no display is a
+// system failure (3); neither needs Xvfb.
+TEST(ViewerStart, ExitCodesWithoutAWindow) {
+  TempDir dir;
+  RunResult r = run_marchstudio({"view", (dir / "missing.toml").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("missing.toml: input file not found"), std::string::npos) << r.err;
+  BackgroundProcess proc({"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", MARCH_BIN, "view",
+                          (source_dir() / "scenes/seed.toml").string()},
+                         dir / "out.txt", dir / "err.txt");
+  EXPECT_EQ(proc.wait_exit(20), 3) << read_file(dir / "err.txt");
+  EXPECT_NE(read_file(dir / "err.txt").find("xvfb-run"), std::string::npos);  // the hint
+}
+
+class DebugView : public Viewer, public ::testing::WithParamInterface<int> {};
+
+// Each debug view compiles, renders and differs from the lit image.
+TEST_P(DebugView, RendersAndDiffersFromLit) {
+  write_file(dir / "seed.glsl", map_glsl("MAT_BALL"));
+  start({"--debug-view", "0", "--max-frames", "2"});
+  const Image lit = capture(0);
+  proc.reset();
+  fs::remove_all(dir / "cap");
+  fs::remove(log());
+  start({"--debug-view", std::to_string(GetParam()), "--max-frames", "2"});
+  EXPECT_FALSE(wait_for_line(log(), "^reload ok 0 ", 1).empty()) << read_file(log());
+  const Image view = capture(0);
+  EXPECT_GT(mean_abs_diff(view, lit), 0.03) << "debug view " << GetParam() << " looks like the lit image";
+}
+
+INSTANTIATE_TEST_SUITE_P(Views, DebugView, ::testing::Range(1, 7));
+
+}  // namespace
+}  // namespace ms::test

@@ -1,0 +1,152 @@
+// Helpers for the viewer's integration tests: a background process in its
+// own process group (xvfb-run, Xvfb and marchstudio die together), polling
+// a log file for a line, and image statistics.
+#pragma once
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "io/image.h"
+
+namespace ms::test {
+
+inline bool on_path(const std::string& exe) {
+  return std::system(("command -v " + exe + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+class BackgroundProcess {
+ public:
+  BackgroundProcess(const std::vector<std::string>& argv, const std::filesystem::path& out,
+                    const std::filesystem::path& err, const std::filesystem::path& cwd = {}) {
+    pid_ = fork();
+    if (pid_ == 0) {
+      setpgid(0, 0);  // a group of its own: one kill reaches Xvfb too
+      if (!cwd.empty() && chdir(cwd.c_str()) != 0) _exit(126);
+      if (!freopen(out.c_str(), "w", stdout) || !freopen(err.c_str(), "w", stderr) ||
+          !freopen("/dev/null", "r", stdin))
+        _exit(126);
+      std::vector<char*> args;
+      for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+      args.push_back(nullptr);
+      execvp(args[0], args.data());
+      _exit(127);
+    }
+    if (pid_ > 0) setpgid(pid_, pid_);  // also here: no race with the child's own call
+  }
+  ~BackgroundProcess() {
+    if (pid_ <= 0 || exited_) return;
+    kill(-pid_, SIGTERM);
+    if (wait_exit(5.0) < 0) {
+      kill(-pid_, SIGKILL);
+      wait_exit(5.0);
+    }
+  }
+  BackgroundProcess(const BackgroundProcess&) = delete;
+  BackgroundProcess& operator=(const BackgroundProcess&) = delete;
+
+  bool started() const { return pid_ > 0; }
+  bool running() {
+    if (exited_) return false;
+    int status = 0;
+    if (waitpid(pid_, &status, WNOHANG) == pid_) finish(status);
+    return !exited_;
+  }
+  void signal(int sig) { kill(pid_, sig); }
+  // The exit code, or -1 when it is still running after `timeout_s`.
+  int wait_exit(double timeout_s) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    while (running()) {
+      if (std::chrono::steady_clock::now() > end) return -1;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return code_;
+  }
+
+ private:
+  void finish(int status) {
+    exited_ = true;
+    code_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  pid_t pid_ = -1;
+  bool exited_ = false;
+  int code_ = -1;
+};
+
+inline std::vector<std::string> file_lines(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::vector<std::string> out;
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// Polls `pred` every 20 ms; true when it held before `timeout_s`.
+inline bool wait_until(const std::function<bool()>& pred, double timeout_s) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (std::chrono::steady_clock::now() < end) {
+    if (pred()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return pred();
+}
+
+// The first line of `file` matching `re`, waiting up to `timeout_s`; empty when none came.
+inline std::string wait_for_line(const std::filesystem::path& file, const std::string& re, double timeout_s) {
+  const std::regex r(re);
+  std::string found;
+  wait_until(
+      [&] {
+        for (const std::string& line : file_lines(file))
+          if (std::regex_search(line, r)) {
+            found = line;
+            return true;
+          }
+        return false;
+      },
+      timeout_s);
+  return found;
+}
+
+// Integer value of `key=<n>` in a log line, -1 when absent.
+inline double field(const std::string& line, const std::string& key) {
+  std::smatch m;
+  if (!std::regex_search(line, m, std::regex("\\b" + key + "=([0-9.]+)"))) return -1;
+  return std::stod(m[1]);
+}
+
+// Mean of (R - G) over the image: how red it is.
+inline double redness(const Image& img) {
+  double s = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) s += img.at(x, y, 0) - img.at(x, y, 1);
+  return s / (static_cast<double>(img.width) * img.height);
+}
+
+inline double mean_abs_diff(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height) return 1e9;
+  double s = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x)
+      for (int c = 0; c < 3; ++c) s += std::abs(a.at(x, y, c) - b.at(x, y, c));
+  return s / (3.0 * a.width * a.height);
+}
+
+// Replace a file the way vim and VS Code save it: write a temporary next to
+// it, then rename it over the original.
+inline void save_by_rename(const std::filesystem::path& p, const std::string& text) {
+  const std::filesystem::path tmp = p.parent_path() / ("." + p.filename().string() + ".swp~");
+  { std::ofstream(tmp, std::ios::binary) << text; }
+  std::filesystem::rename(tmp, p);
+}
+
+}  // namespace ms::test

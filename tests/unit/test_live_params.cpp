@@ -1,0 +1,152 @@
+// live/: the pure pieces of the viewer: ranged scene uniforms parsed from
+// GLSL, quality presets, and the frame-time medians.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "live/frame_stats.h"
+#include "live/overlay.h"
+#include "live/panel.h"
+#include "live/presets.h"
+#include "live/scene_params.h"
+
+namespace ms::live {
+namespace {
+
+TEST(LiveParams, RangedUniformsAreFound) {
+  const auto params = parse_scene_params(
+      "uniform float uTwist = 0.5;   // range(0, 2)\n"
+      "uniform vec3 uTint = vec3(1.0, 0.8, 0.6); // color\n"
+      "  uniform int uCount = 4; // how many: range(1, 16)\n"
+      "uniform vec2 uOffset; // range(-1, 1)\n"
+      "uniform float uPlain;  // set by the host\n"
+      "uniform float uNoComment = 1.0;\n"
+      "uniform vec3 uSplat = vec3(0.25); // range(0, 1)\n");
+  ASSERT_EQ(params.size(), 5u);
+  EXPECT_EQ(params[0].name, "uTwist");
+  EXPECT_FLOAT_EQ(params[0].lo, 0.0f);
+  EXPECT_FLOAT_EQ(params[0].hi, 2.0f);
+  EXPECT_FLOAT_EQ(params[0].value[0], 0.5f);
+  EXPECT_TRUE(params[1].color);
+  EXPECT_EQ(params[1].components, 3);
+  EXPECT_FLOAT_EQ(params[1].initial[1], 0.8f);
+  EXPECT_TRUE(params[2].is_int);
+  EXPECT_FLOAT_EQ(params[2].value[0], 4.0f);
+  EXPECT_FLOAT_EQ(params[2].hi, 16.0f);
+  EXPECT_EQ(params[3].components, 2);
+  EXPECT_FLOAT_EQ(params[3].value[0], -1.0f);  // no initializer: the low end
+  EXPECT_FLOAT_EQ(params[4].value[2], 0.25f);  // vec3(0.25) splats
+}
+
+TEST(LiveParams, BadRangesAndDuplicatesAreSkipped) {
+  const auto params = parse_scene_params(
+      "uniform float a = 1.0; // range(2, 1)\n"
+      "uniform float b = 1.0; // range(0, x)\n"
+      "uniform float c = 1.0; // range(0, 3)\n"
+      "uniform float c = 1.0; // range(0, 3)\n");
+  ASSERT_EQ(params.size(), 1u);
+  EXPECT_EQ(params[0].name, "c");
+}
+
+TEST(LiveParams, ValuesSurviveAReloadUnlessTheFileChangedThem) {
+  auto old = parse_scene_params("uniform float a = 1.0; // range(0, 2)\nuniform float b = 1.0; // range(0, 2)\n");
+  old[0].value[0] = 1.5f;
+  old[1].value[0] = 0.2f;
+  auto fresh = parse_scene_params("uniform float a = 1.0; // range(0, 4)\nuniform float b = 0.7; // range(0, 2)\n");
+  carry_over_values(fresh, old);
+  EXPECT_FLOAT_EQ(fresh[0].value[0], 1.5f);  // same initializer: the user's value stays
+  EXPECT_FLOAT_EQ(fresh[1].value[0], 0.7f);  // edited initializer: the file wins
+}
+
+TEST(LiveParams, CopiedDeclarationsReadBackTheSameValues) {
+  auto params = parse_scene_params(
+      "uniform float a = 0.5; // range(-1, 2)\n"
+      "uniform vec3 c = vec3(1.0, 0.5, 0.25); // color\n"
+      "uniform int n = 3; // range(1, 8)\n"
+      "uniform vec2 o; // range(-2, 2)\n");
+  params[0].value[0] = -0.75f;
+  params[1].value = {0.1f, 0.2f, 0.3f, 0.0f};
+  params[2].value[0] = 6.0f;
+  params[3].value = {1.5f, -0.5f, 0.0f, 0.0f};
+  const std::string text = param_declarations(params);
+  EXPECT_NE(text.find("uniform float a = -0.75;  // range(-1.0, 2.0)"), std::string::npos) << text;
+  const auto back = parse_scene_params(text);
+  ASSERT_EQ(back.size(), params.size()) << text;
+  for (size_t i = 0; i < back.size(); ++i) {
+    EXPECT_EQ(back[i].initial, params[i].value) << back[i].name;
+    EXPECT_EQ(back[i].lo, params[i].lo);
+    EXPECT_EQ(back[i].hi, params[i].hi);
+    EXPECT_EQ(back[i].color, params[i].color);
+  }
+}
+
+TEST(LivePresets, ScaleTheFilesQuality) {
+  Quality q;
+  q.max_steps = 200;
+  q.shadow_steps = 64;
+  q.hit_tolerance = 0.5f;
+  q.ao_taps = 5;
+  q.bounces = 3;
+  const Quality fast = apply_preset(q, QualityPreset::fast);
+  EXPECT_EQ(fast.max_steps, 100);
+  EXPECT_EQ(fast.shadow_steps, 32);
+  EXPECT_FLOAT_EQ(fast.hit_tolerance, 1.0f);
+  EXPECT_EQ(fast.ao_taps, 3);
+  EXPECT_EQ(fast.bounces, 1);
+  const Quality bal = apply_preset(q, QualityPreset::balanced);
+  EXPECT_EQ(bal.max_steps, 200);
+  EXPECT_FLOAT_EQ(bal.hit_tolerance, 0.5f);
+  const Quality ref = apply_preset(q, QualityPreset::reference);
+  EXPECT_EQ(ref.max_steps, 800);
+  EXPECT_EQ(ref.shadow_steps, 256);
+  EXPECT_FLOAT_EQ(ref.hit_tolerance, 0.125f);
+  EXPECT_EQ(ref.ao_taps, 10);
+  EXPECT_EQ(ref.bounces, 3);
+}
+
+TEST(LivePresets, StayInsideTheLoadersRanges) {
+  Quality q;
+  q.max_steps = 1;
+  q.ao_taps = 60;
+  q.shadow_steps = 9000;
+  EXPECT_EQ(apply_preset(q, QualityPreset::fast).max_steps, 1);
+  EXPECT_EQ(apply_preset(q, QualityPreset::reference).ao_taps, 64);
+  EXPECT_EQ(apply_preset(q, QualityPreset::reference).shadow_steps, 10000);
+}
+
+TEST(LiveFrameStats, MedianOverTheLastSecond) {
+  EXPECT_DOUBLE_EQ(median_of({}), 0.0);
+  EXPECT_DOUBLE_EQ(median_of({3, 1, 2}), 2.0);
+  EXPECT_DOUBLE_EQ(median_of({4, 1, 3, 2}), 2.5);
+  TimeSeries s(100);
+  s.add(0.0, 100.0);  // older than a second at t = 1.5
+  s.add(0.6, 100.0);
+  s.add(1.0, 10.0);
+  s.add(1.2, 12.0);
+  s.add(1.5, 11.0);
+  EXPECT_DOUBLE_EQ(s.median(1.5), 11.5);  // 100, 10, 12, 11 in (0.5, 1.5]
+  EXPECT_DOUBLE_EQ(s.median(1.5, 0.6), 11.0);
+}
+
+TEST(LiveFrameStats, KeepsOnlyTheCapacity) {
+  TimeSeries s(3);
+  for (int i = 0; i < 10; ++i) s.add(i, i);
+  EXPECT_EQ(s.values(), (std::vector<float>{7, 8, 9}));
+}
+
+// The legend shows what the post pass makes of the shader's ramp: with no
+// tone map, the stops' linear colours sRGB-encoded.
+TEST(LiveLegend, MatchesThePostPassOfTheRamp) {
+  const glm::vec3 red = heat_legend_color(255.0f, 1.0f, Tonemap::none);
+  EXPECT_NEAR(red.r, 1.0f, 1e-5f);
+  EXPECT_NEAR(red.g, 0.0f, 1e-5f);
+  const glm::vec3 green = heat_legend_color(15.0f, 1.0f, Tonemap::none);  // the middle stop (0, .85, .2)
+  EXPECT_NEAR(green.g, 1.055f * std::pow(0.85f, 1.0f / 2.4f) - 0.055f, 1e-4f);
+  EXPECT_NEAR(green.r, 0.0f, 1e-5f);
+  // ACES darkens the same stop; exposure brightens it.
+  EXPECT_LT(heat_legend_color(15.0f, 1.0f, Tonemap::aces).g, green.g);
+  EXPECT_GT(heat_legend_color(15.0f, 2.0f, Tonemap::aces).g, heat_legend_color(15.0f, 1.0f, Tonemap::aces).g);
+}
+
+}  // namespace
+}  // namespace ms::live
