@@ -118,6 +118,25 @@ TEST(Shadertoy, DefinesAreInjected) {
   EXPECT_FALSE(std::filesystem::exists(dir / "e.exr"));
 }
 
+TEST(Shadertoy, CanUseTheSdfLibrary) {
+  // primitives.glsl and operators.glsl need no scene uniforms, so a plain
+  // Shadertoy shader may include them from sdf_shaders/.
+  TempDir dir;
+  write_file(dir / "lib.glsl", R"(#include "primitives.glsl"
+#include "operators.glsl"
+void mainImage(out vec4 o, in vec2 f) {
+  vec3 p = vec3((2.0 * f - iResolution.xy) / iResolution.y, 0.0);
+  float d = opSmoothUnion(sdSphere(p - vec3(0.3, 0.0, 0.0), 0.4), sdBox(p + vec3(0.3, 0.0, 0.0), vec3(0.3)), 0.1);
+  o = vec4(d < 0.0 ? 1.0 : 0.0, saturate(d), 0.0, 1.0);
+}
+)");
+  RunResult r = run_marchstudio({"render", "lib.glsl", "-o", "l.exr", "--size", "32x16"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Image img = read_image(dir / "l.exr");
+  EXPECT_FLOAT_EQ(img.at(16, 8, 0), 1.0f) << "the centre lies inside the blend";
+  EXPECT_FLOAT_EQ(img.at(0, 0, 0), 0.0f) << "a corner lies outside";
+}
+
 TEST(Shadertoy, NotAShadertoyShaderIsRejected) {
   TempDir dir;
   write_file(dir / "x.glsl", "float f() { return 1.0; }\n");
