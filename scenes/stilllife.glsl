@@ -1,8 +1,7 @@
 // stilllife.glsl: a CSG / smooth-union still life on a checkered floor.
-// Every piece is exact or a 1-Lipschitz bound, so LIPSCHITZ stays 1.
+// Every piece is exact or a 1-Lipschitz bound, so LIPSCHITZ stays 1. The
+// floor is declared in stilllife.toml ([[planes]]) and intersected exactly.
 vec2 map(vec3 p) {
-  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);
-
   // Rounded box with a sphere carved out of its centre: holes on every face,
   // the cut surface in its own material.
   vec3 qb = p - vec3(-2.3, 0.75, 0.6);
@@ -23,8 +22,7 @@ vec2 map(vec3 p) {
   // A capsule lying on the floor in front.
   vec2 pill = vec2(sdCapsule(p, vec3(0.6, 0.3, -1.6), vec3(2.4, 0.3, -1.0), 0.3), MAT_PLASTIC);
 
-  vec2 d = opUnion(ground, carved);
-  d = opUnion(d, blob);
+  vec2 d = opUnion(carved, blob);
   d = opUnion(d, ring);
   return opUnion(d, pill);
 }

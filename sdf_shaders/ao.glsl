@@ -1,6 +1,7 @@
 // ao.glsl: ambient occlusion from the distance field alone (Quilez).
 #pragma once
 #include "aov.glsl"
+#include "bounds.glsl"
 
 // Occlusion factor in [0,1] (1 = open) at surface point p with unit normal n.
 // AO_TAPS samples at h_i = 0.01 + (AO_RADIUS - 0.01) * i/(AO_TAPS-1) along n:
@@ -15,7 +16,7 @@ float ambientOcclusion(vec3 p, vec3 n) {
   float s = 1.0;
   for (int i = 0; i < AO_TAPS; ++i) {
     float h = 0.01 + (float(AO_RADIUS) - 0.01) * float(i) / float(max(AO_TAPS - 1, 1));
-    occ += (h - map(p + h * n).x) * s;
+    occ += (h - sceneMap(p + h * n).x) * s;  // planes included
     s *= 0.95;
   }
   MS_COUNT_SDF(AO_TAPS);

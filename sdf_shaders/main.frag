@@ -60,86 +60,100 @@ float surfaceOffset(float fp) {
   return max(10.0 * float(HIT_EPSILON), (float(HIT_TOLERANCE) + 1.0) * fp);
 }
 
-// Radiance of one sample: rays through the scene, each hit adding its local
-// Blinn-Phong shading weighted by the throughput, each mirror bounce scaling
-// the throughput by Fresnel F (so local shading gets 1 - F). Hits fade into
-// the sky near MAX_DIST. Stops on a miss, once throughput < 1e-3, or after
-// MAX_BOUNCES (the last hit's mirror term then reflects the sky only).
+// One segment of a sample's path: trace `ray` and add what it finds to
+// `radiance`, weighted by `throughput`. A hit adds its local Blinn-Phong
+// shading; a mirror scales the throughput by Fresnel F (so local shading gets
+// 1 - F) and turns `ray` into the reflected ray. Hits fade into the sky near
+// MAX_DIST. Returns false when the path ends: on a miss, once throughput <
+// 1e-3, or at the last segment (whose mirror term then reflects the sky only).
+bool traceSegment(int seg, inout Ray ray, inout vec3 radiance, inout vec3 throughput, inout int primarySteps) {
+  TraceResult tr = trace(ray, 0.0);
+  if (seg == 0) primarySteps = tr.steps;
+#if MS_CAPTURE
+  if (seg == 0) {
+    msPrimary.hit = tr.hit;
+    msPrimary.capped = tr.capped;
+    msPrimary.depth = tr.hit ? tr.t : 0.0;
+    msPrimary.mat = tr.hit ? tr.mat : 0;
+  } else {
+    msPrimary.reflSteps += tr.steps;
+  }
+#endif
+  if (!tr.hit) {
+    radiance += throughput * skyColor(ray.d);
+    return false;
+  }
+  float fade = distanceFade(tr.t);
+  radiance += throughput * fade * skyColor(ray.d);
+  throughput *= 1.0 - fade;
+  if (fade > 0.999) return false;   // lost in the haze: skip the shading
+
+  float fp = rayFootprint(ray, tr.t);
+  vec3 p = ray.o + ray.d * tr.t;
+  // An analytic plane hit has its exact normal (and saves 4 map() calls).
+  vec3 n = tr.exact ? tr.n : calcNormal(p, normalEpsilon(p, fp), -ray.d);
+  // Snap onto the surface: converged hits stop up to a tolerance short of
+  // it, and AO and the checker want the surface itself.
+  p -= n * clamp(tr.d, 0.0, fp);
+  // Seen from behind only at silhouettes (tolerance hits): tilt the normal
+  // until it faces the viewer so lighting and reflection stay sane.
+  float nd = dot(n, ray.d);
+  if (nd > -1e-3) n = safeNormalize(n - ray.d * (nd + 1e-3), -ray.d);
+
+  vec3 dPdx = transferToSurface(ray.dOdx + tr.t * ray.dDdx, ray.d, n);
+  vec3 dPdy = transferToSurface(ray.dOdy + tr.t * ray.dDdy, ray.d, n);
+  Surface s = getSurface(tr.mat, p, n, dPdx, dPdy);
+  float offset = surfaceOffset(fp);
+  float ao = ambientOcclusion(p, n);
+  vec3 local = shadeBlinnPhong(s, p, n, -ray.d, ao, offset);
+#if MS_CAPTURE
+  if (seg == 0) {  // the primary hit's shading cast the sample's first shadow rays
+    msPrimary.n = n;
+    msPrimary.ao = ao;
+    msPrimary.shadow = msShadowCount > 0 ? msShadowSum / float(msShadowCount) : 1.0;
+  }
+#endif
+
+#if MS_SEGMENTS > 1
+  float F = s.f0 > 0.0 ? fresnelSchlick(s.f0, dot(n, -ray.d)) : 0.0;
+  if (seg == MS_SEGMENTS - 1) {
+    // No bounce left: the sky stands in for what the mirror would show, so
+    // a truncated path does not turn grey or black (e.g. at silhouettes).
+    radiance += throughput * mix(local, skyColor(reflect(ray.d, n)), F);
+    return false;
+  }
+  radiance += throughput * (1.0 - F) * local;
+  throughput *= F;
+  if (maxComp(throughput) < 1e-3) return false;
+  // Reflect the ray and its differentials (flat-mirror transfer, Igehy;
+  // surface curvature ignored).
+  ray.o = p + n * offset;
+  ray.d = reflect(ray.d, n);
+  ray.dOdx = dPdx;
+  ray.dOdy = dPdy;
+  ray.dDdx = reflect(ray.dDdx, n);
+  ray.dDdy = reflect(ray.dDdy, n);
+  return true;
+#else
+  radiance += throughput * local;
+  return false;
+#endif
+}
+
+// Radiance of one sample: the primary ray, then one segment per mirror
+// bounce. With nothing to reflect (MS_SEGMENTS 1, e.g. a specialized scene
+// without mirrors) there is no loop at all.
 vec3 renderSample(vec2 pix, out int primarySteps) {
   Ray ray = cameraRay(pix);
   vec3 radiance = vec3(0.0);
   vec3 throughput = vec3(1.0);
   primarySteps = 0;
-  for (int seg = 0; seg < MS_SEGMENTS; ++seg) {
-    TraceResult tr = trace(ray, 0.0);
-    if (seg == 0) primarySteps = tr.steps;
-#if MS_CAPTURE
-    if (seg == 0) {
-      msPrimary.hit = tr.hit;
-      msPrimary.capped = tr.capped;
-      msPrimary.depth = tr.hit ? tr.t : 0.0;
-      msPrimary.mat = tr.hit ? tr.mat : 0;
-    } else {
-      msPrimary.reflSteps += tr.steps;
-    }
-#endif
-    if (!tr.hit) {
-      radiance += throughput * skyColor(ray.d);
-      break;
-    }
-    float fade = distanceFade(tr.t);
-    radiance += throughput * fade * skyColor(ray.d);
-    throughput *= 1.0 - fade;
-    if (fade > 0.999) break;   // lost in the haze: skip the shading
-
-    float fp = rayFootprint(ray, tr.t);
-    vec3 p = ray.o + ray.d * tr.t;
-    vec3 n = calcNormal(p, normalEpsilon(p, fp), -ray.d);
-    // Snap onto the surface: converged hits stop up to a tolerance short of
-    // it, and AO and the checker want the surface itself.
-    p -= n * clamp(tr.d, 0.0, fp);
-    // Seen from behind only at silhouettes (tolerance hits): tilt the normal
-    // until it faces the viewer so lighting and reflection stay sane.
-    float nd = dot(n, ray.d);
-    if (nd > -1e-3) n = safeNormalize(n - ray.d * (nd + 1e-3), -ray.d);
-
-    vec3 dPdx = transferToSurface(ray.dOdx + tr.t * ray.dDdx, ray.d, n);
-    vec3 dPdy = transferToSurface(ray.dOdy + tr.t * ray.dDdy, ray.d, n);
-    Surface s = getSurface(tr.mat, p, n, dPdx, dPdy);
-    float offset = surfaceOffset(fp);
-    float ao = ambientOcclusion(p, n);
-    vec3 local = shadeBlinnPhong(s, p, n, -ray.d, ao, offset);
-#if MS_CAPTURE
-    if (seg == 0) {  // the primary hit's shading cast the sample's first shadow rays
-      msPrimary.n = n;
-      msPrimary.ao = ao;
-      msPrimary.shadow = msShadowCount > 0 ? msShadowSum / float(msShadowCount) : 1.0;
-    }
-#endif
-
 #if MS_SEGMENTS > 1
-    float F = s.f0 > 0.0 ? fresnelSchlick(s.f0, dot(n, -ray.d)) : 0.0;
-    if (seg == MS_SEGMENTS - 1) {
-      // No bounce left: the sky stands in for what the mirror would show, so
-      // a truncated path does not turn grey or black (e.g. at silhouettes).
-      radiance += throughput * mix(local, skyColor(reflect(ray.d, n)), F);
-      break;
-    }
-    radiance += throughput * (1.0 - F) * local;
-    throughput *= F;
-    if (maxComp(throughput) < 1e-3) break;
-    // Reflect the ray and its differentials (flat-mirror transfer, Igehy;
-    // surface curvature ignored).
-    ray.o = p + n * offset;
-    ray.d = reflect(ray.d, n);
-    ray.dOdx = dPdx;
-    ray.dOdy = dPdy;
-    ray.dDdx = reflect(ray.dDdx, n);
-    ray.dDdy = reflect(ray.dDdy, n);
+  for (int seg = 0; seg < MS_SEGMENTS; ++seg)
+    if (!traceSegment(seg, ray, radiance, throughput, primarySteps)) break;
 #else
-    radiance += throughput * local;
+  traceSegment(0, ray, radiance, throughput, primarySteps);
 #endif
-  }
   return radiance;
 }
 

@@ -17,6 +17,20 @@
 #error "marchstudio: ENABLE_REFLECTIONS and ENABLE_CHECKER_FILTER must be defined by the host"
 #endif
 
+// ---- specialization (docs/specialization.md): absent means the generic shader ----
+#ifndef SPECIALIZED
+#define SPECIALIZED 0           // 1: the host derived the defines below from the scene's features
+#endif
+#ifndef LIGHT_UNIFORMS
+#define LIGHT_UNIFORMS 1        // 0: the host folded the lights into constant tables
+#endif
+#ifndef MATERIAL_UNIFORMS
+#define MATERIAL_UNIFORMS 1     // 0: the host generated sceneMaterial() with constants
+#endif
+#ifndef SKY_UNIFORMS
+#define SKY_UNIFORMS 1          // 0: uSkyHorizon, uSkyZenith, uAmbient are host constants
+#endif
+
 // ---- uniforms (exactly as in notes/glsl_contract.md) ----
 uniform vec2  uResolution;   // full image size in pixels
 uniform vec2  uJitter;       // sub-pixel sample position in [0,1)^2
@@ -26,9 +40,11 @@ uniform vec3  uCamPos;
 uniform vec3  uCamTarget;
 uniform vec3  uCamUp;
 uniform float uFovY;         // vertical field of view, radians
+#if SKY_UNIFORMS               // otherwise the host folded them into constants of these names
 uniform vec3  uSkyHorizon;
 uniform vec3  uSkyZenith;
 uniform vec3  uAmbient;      // ambient light intensity Ia
+#endif
 
 struct Light {
   vec4  pos;    // w = 1: point light at xyz;  w = 0: directional, xyz = unit direction the light TRAVELS
@@ -36,7 +52,7 @@ struct Light {
   float size;   // point: radius (world units); directional: angular RADIUS in radians
   vec3  atten;  // point: 1/(atten.x + atten.y*d + atten.z*d*d); ignored for directional
 };
-#if NUM_LIGHTS > 0
+#if NUM_LIGHTS > 0 && LIGHT_UNIFORMS
 uniform Light uLights[NUM_LIGHTS];
 #endif
 
@@ -50,7 +66,9 @@ struct Material {
   float patternScale;   // checker cell size (world units)
   vec3  patternVelocity;// checker offset per second
 };
+#if MATERIAL_UNIFORMS
 uniform Material uMaterials[NUM_MATERIALS];
+#endif
 
 layout(location = 0) out vec4 outColor;   // linear HDR radiance of this sample; alpha = 1
 

@@ -12,8 +12,10 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev
+  glslang-tools                     # glslangValidator: shader tests and docs/specialization.md (skipped without)
   xvfb xauth                        # viewer tests get a real X window
   slurm-wlm munge                   # tests/slurm: a real job array on a localhost cluster
+  clang-14 libclang-rt-14-dev       # tests/fuzz: libFuzzer targets (CMakePresets.json "fuzz")
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq

@@ -29,7 +29,8 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
   j["scene"] = {{"file", subject.scene_file}, {"name", subject.scene_name}};
   j["settings"] = {{"width", s.width},   {"height", s.height}, {"spp", s.spp},
                    {"frames", s.frames}, {"warmup", s.warmup}, {"time", s.time},
-                   {"disable", subject.disable}, {"shader_cache", s.shader_cache}};
+                   {"disable", subject.disable}, {"shader_cache", s.shader_cache},
+                   {"specialize", subject.specialize}};
   j["machine"] = {{"backend", r.backend},
                   {"gl_renderer", r.gl_renderer},
                   {"gl_vendor", r.gl_vendor},
@@ -54,9 +55,9 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
 std::string bench_table(const BenchSubject& subject, const BenchSettings& s, const BenchResult& r) {
   std::string out;
   char buf[256];
-  std::snprintf(buf, sizeof buf, "scene     %s (%s)\nsettings  %dx%d, spp %d, %d frames after %d warm-up\n",
+  std::snprintf(buf, sizeof buf, "scene     %s (%s)\nsettings  %dx%d, spp %d, %d frames after %d warm-up, %s shader\n",
                 subject.scene_name.c_str(), subject.scene_file.c_str(), s.width, s.height, s.spp, s.frames,
-                s.warmup);
+                s.warmup, subject.specialize.c_str());
   out += buf;
   std::snprintf(buf, sizeof buf, "machine   %s, %s, GL %s\n", r.backend.c_str(), r.gl_renderer.c_str(),
                 r.gl_version.c_str());

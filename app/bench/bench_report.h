@@ -15,6 +15,7 @@ struct BenchSubject {
   std::string scene_file;            // as given on the command line
   std::string scene_name;
   std::vector<std::string> disable;  // effects switched off
+  std::string specialize = "folded"; // the scene shader: "folded" (specialized) or "generic" (--no-specialize)
 };
 
 // The JSON document, pretty-printed, ending in a newline.

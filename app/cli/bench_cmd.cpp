@@ -11,6 +11,7 @@
 #include "cli/input.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
+#include "scene/quality.h"
 #include "render/aov.h"
 #include "scene/animation.h"
 #include "shader/assemble.h"
@@ -30,9 +31,17 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
   cmd->add_option("--backend", a.backend, "GL context: auto, egl or osmesa")
       ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
+  cmd->add_option("--preset", a.preset,
+                  "Quality preset: fast, balanced, reference or textbook (default: the scene's; its explicit "
+                  "[quality] keys still apply)")
+      ->check(CLI::IsMember(quality_preset_names()));
   cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter")
       ->delimiter(',')
       ->check(CLI::IsMember({"shadows", "reflections", "ao", "checker-filter"}));
+  cmd->add_option("--allow-include", a.allow_include,
+                  "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
+  cmd->add_flag("--no-specialize", a.no_specialize,
+                "Time the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   return cmd;
 }
 
@@ -50,8 +59,9 @@ void set_shader_cache(bool allowed) {
 
 int run_bench_command(const BenchArgs& a) {
   const Backend backend = parse_backend(a.backend);
-  AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}};
-  const LoadedInput in = load_input(a.input, a.disable, opts);
+  AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}, parse_allow_include(a.allow_include)};
+  opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
+  const LoadedInput in = load_input(a.input, a.disable, opts, a.preset);
   if (in.shadertoy)
     fail_input("bench needs an SDF scene: a Shadertoy shader has no step counters", a.input, 0, {},
                "wrap the map in a scene .toml");
@@ -81,7 +91,7 @@ int run_bench_command(const BenchArgs& a) {
   // Keyframed values at the benchmarked time, as render poses them.
   const Scene posed = animated(in.scene, s.time);
   const BenchResult r = run_bench(*ctx, posed, in.main, counting, post, s);
-  const BenchSubject subject{a.input, in.scene.name, a.disable};
+  const BenchSubject subject{a.input, in.scene.name, a.disable, specialization_name(opts.specialize)};
   const std::string text = a.json ? bench_json(subject, s, r) : bench_table(subject, s, r);
   std::fputs(text.c_str(), stdout);
   return 0;

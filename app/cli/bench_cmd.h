@@ -21,6 +21,9 @@ struct BenchArgs {
   std::string backend = "auto";
   std::string shader_dir;  // empty: MARCH_SHADER_DIR or the built-in location
   std::vector<std::string> disable;
+  std::string preset;      // empty: the scene's [quality] preset
+  bool no_specialize = false;  // time the generic shader (docs/specialization.md)
+  std::vector<std::string> allow_include;  // more directories #include may read
 };
 
 CLI::App* add_bench_command(CLI::App& app, BenchArgs& args);

@@ -9,6 +9,7 @@
 #include "cli/view_cmd.h"
 #include "cli/bench_cmd.h"
 #include "cli/compare_cmd.h"
+#include "cli/sweep_cmd.h"
 #include "core/error.h"
 
 namespace ms {
@@ -25,6 +26,8 @@ int run_cli(int argc, char** argv) {
   CLI::App* bench = add_bench_command(app, bench_args);
   CompareArgs compare_args;
   CLI::App* compare = add_compare_command(app, compare_args);
+  SweepArgs sweep_args;
+  CLI::App* sweep = add_sweep_command(app, sweep_args);
 
   try {
     app.parse(argc, argv);
@@ -44,6 +47,7 @@ int run_cli(int argc, char** argv) {
     if (view->parsed()) return run_view(view_args);
     if (bench->parsed()) return run_bench_command(bench_args);
     if (compare->parsed()) return run_compare(compare_args);
+    if (sweep->parsed()) return run_sweep_command(sweep_args);
   } catch (const Error& e) {
     std::fprintf(stderr, "marchstudio: %s\n", e.what());
     return static_cast<int>(e.code());

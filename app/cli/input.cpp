@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "scene/load.h"
+#include "scene/quality.h"
 #include "shader/shadertoy.h"
 
 namespace ms {
@@ -47,7 +48,20 @@ std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector
   return out;
 }
 
-LoadedInput load_input(const fs::path& input, const std::vector<std::string>& disable, const AssembleOptions& opts) {
+std::vector<fs::path> parse_allow_include(const std::vector<std::string>& flags) {
+  std::vector<fs::path> dirs;
+  for (const std::string& f : flags) {
+    std::error_code ec;
+    if (f.empty() || !fs::is_directory(f, ec))
+      fail_input("'" + f + "' is not a directory", {}, 0, "--allow-include",
+                 "--allow-include DIR lets #include read files under DIR");
+    dirs.push_back(fs::canonical(f, ec));
+  }
+  return dirs;
+}
+
+LoadedInput load_input(const fs::path& input, const std::vector<std::string>& disable, const AssembleOptions& opts,
+                       const std::string& preset) {
   std::error_code ec;
   if (!fs::is_regular_file(input, ec)) fail_input("input file not found", input.string());
   LoadedInput in;
@@ -62,9 +76,17 @@ LoadedInput load_input(const fs::path& input, const std::vector<std::string>& di
     in.scene.render.height = 360;
     in.scene.render.tonemap = Tonemap::none;
   }
-  apply_disable(in.scene.quality, disable);
   in.shadertoy = !in.scene.shadertoy_file.empty();
-  in.main = in.shadertoy ? assemble_shadertoy(in.scene.shadertoy_file, opts) : assemble_scene(in.scene, opts);
+  if (!preset.empty()) {
+    if (in.shadertoy)
+      fail_input("--preset needs an SDF scene: a Shadertoy shader has no quality settings", input.string(), 0,
+                 "--preset");
+    in.scene.quality = with_preset(in.scene.quality, preset);  // the file's explicit keys still win
+  }
+  apply_disable(in.scene.quality, disable);
+  const bool wrapped = input.extension() == ".toml";  // includes confined to the .toml's directory
+  in.main = in.shadertoy ? assemble_shadertoy(in.scene.shadertoy_file, opts, wrapped ? input : fs::path{})
+                         : assemble_scene(in.scene, opts);
   return in;
 }
 

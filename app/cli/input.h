@@ -31,8 +31,14 @@ ImageSize parse_size_flag(const std::string& text, const std::string& flag = "--
 // GLSL identifier, VALUE one line. Throws bad_input naming -D.
 std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector<std::string>& flags);
 
+// --allow-include DIR flags: each an existing directory, made canonical
+// (AssembleOptions::allow_include). Throws bad_input naming the flag.
+std::vector<std::filesystem::path> parse_allow_include(const std::vector<std::string>& flags);
+
 // `disable`: effects switched off (shadows, reflections, ao, checker-filter).
+// `preset`: a quality preset replacing the scene file's (scene/quality.h);
+// empty keeps the file's. The file's explicit [quality] keys still apply.
 LoadedInput load_input(const std::filesystem::path& input, const std::vector<std::string>& disable,
-                       const AssembleOptions& opts);
+                       const AssembleOptions& opts, const std::string& preset = {});
 
 }  // namespace ms

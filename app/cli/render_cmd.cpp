@@ -7,15 +7,19 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <regex>
 
 #include "cli/sequence_cmd.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
+#include "scene/quality.h"
 #include "gl/context.h"
 #include "io/image_io.h"
 #include "render/aov.h"
+#include "core/deadline.h"
 #include "render/frame.h"
+#include "render/tiles.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
 #include "cli/input.h"
@@ -37,6 +41,10 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   cmd->add_option("--backend", a.backend, "GL context: auto, egl or osmesa")
       ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
+  cmd->add_option("--preset", a.preset,
+                  "Quality preset: fast, balanced, reference or textbook (default: the scene's; its explicit "
+                  "[quality] keys still apply)")
+      ->check(CLI::IsMember(quality_preset_names()));
   cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter")
       ->delimiter(',')
       ->check(CLI::IsMember({"shadows", "reflections", "ao", "checker-filter"}));
@@ -54,7 +62,18 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                   "(see docs/usage.md)")
       ->delimiter(',');
   cmd->add_flag("-v,--verbose", a.verbose, "Print the backend, GL renderer and timings");
+  cmd->add_flag("--no-specialize", a.no_specialize,
+                "Build the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
+  cmd->add_flag("--print-shader", a.print_shader,
+                "Print the assembled main-pass shader to stdout and exit; nothing is rendered");
   cmd->add_flag("--watch", a.watch, "Render again on every save of the scene or a file it includes, until Ctrl+C");
+  cmd->add_option("--allow-include", a.allow_include,
+                  "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
+  cmd->add_option("--timeout", a.timeout,
+                  "Give up after SECONDS per image (each frame of --frames): exit 3, no file written");
+  cmd->add_option("--tile-size", a.tile_size, "Largest square one draw covers, pixels (0: the whole frame)")
+      ->check(CLI::NonNegativeNumber)
+      ->group("");  // tests and experiments: the image is the same for any value
   return cmd;
 }
 
@@ -82,17 +101,25 @@ static int run_render_watch(const RenderArgs& a) {
   live::WatchRenderOptions w;
   w.render = [once] { run_render(once); };
   w.files = [&a] {
-    const AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines)};
+    const AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
+                               parse_allow_include(a.allow_include)};
     std::vector<fs::path> files = {a.input};
-    for (const fs::path& p : load_input(a.input, a.disable, opts).main.dependencies) files.push_back(p);
+    for (const fs::path& p : load_input(a.input, a.disable, opts, a.preset).main.dependencies) files.push_back(p);
     return files;
   };
   return live::watch_and_render(w);
 }
 
 int run_render(const RenderArgs& a) {
+  if (!std::isfinite(a.timeout) || a.timeout < 0)
+    fail_input("--timeout must be a number of seconds >= 0 (0: no limit)", {}, 0, "--timeout");
   if (a.watch) return run_render_watch(a);
   if (wants_sequence(a)) return run_sequence(a);
+  // From here on the image has a.timeout seconds; the watchdog ends the
+  // process if a draw (or the driver's compile) never returns.
+  const Deadline deadline = Deadline::after(a.timeout);
+  std::optional<Watchdog> watchdog;
+  if (deadline.limited()) watchdog.emplace().arm(deadline, "the render");
   if (!std::isfinite(a.time)) fail_input("--time must be a finite number", {}, 0, "--time");
   if (a.spp < 0 || a.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
   if (a.frame < 0) fail_input("--frame must be >= 0", {}, 0, "--frame");
@@ -107,9 +134,15 @@ int run_render(const RenderArgs& a) {
     fail_input("--aov needs an .exr output, not '" + output.filename().string() + "'", {}, 0, "--aov",
                "AOVs are extra float channels, which only OpenEXR holds");
 
-  AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines)};
+  AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
+                       parse_allow_include(a.allow_include)};
   if (aovs) for (const auto& d : aov_defines()) opts.defines.push_back(d);
-  const LoadedInput in = load_input(input, a.disable, opts);
+  opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
+  const LoadedInput in = load_input(input, a.disable, opts, a.preset);
+  if (a.print_shader) {
+    std::fputs(in.main.text.c_str(), stdout);
+    return 0;
+  }
   if (aovs && in.shadertoy)
     fail_input("--aov needs a scene: a Shadertoy shader has no AOV outputs", input.string(), 0, "--aov");
   const Scene& scene = in.scene;
@@ -124,6 +157,10 @@ int run_render(const RenderArgs& a) {
   fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
   fp.exposure = scene.render.exposure;
   fp.aovs = aovs;
+  fp.deadline = deadline.limited() ? &deadline : nullptr;
+  fp.tile_size = a.tile_size;
+  // Before the (slow) context: a frame over the memory budget is refused.
+  check_frame_memory(frame_memory(fp.width, fp.height, aovs ? 6 : 2, aovs), fp.width, fp.height);
   const float time = a.time_set ? static_cast<float>(a.time) : scene.render.time;
   const Scene posed = animated(scene, time);  // [[animation]] keyframes at this time
   fp.exposure = posed.render.exposure;
@@ -133,9 +170,13 @@ int run_render(const RenderArgs& a) {
   Stopwatch clock;
   std::unique_ptr<Context> ctx = create_headless_context(backend);
   const double t_context = clock.lap();
-  if (a.verbose)
+  if (a.verbose) {
     std::fprintf(stderr, "marchstudio: backend %s, GL_RENDERER %s, GL_VERSION %s\n", ctx->backend().c_str(),
                  ctx->info().renderer.c_str(), ctx->info().version.c_str());
+    if (!in.shadertoy)
+      std::fprintf(stderr, "marchstudio: shader %s (%s)\n", specialization_name(opts.specialize),
+                   describe(scene_features(scene, opts)).c_str());
+  }
   check_frame_size(ctx->info(), fp.width, fp.height, aovs ? 6 : 2);
 
   const Program main_prog(fullscreen_vertex_source(), in.main);
@@ -162,6 +203,8 @@ int run_render(const RenderArgs& a) {
                      {"ImageDescription", input.filename().string() + " t=" + std::to_string(time) +
                                               " spp=" + std::to_string(fp.spp)}};
   const double t_render = clock.lap();
+  deadline.check("the render");
+  if (watchdog) watchdog->disarm();  // the write is atomic and must not be cut short
   write_image(img, output, meta);
   if (a.verbose)
     std::fprintf(stderr, "marchstudio: context %.1f ms, compile %.1f ms, render %.1f ms, write %.1f ms\n",

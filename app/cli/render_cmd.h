@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "render/tiles.h"
+
 namespace CLI {
 class App;
 }
@@ -21,6 +23,7 @@ struct RenderArgs {
   std::string backend = "auto";
   std::string shader_dir; // empty: MARCH_SHADER_DIR or the built-in location
   std::vector<std::string> disable;  // effects switched off: shadows, reflections, ao, checker-filter
+  std::string preset;                // quality preset replacing the scene's; empty: the scene's
   std::vector<std::string> defines;  // -D NAME[=VALUE], injected into the scene shader
   // Sequences (cli/sequence_cmd.h): --frames turns `render` into one.
   std::string frames;      // "A..B", both included
@@ -33,6 +36,11 @@ struct RenderArgs {
   bool verbose = false;
   bool watch = false;       // re-render on every save of the scene or its includes (live/render_watch.h)
   std::vector<std::string> aov;      // AOVs to add to an .exr: depth, normal, steps, material, shadow, ao, cost, hit
+  bool no_specialize = false;  // build the generic shader (docs/specialization.md)
+  bool print_shader = false;   // print the assembled scene shader and exit
+  std::vector<std::string> allow_include;  // more directories #include may read (shader/preprocess.h)
+  double timeout = 0.0;      // seconds per image (each frame of --frames); 0: none (core/deadline.h)
+  int tile_size = kTileSize; // hidden --tile-size: largest square per draw (render/tiles.h); 0: whole frame
 };
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args);

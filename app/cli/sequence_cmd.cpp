@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <regex>
 #include <thread>
 
@@ -21,7 +22,9 @@
 #include "io/sequence.h"
 #include "io/video.h"
 #include "render/aov.h"
+#include "core/deadline.h"
 #include "render/frame.h"
+#include "render/tiles.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
 
@@ -171,10 +174,17 @@ int run_sequence(const RenderArgs& a) {
                             "install it (Debian: apt-get install ffmpeg), or drop --video and encode the frames later"});
   }
 
-  AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines)};
+  // --timeout: loading and compiling get one budget, then each frame its own.
+  Deadline deadline = Deadline::after(a.timeout);
+  std::optional<Watchdog> watchdog;
+  if (deadline.limited()) watchdog.emplace().arm(deadline, "loading and compiling");
+  AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
+                       parse_allow_include(a.allow_include)};
   if (aovs)
     for (const auto& d : aov_defines()) opts.defines.push_back(d);
-  const LoadedInput in = load_input(a.input, a.disable, opts);
+  // Animated values stay uniforms in a folded shader: one program serves every frame.
+  opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
+  const LoadedInput in = load_input(a.input, a.disable, opts, a.preset);
   if (aovs && in.shadertoy) fail_input("--aov needs a scene, not a Shadertoy shader", a.input, 0, "--aov");
   const Scene& scene = in.scene;
   FrameParams fp;
@@ -187,6 +197,11 @@ int run_sequence(const RenderArgs& a) {
   }
   fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
   fp.aovs = aovs;
+  fp.tile_size = a.tile_size;
+  // The frame in flight and those waiting for the writers are alive at once.
+  check_frame_memory(frame_memory(fp.width, fp.height, aovs ? 6 : 2, aovs,
+                                  1 + static_cast<int>(kQueuedFrames) + writer_threads()),
+                     fp.width, fp.height);
   const ShaderSource post_src = assemble_post(scene.render.tonemap, display && !in.shadertoy, opts);
   // The frame's time exactly as the shader gets it (a float); the pose uses
   // the same value, so a sequence frame equals `render --time` of it.
@@ -228,28 +243,45 @@ int run_sequence(const RenderArgs& a) {
     StopSignals signals;
     progress.start();
     const auto loop_start = std::chrono::steady_clock::now();
+    deadline.check("loading and compiling");
     for (int f : todo) {
       if ((stop_signal = signals.signal()) != 0) break;
       const auto t0 = std::chrono::steady_clock::now();
+      // A frame that never finishes ends the run, but the frames already
+      // handed to the writers are written first (also by the watchdog).
+      deadline = Deadline::after(a.timeout);
+      if (watchdog) watchdog->arm(deadline, "frame " + std::to_string(f), [&writer] { writer.finish(); });
+      fp.deadline = deadline.limited() ? &deadline : nullptr;
       const float time = frame_time(f);
       const Scene posed = animated(scene, time);
       fp.exposure = posed.render.exposure;
       Image img;
-      if (!in.shadertoy) {
-        img = renderer.render(main_prog, [&](const Program& p) {
-          set_scene_uniforms(p, posed, fp.width, fp.height, time, f);
-        }, post_prog, fp);
-        if (aovs) img = append_channels(img, select_channels(renderer.read_aovs(), aov_names));
-      } else {
-        ShadertoyInputs st;
-        st.time = time;
-        st.frame = f;
-        st.time_delta = static_cast<float>(1.0 / plan.fps);
-        img = renderer.render(main_prog, [&](const Program& p) {
-          channels.bind();
-          set_shadertoy_uniforms(p, fp.width, fp.height, st);
-        }, post_prog, fp);
+      try {
+        if (!in.shadertoy) {
+          img = renderer.render(main_prog, [&](const Program& p) {
+            set_scene_uniforms(p, posed, fp.width, fp.height, time, f);
+          }, post_prog, fp);
+          if (aovs) img = append_channels(img, select_channels(renderer.read_aovs(), aov_names));
+        } else {
+          ShadertoyInputs st;
+          st.time = time;
+          st.frame = f;
+          st.time_delta = static_cast<float>(1.0 / plan.fps);
+          img = renderer.render(main_prog, [&](const Program& p) {
+            channels.bind();
+            set_shadertoy_uniforms(p, fp.width, fp.height, st);
+          }, post_prog, fp);
+        }
+      } catch (const Error& e) {
+        if (watchdog) watchdog->disarm();  // its hook names `writer`, which unwinding destroys
+        if (e.info().key == "--timeout") fail_timeout("frame " + std::to_string(f), a.timeout);
+        throw;
+      } catch (...) {
+        if (watchdog) watchdog->disarm();
+        throw;
       }
+      if (watchdog) watchdog->disarm();
+      if (deadline.expired()) fail_timeout("frame " + std::to_string(f), a.timeout);
       const double took = since(t0);
       render_s += took;
       progress.rendered(f, took);
@@ -259,10 +291,12 @@ int run_sequence(const RenderArgs& a) {
                                                   " spp=" + std::to_string(fp.spp) + " frame=" + std::to_string(f)}};
       wait_s += writer.push(WriteJob{f, std::move(img), pattern.path(f), std::move(meta)});
     }
+    if (watchdog) watchdog->disarm();
     writer.finish();
     loop_s = since(loop_start);
     writer_busy_s = writer.busy_seconds();
   }
+  if (watchdog) watchdog->disarm();
   progress.finish();
   const int done = progress.done();
   char summary[256];

@@ -38,13 +38,20 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_option("--debounce-ms", a.debounce_ms, "Quiet time that ends a save, ms (default 10)")
       ->check(CLI::Range(0, 1000));
   cmd->add_flag("--no-panel", a.no_panel, "Start with the panel hidden (Tab shows it)");
+  cmd->add_flag("--no-specialize", a.no_specialize,
+                "Build the generic shader: every feature compiled (docs/specialization.md)");
+  cmd->add_option("--allow-include", a.allow_include,
+                  "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
   return cmd;
 }
 
 int run_view(const ViewArgs& a) {
   live::ViewerOptions o;
   o.input = a.input;
-  o.assemble = AssembleOptions{resolve_shader_dir(a.shader_dir), parse_defines(a.defines)};
+  o.assemble = AssembleOptions{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
+                               parse_allow_include(a.allow_include)};
+  // Specialized, but every value the panel can drag stays a uniform.
+  o.assemble.specialize = a.no_specialize ? Specialization::generic : Specialization::uniforms;
   const fs::path input = a.input;
   const AssembleOptions opts = o.assemble;
   // A .toml is only parsed here (the viewer assembles itself, and shows an

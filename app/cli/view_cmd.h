@@ -27,6 +27,8 @@ struct ViewArgs {
   long max_frames = 0;
   int debounce_ms = 10;
   bool no_panel = false;
+  bool no_specialize = false;  // the generic shader, not one specialized to the scene
+  std::vector<std::string> allow_include;  // more directories #include may read
 };
 
 CLI::App* add_view_command(CLI::App& app, ViewArgs& args);

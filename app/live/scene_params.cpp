@@ -39,8 +39,11 @@ std::vector<SceneParam> parse_scene_params(std::string_view glsl) {
     if (end == std::string_view::npos) end = glsl.size();
     const std::string line(glsl.substr(start, end - start));
     start = end + 1;
+    // libstdc++'s regex recurses per character and overflows the stack on
+    // lines of tens of KB (minified shaders); no annotated uniform is that long.
+    constexpr size_t kMaxLine = 2000;
     std::smatch m;
-    if (!std::regex_match(line, m, decl)) continue;
+    if (line.size() > kMaxLine || !std::regex_match(line, m, decl)) continue;
     const std::string comment = m[4];
     SceneParam p;
     p.type = m[1];

@@ -45,14 +45,23 @@ ReloadResult Session::reload(bool from_disk) {
       scene_.quality = apply_preset(fresh.quality, preset_);
     }
     AssembleOptions opts = opts_.assemble;
+    const bool specialized = !shadertoy() && opts.specialize != Specialization::generic;
+    // Remembered before anything can fail: a failed build must not make
+    // every frame retry the same features (features_changed()).
+    specialized_ = specialized;
+    if (specialized) {
+      features_ = derive_features(scene_, features_.library);
+      features_ = scene_features(scene_, opts);
+    }
     const int view = shadertoy() ? 0 : debug_view;
     if (view > 0) opts.defines.emplace_back("DEBUG_VIEW", std::to_string(view));
     const ShaderSource main_src =
-        shadertoy() ? assemble_shadertoy(scene_.shadertoy_file, opts) : assemble_scene(scene_, opts);
+        shadertoy() ? assemble_shadertoy(scene_.shadertoy_file, opts, has_toml() ? scene_.file : fs::path{})
+                    : assemble_scene(scene_, opts);
     deps_ = main_src.dependencies;  // preprocessing worked: these are the files now
     const ShaderSource post_src = assemble_post(scene_.render.tonemap, !shadertoy(), opts_.assemble);
-    auto main = std::make_unique<Program>(fullscreen_vertex_source(), main_src);
-    auto post = std::make_unique<Program>(fullscreen_vertex_source(), post_src);
+    auto main = cache_.get(fullscreen_vertex_source(), main_src, &r.cached);
+    auto post = cache_.get(fullscreen_vertex_source(), post_src);
     main_ = std::move(main);
     post_ = std::move(post);
     std::vector<SceneParam> params = parse_scene_params(main_src.text);
@@ -70,6 +79,12 @@ ReloadResult Session::reload(bool from_disk) {
   }
   r.compile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return r;
+}
+
+bool Session::features_changed() const {
+  // Lights and patterns cannot change in the panel, and a GLSL edit reloads
+  // anyway: the library names of the current program still hold.
+  return specialized_ && main_ && derive_features(scene_, features_.library) != features_;
 }
 
 std::vector<fs::path> Session::watched_files() const {

@@ -14,6 +14,8 @@
 #include "live/presets.h"
 #include "live/scene_params.h"
 #include "render/program.h"
+#include "render/program_cache.h"
+#include "scene/features.h"
 #include "scene/scene.h"
 #include "shader/assemble.h"
 
@@ -30,6 +32,7 @@ struct ReloadResult {
   std::string error;           // "file:line: message (hint)" when !ok
   bool camera_changed = false; // the file's [camera] differs from the previous read
   double compile_ms = 0.0;     // load + assemble + compile + link
+  bool cached = false;         // the main program came from the cache: nothing compiled
 };
 
 class Session {
@@ -49,6 +52,11 @@ class Session {
   bool shadertoy() const { return !scene_.shadertoy_file.empty(); }
   bool has_toml() const { return scene_.file.extension() == ".toml"; }
 
+  // True when the scene as edited in the panel needs other shader code than
+  // the current program has (a reflectivity dragged from or to 0 adds or
+  // drops the reflection loop of a specialized shader): reload(false) then.
+  bool features_changed() const;
+
   const Program* main_program() const { return main_.get(); }
   const Program* post_program() const { return post_.get(); }
   int generation() const { return generation_; }  // +1 per successful reload
@@ -66,6 +74,7 @@ class Session {
   void release_gl() {
     main_.reset();
     post_.reset();
+    cache_.clear();
   }
 
   std::vector<SceneParam>& params() { return params_; }
@@ -78,7 +87,10 @@ class Session {
   Scene scene_, file_scene_;
   bool disk_ok_ = false;
   QualityPreset preset_ = QualityPreset::balanced;
-  std::unique_ptr<Program> main_, post_;
+  std::shared_ptr<const Program> main_, post_;
+  ProgramCache cache_;     // every program built, by source hash: a toggle seen before is not recompiled
+  bool specialized_ = false;
+  FeatureSet features_;    // of the last program built or tried, when specialized
   int generation_ = 0;
   int compiled_debug_view_ = 0;
   std::string error_, error_file_;

@@ -118,13 +118,15 @@ void Viewer::poll_files() {
   } else if (s_.want_disk_reload) {
     s_.want_disk_reload = false;
     reload(true, seconds_now(), frames_, iterations_);
-  } else if (s_.want_reassemble || s_.debug_view != session_.debug_view) {
-    // A toggle, preset, quality value or debug view: same files, new defines.
+  } else if (s_.want_reassemble || s_.debug_view != session_.debug_view || session_.features_changed()) {
+    // A toggle, preset, quality value or debug view, or a panel edit that
+    // changes what the specialized shader needs: same files, new defines.
     s_.want_reassemble = false;
     session_.debug_view = s_.debug_view;
     const ReloadResult r = session_.reload(false);
     log_.line(std::string("rebuild ") + (r.ok ? "ok" : "failed") + " debug_view=" +
               std::to_string(session_.compiled_debug_view()) + " compile_ms=" + fmt("%.1f", r.compile_ms) +
+              (r.cached ? " cached" : "") +
               (r.ok ? "" : " -- " + r.error));
     if (!r.ok) std::fprintf(stderr, "marchstudio: %s\n", r.error.c_str());
   }

@@ -95,6 +95,10 @@ void Watcher::read_events(std::set<fs::path>& out) {
     for (ssize_t off = 0; off < n;) {
       const auto* ev = reinterpret_cast<const inotify_event*>(buf + off);
       off += static_cast<ssize_t>(sizeof(inotify_event) + ev->len);
+      if (ev->mask & IN_Q_OVERFLOW) {  // events were lost (a save storm): assume everything changed
+        out.insert(files_.begin(), files_.end());
+        continue;
+      }
       auto it = dir_of_wd_.find(ev->wd);
       if (it == dir_of_wd_.end()) continue;
       if (ev->mask & IN_IGNORED) {  // the directory itself went away

@@ -14,8 +14,6 @@ namespace {
 
 // The AOV attachments after the colour one (outGeom, outMisc, outCost).
 constexpr int kAovTargets = 3;
-// All RGBA32F buffers of a frame; 4 GiB keeps llvmpipe and most GPUs out of trouble.
-constexpr double kMaxFrameBytes = 4.0 * 1024 * 1024 * 1024;
 
 // Images are stored top row first; GL's first row is the bottom one.
 void flip_rows(Image& img) {
@@ -92,11 +90,7 @@ void check_frame_size(const GlInfo& info, int width, int height, int targets) {
     fail_input("image size " + size + " exceeds this GL's limit of " + std::to_string(max_w) + "x" +
                    std::to_string(max_h),
                {}, 0, "--size", "GL_MAX_VIEWPORT_DIMS / GL_MAX_TEXTURE_SIZE of " + info.renderer);
-  const double bytes = 16.0 * targets * width * height;
-  if (bytes > kMaxFrameBytes)
-    fail_input("image size " + size + " needs " + std::to_string(static_cast<long long>(bytes / (1 << 20))) +
-                   " MiB of frame buffers, over the 4096 MiB budget",
-               {}, 0, "--size");
+  check_frame_memory(frame_memory(width, height, targets, targets > 2), width, height);
 }
 
 FrameRenderer::FrameRenderer(const Context& ctx) : ctx_(ctx) { glGenVertexArrays(1, &vao_); }
@@ -129,10 +123,31 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   glUseProgram(main.id());
   set_uniforms(main);
   const GLint jitter = main.loc("uJitter");
-  for (const glm::vec2& s : stratified_samples(p.spp)) {
-    glUniform2f(jitter, s.x, s.y);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+  // Tile by tile (scissor; the viewport stays whole, so gl_FragCoord and the
+  // image are unchanged), every sample of a tile before the next: no draw
+  // covers more than a tile. A flush per tile submits it on its own (a GPU
+  // watchdog times single submissions); with a deadline each draw is waited
+  // for and the deadline checked, the finest point llvmpipe can stop at.
+  const std::vector<glm::vec2> samples = stratified_samples(p.spp);
+  glEnable(GL_SCISSOR_TEST);
+  for (const Tile& t : split_tiles(p.width, p.height, p.tile_size)) {
+    glScissor(t.x, t.y, t.width, t.height);
+    for (const glm::vec2& s : samples) {
+      glUniform2f(jitter, s.x, s.y);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      if (p.deadline) {
+        glFinish();
+        if (p.deadline->expired()) {
+          glDisable(GL_SCISSOR_TEST);
+          glDisable(GL_BLEND);
+          glBindFramebuffer(GL_FRAMEBUFFER, 0);
+          p.deadline->check("the render");
+        }
+      }
+    }
+    if (!p.deadline) glFlush();
   }
+  glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
 
   glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);

@@ -5,9 +5,11 @@
 #include <functional>
 #include <memory>
 
+#include "core/deadline.h"
 #include "gl/context.h"
 #include "io/image.h"
 #include "render/program.h"
+#include "render/tiles.h"
 
 namespace ms {
 
@@ -19,14 +21,19 @@ struct FrameParams {
   // Also accumulate the AOV targets (locations 1..3): the main program must be
   // assembled with AOV_OUTPUTS 1 (render/aov.h). read_aovs() reads them.
   bool aovs = false;
+  // Largest square one draw covers (render/tiles.h); <= 0: one draw per sample.
+  int tile_size = kTileSize;
+  // When set, every draw is waited for (glFinish) and the deadline checked
+  // after it: draw() throws the --timeout error (Exit::system) once it passed.
+  const Deadline* deadline = nullptr;
 };
 
 // Sets the main program's per-frame uniforms (it is bound when called).
 using UniformFn = std::function<void(const Program&)>;
 
 // Throws bad_input (key "--size") when width/height is not in 1..the GL
-// limits, or the buffers would exceed a sane memory budget. `targets`: how
-// many RGBA32F buffers the frame needs (2 plain, 5 with AOVs).
+// limits, or the frame would exceed the memory budget (render/tiles.h).
+// `targets`: how many RGBA32F buffers the frame needs (2 plain, 5 with AOVs).
 void check_frame_size(const GlInfo& info, int width, int height, int targets = 2);
 
 struct RenderTarget;  // an RGBA32F texture with its framebuffer (frame.cpp)
@@ -38,8 +45,8 @@ class FrameRenderer {
   FrameRenderer(const FrameRenderer&) = delete;
   FrameRenderer& operator=(const FrameRenderer&) = delete;
 
-  // Accumulate p.spp samples of `main`, then run `post` into the result
-  // target. Targets are kept while the size stays the same (the viewer draws
+  // Accumulate p.spp samples of `main` tile by tile, then run `post` into
+  // the result target. Targets are kept while the size stays the same (the viewer draws
   // every frame).
   void draw(const Program& main, const UniformFn& set_uniforms, const Program& post, const FrameParams& p);
   // The post output of the last draw(): channels R,G,B,A, top row first.

@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "shader/specialize.h"
+
 namespace ms {
 namespace {
 
@@ -30,16 +32,15 @@ void set_scene_uniforms(const Program& p, const Scene& s, int width, int height,
   set3(p, "uSkyZenith", s.sky.zenith);
   set3(p, "uAmbient", s.sky.ambient);
 
+  // A specialized shader may have folded some of these into constants (the
+  // same values: glsl_light); glUniform* ignores their -1 locations.
   for (size_t i = 0; i < s.lights.size(); ++i) {
-    const Light& l = s.lights[i];
+    const GlslLight l = glsl_light(s.lights[i]);
     const std::string base = "uLights[" + std::to_string(i) + "].";
-    const bool point = l.kind == LightKind::point;
-    const glm::vec3 xyz = point ? l.position : glm::normalize(l.direction);
-    glUniform4f(p.loc(base + "pos"), xyz.x, xyz.y, xyz.z, point ? 1.0f : 0.0f);
-    set3(p, base + "color", l.color * l.intensity);
-    // Directional size is an angular diameter in degrees; GLSL wants the radius in radians.
-    set1(p, base + "size", point ? l.size : radians(l.size) * 0.5f);
-    set3(p, base + "atten", l.attenuation);
+    glUniform4fv(p.loc(base + "pos"), 1, glm::value_ptr(l.pos));
+    set3(p, base + "color", l.color);
+    set1(p, base + "size", l.size);
+    set3(p, base + "atten", l.atten);
   }
   for (size_t i = 0; i < s.materials.size(); ++i) {
     const Material& m = s.materials[i];

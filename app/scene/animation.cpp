@@ -85,13 +85,16 @@ Slot find_slot(const std::string& target, Scene& scene) {
   static const std::regex plain(R"(^(camera|sky|render)\.([A-Za-z_]+)$)");
   static const std::regex indexed(R"(^(lights|materials)\[(\d{1,6})\]\.([A-Za-z_]+)$)");
   std::smatch m;
-  if (std::regex_match(target, m, plain)) {
+  // libstdc++'s regex recurses per character: a 50 KB target overflowed the
+  // stack (a long fuzz_animation input). No valid target is near this long.
+  constexpr std::size_t kMaxTarget = 128;
+  if (target.size() <= kMaxTarget && std::regex_match(target, m, plain)) {
     if (m[1] == "camera") return member_slot(scene.camera, kCamera, "camera", m[2]);
     if (m[1] == "sky") return member_slot(scene.sky, kSky, "sky", m[2]);
     return member_slot(scene.render, kRender, "render", m[2]);
   }
   Slot s;
-  if (!std::regex_match(target, m, indexed)) {
+  if (target.size() > kMaxTarget || !std::regex_match(target, m, indexed)) {
     s.error = "unknown animation target " + quote(target);
     s.hint = "expected camera.<key>, lights[<i>].<key>, materials[<i>].<key>, sky.<key> or render.exposure";
     return s;

@@ -13,6 +13,10 @@
 
 #include "core/error.h"
 #include "scene/animation.h"
+#include "scene/quality.h"
+#include "scene/quality_fields.h"
+#include "scene/suggest.h"
+#include "scene/toml_guard.h"
 #include "scene/toml_read.h"
 
 namespace ms {
@@ -22,6 +26,7 @@ namespace {
 
 constexpr std::size_t kMaxLights = 8;
 constexpr std::size_t kMaxMaterials = 32;
+constexpr std::size_t kMaxPlanes = 8;
 // Squared length below which a direction has no usable direction.
 constexpr double kTinySq = 1e-12;
 
@@ -53,20 +58,6 @@ const Field<Sky> kSkyFields[] = {
     {"zenith", &Sky::zenith, kNonNeg},
     {"ambient", &Sky::ambient, kNonNeg},
 };
-const Field<Quality> kQualityFields[] = {
-    {"max_steps", &Quality::max_steps, Range::closed(1, 100000)},
-    {"max_distance", &Quality::max_distance, kPositive},
-    {"hit_tolerance", &Quality::hit_tolerance, kNonNeg},
-    {"hit_epsilon", &Quality::hit_epsilon, kPositive},
-    {"lipschitz", &Quality::lipschitz, Range::at_least(1)},
-    {"shadow_steps", &Quality::shadow_steps, Range::closed(0, 10000)},
-    {"ao_taps", &Quality::ao_taps, Range::closed(0, 64)},
-    {"bounces", &Quality::bounces, Range::closed(0, 16)},
-    {"shadows", &Quality::shadows},
-    {"ao", &Quality::ao},
-    {"reflections", &Quality::reflections},
-    {"checker_filter", &Quality::checker_filter},
-};
 const Field<Light> kLightFields[] = {
     {"position", &Light::position},
     {"direction", &Light::direction},
@@ -86,6 +77,16 @@ const Field<Material> kMaterialFields[] = {
     {"pattern_scale", &Material::pattern_scale, kPositive},
     {"pattern_velocity", &Material::pattern_velocity},
 };
+const Field<Plane> kPlaneFields[] = {
+    {"normal", &Plane::normal},
+    {"offset", &Plane::offset},
+};
+const Field<Bounds> kBoundsFields[] = {
+    {"center", &Bounds::center},
+    {"radius", &Bounds::radius, kPositive},
+    {"min", &Bounds::min},
+    {"max", &Bounds::max},
+};
 
 // Every table's accepted keys, for unknown-key checks and for hinting where
 // a misplaced key belongs ("'width' belongs in [render]").
@@ -96,15 +97,18 @@ struct Section {
 };
 
 struct Schema {
-  std::vector<std::string_view> top{"scene", "camera", "render", "sky", "quality", "lights", "materials", "animation"};
+  std::vector<std::string_view> top{"scene",     "camera", "render", "sky",   "quality",
+                                    "lights",    "materials", "planes", "bounds", "animation"};
   std::vector<Section> sections{
       {"scene", false, {"name", "map", "shadertoy"}},
       {"camera", false, keys_of(kCameraFields)},
       {"render", false, keys_of(kRenderFields, {"tonemap"})},
       {"sky", false, keys_of(kSkyFields)},
-      {"quality", false, keys_of(kQualityFields)},
+      {"quality", false, keys_of(kQualityFields, {"preset"})},
       {"lights", true, keys_of(kLightFields, {"type"})},
       {"materials", true, keys_of(kMaterialFields, {"name", "pattern"})},
+      {"planes", true, keys_of(kPlaneFields, {"material"})},
+      {"bounds", false, keys_of(kBoundsFields)},
       {"animation", true, {"target", "interpolation", "keys"}},  // scene/animation.cpp
   };
 
@@ -136,6 +140,7 @@ struct Schema {
 // Debian shared library is built with exceptions (namespace toml::v3::ex),
 // so the second branch only matters for a header-only build without them.
 toml::table parse_toml(std::string_view text, const Reader& r) {
+  check_toml_key_depth(text, r.file());  // toml++ recurses per dotted key component
 #if TOML_EXCEPTIONS
   try {
     return toml::parse(text, std::string_view{r.file()});
@@ -253,6 +258,98 @@ void read_materials(const Reader& r, const Schema& schema, const toml::table& ro
   }
 }
 
+// [quality]: the preset first (default balanced), then every key the file
+// sets, which overrides the preset and is remembered as explicit (so that
+// --preset can re-base the scene and keep it).
+void read_quality(const Reader& r, const Schema& schema, const toml::table& root, Quality& q) {
+  const toml::table* t = r.table(root, {}, "quality");
+  if (!t) return;
+  schema.check(r, *t, "quality", "quality");
+  std::string preset = q.preset;
+  if (r.read(*t, "quality", "preset", preset)) {
+    const auto& names = quality_preset_names();
+    if (std::find(names.begin(), names.end(), preset) == names.end()) {
+      const std::vector<std::string_view> views(names.begin(), names.end());
+      const std::string hint = did_you_mean(preset, views);
+      r.fail(Reader::line_of(*t, "preset"), "quality.preset", "unknown value " + quote(preset) + " for 'quality.preset'",
+             hint.empty() ? "use fast, balanced, reference or textbook" : hint);
+    }
+  }
+  q = preset_quality(preset);
+  r.read_fields(*t, "quality", kQualityFields, q);
+  for (auto&& [k, v] : *t)
+    if (k.str() != "preset") q.explicit_keys.emplace_back(k.str());
+}
+
+// [[planes]], after the materials they name.
+void read_planes(const Reader& r, const Schema& schema, const toml::table& root, Scene& scene) {
+  const auto tables = r.tables(root, {}, "planes");
+  if (tables.size() > kMaxPlanes)
+    r.fail(Reader::line_of(*tables[kMaxPlanes]), "planes",
+           "too many planes: " + std::to_string(tables.size()) + " (at most " + std::to_string(kMaxPlanes) + ")");
+  std::vector<std::string_view> names;
+  for (const Material& m : scene.materials) names.push_back(m.name);
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const toml::table& t = *tables[i];
+    const std::string path = "planes[" + std::to_string(i) + "]";
+    Plane plane;
+    schema.check(r, t, "planes", path);
+    r.read_fields(t, path, kPlaneFields, plane);
+    if (length_sq(plane.normal) <= kTinySq)
+      r.fail(Reader::line_of(t, "normal"), path + ".normal", quote(path + ".normal") + " must not be zero-length");
+    plane.normal = glm::normalize(plane.normal);
+    const std::string key = path + ".material";
+    if (!r.read(t, path, "material", plane.material))
+      r.fail(Reader::line_of(t), key, "missing required key " + quote(key),
+             "name the plane's [[materials]] entry, e.g. material = \"floor\"");
+    const auto it = std::find(names.begin(), names.end(), plane.material);
+    if (it == names.end()) {
+      const std::string hint = did_you_mean(plane.material, names);
+      r.fail(Reader::line_of(t, "material"), key, "unknown material " + quote(plane.material) + " for " + quote(key),
+             hint.empty() ? "it must be the name of a [[materials]] entry" : hint);
+    }
+    plane.material_id = static_cast<int>(it - names.begin());
+    scene.planes.push_back(std::move(plane));
+  }
+}
+
+// [bounds]: a sphere (center, radius) or a box (min, max), never both.
+void read_bounds(const Reader& r, const Schema& schema, const toml::table& root, Bounds& b) {
+  const toml::table* t = r.table(root, {}, "bounds");
+  if (!t) return;
+  schema.check(r, *t, "bounds", "bounds");
+  r.read_fields(*t, "bounds", kBoundsFields, b);
+  const bool sphere = t->contains("center") || t->contains("radius");
+  const bool box = t->contains("min") || t->contains("max");
+  const auto need = [&](std::string_view have, std::string_view missing) {
+    if (!t->contains(missing))
+      r.fail(Reader::line_of(*t, have), "bounds." + std::string(missing),
+             "'bounds." + std::string(have) + "' needs 'bounds." + std::string(missing) + "'",
+             "a bounding sphere is center and radius; a box is min and max");
+  };
+  if (sphere && box)
+    r.fail(Reader::line_of(*t, t->contains("min") ? "min" : "max"), "bounds",
+           "[bounds] is either a sphere (center, radius) or a box (min, max), not both");
+  if (sphere) {
+    need(t->contains("center") ? "center" : "radius", "center");
+    need("center", "radius");
+    b.kind = BoundsKind::sphere;
+  } else if (box) {
+    need(t->contains("min") ? "min" : "max", "min");
+    need("min", "max");
+    for (int c = 0; c < 3; ++c)
+      if (!(b.min[c] < b.max[c]))
+        r.fail(Reader::line_of(*t, "max"), "bounds.max",
+               "'bounds.max' must be greater than 'bounds.min' in every component, got " + format_number(b.max[c]) +
+                   " <= " + format_number(b.min[c]),
+               "min is the box's lowest corner, max its highest");
+    b.kind = BoundsKind::box;
+  } else {
+    r.fail(Reader::line_of(*t), "bounds", "[bounds] is empty",
+           "give center and radius (a sphere) or min and max (a box), or remove it");
+  }
+}
+
 // `scene.<key>` (map or shadertoy) relative to the scene file's folder; it
 // must be a readable file.
 fs::path resolve_glsl(const Reader& r, const toml::table& t, const fs::path& display_path, const std::string& key) {
@@ -265,6 +362,9 @@ fs::path resolve_glsl(const Reader& r, const toml::table& t, const fs::path& dis
   std::error_code ec;
   if (fs::is_directory(resolved, ec))
     r.fail(line, dotted, key + " file " + quote(resolved.string()) + " is a directory");
+  // Opening a FIFO or a device would block (or read forever): files only.
+  if (fs::exists(resolved, ec) && !fs::is_regular_file(resolved, ec))
+    r.fail(line, dotted, key + " file " + quote(resolved.string()) + " is not a regular file");
   if (!std::ifstream(resolved))
     r.fail(line, dotted, "cannot open " + key + " file " + quote(resolved.string()),
            fs::exists(resolved, ec) ? "it is not readable"
@@ -310,7 +410,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
   if (const toml::table* t = read_section(r, schema, root, "render", kRenderFields, scene.render))
     r.read_enum(*t, "render", "tonemap", kTonemaps, scene.render.tonemap);
   read_section(r, schema, root, "sky", kSkyFields, scene.sky);
-  read_section(r, schema, root, "quality", kQualityFields, scene.quality);
+  read_quality(r, schema, root, scene.quality);
 
   const auto lights = r.tables(root, {}, "lights");
   if (lights.size() > kMaxLights)
@@ -320,6 +420,8 @@ Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
     scene.lights.push_back(read_light(r, schema, *lights[i], "lights[" + std::to_string(i) + "]"));
   // A Shadertoy scene has no map() and so needs no materials.
   if (!(st && st->contains("shadertoy")) || root.contains("materials")) read_materials(r, schema, root, scene);
+  read_planes(r, schema, root, scene);
+  read_bounds(r, schema, root, scene.bounds);
   // After lights and materials: a track's target must name one that exists.
   const auto tracks = r.tables(root, {}, "animation");
   for (std::size_t i = 0; i < tracks.size(); ++i) {
@@ -337,6 +439,8 @@ Scene load_scene(const fs::path& toml_path) {
   const std::string file = toml_path.string();
   std::error_code ec;
   if (fs::is_directory(toml_path, ec)) fail_input("cannot open scene file", file, 0, {}, "it is a directory");
+  if (fs::exists(toml_path, ec) && !fs::is_regular_file(toml_path, ec))  // a FIFO would block the open
+    fail_input("cannot open scene file", file, 0, {}, "it is not a regular file");
   std::ifstream in(toml_path, std::ios::binary);
   if (!in)
     fail_input("cannot open scene file", file, 0, {},

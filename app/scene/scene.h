@@ -49,12 +49,15 @@ struct Material {
 
 enum class Tonemap { none, reinhard, aces };
 
+// The defaults are the `balanced` preset; scene/quality.h defines the others
+// (fast, reference, textbook) in one place.
 struct Quality {
   int max_steps = 255;
   float max_distance = 100.0f;
-  float hit_tolerance = 0.5f;   // hit when d < hit_tolerance * pixel footprint at t
+  float hit_tolerance = 0.1f;   // hit when d < hit_tolerance * pixel footprint at t
   float hit_epsilon = 1e-4f;    // absolute floor of the hit tolerance
   float lipschitz = 1.0f;       // the scene SDF's Lipschitz bound (step = d / L)
+  float omega = 1.2f;           // over-relaxation of the primary/reflection march, [1, 2)
   int shadow_steps = 64;
   int ao_taps = 5;
   int bounces = 1;              // reflection bounces
@@ -62,6 +65,30 @@ struct Quality {
   bool ao = true;
   bool reflections = true;
   bool checker_filter = true;
+  bool bounds = true;           // march map() only inside the scene's [bounds], when it has one
+  bool analytic_planes = true;  // intersect [[planes]] exactly; false marches them (the textbook way)
+  std::string preset = "balanced";          // the preset these values started from
+  std::vector<std::string> explicit_keys;   // [quality] keys the file set: they override any preset
+};
+
+// An infinite plane dot(p, normal) + offset = 0, solid below, intersected
+// exactly instead of marched ([[planes]]; docs/scene-format.md).
+struct Plane {
+  glm::vec3 normal{0.0f, 1.0f, 0.0f};  // unit length after loading
+  float offset = 0.0f;
+  std::string material;                // a [[materials]] name
+  int material_id = 0;                 // its index
+};
+
+// A volume that contains everything map() draws (planes excluded): rays
+// march map() only where they are inside it ([bounds]).
+enum class BoundsKind { none, sphere, box };
+struct Bounds {
+  BoundsKind kind = BoundsKind::none;
+  glm::vec3 center{0.0f};  // sphere
+  float radius = 0.0f;
+  glm::vec3 min{0.0f};     // box
+  glm::vec3 max{0.0f};
 };
 
 struct RenderSettings {
@@ -101,6 +128,8 @@ struct Scene {
   Camera camera;
   std::vector<Light> lights;
   std::vector<Material> materials;
+  std::vector<Plane> planes;       // analytic, not part of map()
+  Bounds bounds;                   // where map() is marched; none: everywhere
   Quality quality;
   RenderSettings render;
   Sky sky;

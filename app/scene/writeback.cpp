@@ -13,6 +13,7 @@
 #include <toml++/toml.h>
 
 #include "core/error.h"
+#include "scene/toml_guard.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -50,6 +51,7 @@ std::string toml_string(const std::string& s) {
 namespace {
 
 toml::table parse(std::string_view text, const std::string& name) {
+  check_toml_key_depth(text, name);  // toml++ recurses per dotted key component
 #if TOML_EXCEPTIONS
   try {
     return toml::parse(text, std::string_view{name});

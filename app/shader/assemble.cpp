@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "shader/specialize.h"
 
 namespace ms {
 
@@ -55,10 +56,15 @@ std::string material_macro(const Scene& scene, size_t i) {
 }
 
 // The root includes the map file by absolute path; a quote or newline in it
-// would end the #include early.
-std::string map_include_path(const Scene& scene) {
+// would end the #include early. It must lie inside the include roots like
+// any include (checked here for an error that names scene.map).
+std::string map_include_path(const Scene& scene, const std::vector<fs::path>& roots) {
   std::error_code ec;
   fs::path p = fs::absolute(scene.map_file, ec);
+  if (!scene.map_file.empty() && !within_roots(p, roots))
+    fail_input("the map file '" + display_path(p) + "' is outside the directories includes may read",
+               display_path(scene.file), 0, "scene.map",
+               "allowed: " + describe_roots(roots) + "; widen with --allow-include DIR");
   if (scene.map_file.empty() || ec || !fs::is_regular_file(p, ec))
     fail_input("cannot find the map file '" + scene.map_file.generic_string() + "'", display_path(scene.file), 0,
                "scene.map", "the path is relative to the scene file");
@@ -68,14 +74,91 @@ std::string map_include_path(const Scene& scene) {
   return s;
 }
 
-PreprocessOptions library_options(const AssembleOptions& opts) { return {{opts.shader_dir}}; }
+PreprocessOptions library_options(const AssembleOptions& opts) {
+  PreprocessOptions p;
+  p.include_dirs = {opts.shader_dir};
+  return p;
+}
+
+// What the scene's includes may read. A scene made in memory (no file)
+// reads from its map file's directory.
+PreprocessOptions scene_options(const Scene& scene, const AssembleOptions& opts) {
+  PreprocessOptions popts = library_options(opts);
+  popts.roots = include_roots(scene.file.empty() ? scene.map_file : scene.file, opts);
+  return popts;
+}
+
+// The GLSL whose sd*/op* references decide which library functions a
+// specialized shader keeps: the map with everything it includes, the
+// pipeline (main.frag and its files) and the -D values. Only primitives.glsl
+// and operators.glsl themselves are left out: they are included first, so
+// #pragma once skips them afterwards.
+std::string library_users(const std::string& map_path, const AssembleOptions& opts, const PreprocessOptions& popts) {
+  const std::string marker = "// marchstudio: library users start here\n";
+  const std::string root = "#include \"primitives.glsl\"\n#include \"operators.glsl\"\n" + marker +
+                           "#include \"" + map_path + "\"\n#include \"main.frag\"\n";
+  std::string text = preprocess(root, "library scan (generated)", opts.shader_dir, popts).text;
+  text.erase(0, text.find(marker));
+  for (const auto& d : opts.defines) text += "\n" + d.second;
+  return text;
+}
+
+std::string glsl_vec4(glm::vec3 v, float w) {
+  return "vec4(" + glsl_float(v.x) + ", " + glsl_float(v.y) + ", " + glsl_float(v.z) + ", " + glsl_float(w) + ")";
+}
+
+// The tracer's analytic geometry (sdf_shaders/bounds.glsl): the declared
+// planes (exact, or marched with analytic_planes off: the textbook way), the
+// bounding volume when quality.bounds is on, and the over-relaxation.
+void define_tracer_geometry(std::string& root, const Scene& scene) {
+  const Quality& q = scene.quality;
+  define(root, "OMEGA", glsl_float(q.omega));
+  define(root, "NUM_PLANES", static_cast<int>(scene.planes.size()));
+  define(root, "ANALYTIC_PLANES", q.analytic_planes ? 1 : 0);
+  if (!scene.planes.empty()) {
+    std::string list, mats;
+    for (const Plane& p : scene.planes) {
+      list += (list.empty() ? "" : ", ") + glsl_vec4(p.normal, p.offset);
+      mats += (mats.empty() ? "" : ", ") + std::to_string(p.material_id);
+    }
+    define(root, "PLANE_LIST", list);
+    define(root, "PLANE_MATERIALS", mats);
+  }
+  const Bounds& b = scene.bounds;
+  const int kind = !q.bounds ? 0 : b.kind == BoundsKind::sphere ? 1 : b.kind == BoundsKind::box ? 2 : 0;
+  define(root, "BOUNDS_KIND", kind);
+  if (kind == 1) define(root, "BOUNDS_A", glsl_vec4(b.center, b.radius));
+  if (kind == 2) {
+    define(root, "BOUNDS_A", glsl_vec4(b.min, 0.0f));
+    define(root, "BOUNDS_B", glsl_vec4(b.max, 0.0f));
+  }
+}
 
 }  // namespace
+
+std::vector<fs::path> include_roots(const fs::path& scene_file, const AssembleOptions& opts) {
+  std::error_code ec;
+  fs::path dir = fs::absolute(scene_file, ec).parent_path();
+  std::vector<fs::path> roots = {dir, opts.shader_dir};
+  roots.insert(roots.end(), opts.allow_include.begin(), opts.allow_include.end());
+  return roots;
+}
+
+FeatureSet scene_features(const Scene& scene, const AssembleOptions& opts) {
+  const PreprocessOptions popts = scene_options(scene, opts);
+  return derive_features(scene, library_users(map_include_path(scene, popts.roots), opts, popts));
+}
 
 ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts) {
   if (scene.materials.empty())
     fail_input("a scene needs at least one material", display_path(scene.file), 0, "materials");
-  const Quality& q = scene.quality;
+  const PreprocessOptions popts = scene_options(scene, opts);
+  const std::string map_path = map_include_path(scene, popts.roots);
+  // Generic: the scene's own quality, nothing else. Otherwise only the
+  // features the scene uses, and folded values (docs/specialization.md).
+  const Specialized sp = specialize(
+      scene, opts.specialize == Specialization::generic ? FeatureSet{} : scene_features(scene, opts), opts.specialize);
+  const Quality& q = sp.quality;
   std::string root = "#version 450 core\n";
   root += "// generated by marchstudio for scene '" + scene_display_name(scene) + "'\n";
   define(root, "NUM_LIGHTS", static_cast<int>(scene.lights.size()));
@@ -93,17 +176,20 @@ ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts) {
   define(root, "ENABLE_AO", q.ao ? 1 : 0);
   define(root, "ENABLE_REFLECTIONS", q.reflections ? 1 : 0);
   define(root, "ENABLE_CHECKER_FILTER", q.checker_filter ? 1 : 0);
+  define_tracer_geometry(root, scene);
+  root += sp.defines;
   for (const auto& [name, value] : opts.defines) {
     if (root.find("#define " + name + " ") != std::string::npos)
       fail_input("define '" + name + "' is already set by the scene", display_path(scene.file), 0, name);
     define(root, name, value);
   }
   root += "#include \"prelude.glsl\"\n";
+  root += sp.constants;
   root += "#include \"primitives.glsl\"\n";
   root += "#include \"operators.glsl\"\n";
-  root += "#include \"" + map_include_path(scene) + "\"\n";
+  root += "#include \"" + map_path + "\"\n";
   root += "#include \"main.frag\"\n";
-  return preprocess(root, scene_display_name(scene) + ".frag (generated)", opts.shader_dir, library_options(opts));
+  return preprocess(root, scene_display_name(scene) + ".frag (generated)", opts.shader_dir, popts);
 }
 
 ShaderSource assemble_post(Tonemap tonemap, bool encode_srgb, const AssembleOptions& opts) {

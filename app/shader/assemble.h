@@ -7,8 +7,10 @@
 #include <utility>
 #include <vector>
 
+#include "scene/features.h"
 #include "scene/scene.h"
 #include "shader/preprocess.h"
+#include "shader/specialize.h"
 
 namespace ms {
 
@@ -17,13 +19,33 @@ struct AssembleOptions {
   // Extra #defines (name, value) placed after the scene's own, e.g.
   // AOV_OUTPUTS or DEBUG_VIEW; a name the scene already defines is an error.
   std::vector<std::pair<std::string, std::string>> defines;
+  // Directories an #include may read besides the scene's own directory
+  // (a Shadertoy file's, for a bare .glsl) and shader_dir: --allow-include.
+  // Nothing else is readable (PreprocessOptions::roots).
+  std::vector<std::filesystem::path> allow_include;
+  // Which code and values the scene shader compiles (shader/specialize.h):
+  // render and bench fold, view keeps the panel's values as uniforms,
+  // --no-specialize (and this default) builds the generic shader.
+  Specialization specialize = Specialization::generic;
 };
+
+// The directories includes of a scene whose file is `scene_file` may read:
+// its directory, opts.shader_dir and opts.allow_include.
+std::vector<std::filesystem::path> include_roots(const std::filesystem::path& scene_file,
+                                                 const AssembleOptions& opts);
 
 // The scene's main-pass fragment shader: NUM_LIGHTS, NUM_MATERIALS,
 // MAT_<NAME> per material (ids in TOML order), the quality defines, then
 // prelude/primitives/operators, the scene's map file (absolute) and main.frag.
 // Source string 0 is shown as "<scene name>.frag (generated)".
+// opts.specialize picks the generic shader or a specialized one
+// (docs/specialization.md).
 ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts);
+
+// What the scene uses (scene/features.h), with the library names scanned
+// from its map, everything the map includes, the pipeline and the -D values.
+// Reads the files like assemble_scene() and throws what it would.
+FeatureSet scene_features(const Scene& scene, const AssembleOptions& opts);
 
 // The post pass: TONEMAP (0 none, 1 Reinhard, 2 ACES) and ENCODE_SRGB, then
 // post.frag.

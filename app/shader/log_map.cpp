@@ -72,6 +72,11 @@ std::vector<ShaderDiagnostic> parse_info_log(std::string_view log, const ShaderS
     std::string line = trimmed(log.substr(pos, end - pos));
     pos = end + 1;
     if (line.empty()) continue;
+    // libstdc++'s regex recurses once per character: a 60 KB line (a driver
+    // quoting a huge token) overflowed the stack (a long fuzz_preprocess
+    // input). The location is at the start; the rest is message.
+    constexpr size_t kMaxLine = 2000;
+    if (line.size() > kMaxLine) line = line.substr(0, kMaxLine) + "...";
 
     std::smatch m;
     ShaderDiagnostic d;

@@ -24,6 +24,12 @@ struct ShaderSource {
 
 struct PreprocessOptions {
   std::vector<std::filesystem::path> include_dirs;  // searched after the including file's own dir
+  // Confinement: when not empty, an #include may only read files inside
+  // these directories, judged on the canonical path (symlinks and ".."
+  // resolved), so a scene cannot pull /etc/passwd or ~/.ssh into a shader
+  // and have the compiler echo it. assemble.h sets the scene's directory,
+  // sdf_shaders/ and --allow-include; empty: unconfined (tests, tools).
+  std::vector<std::filesystem::path> roots;
 };
 
 // Expand `#include "file"` (and `#include <file>`, searched in include_dirs
@@ -31,9 +37,18 @@ struct PreprocessOptions {
 // errors and is source string 0; its relative includes resolve against
 // root_dir, then include_dirs. Absolute include paths are allowed.
 // Throws ms::Error (bad_input) for cycles, missing includes, a #version in an
-// included file and malformed #include lines, located at file:line.
+// included file, malformed #include lines and (with opts.roots) an include
+// outside the roots, located at file:line. That error names the path and
+// is raised before the file is opened: none of its content is ever shown.
 ShaderSource preprocess(std::string_view root_text, const std::string& root_name,
                         const std::filesystem::path& root_dir, const PreprocessOptions& opts);
+
+// Whether `p`, made absolute with symlinks resolved as far as it exists,
+// lies inside one of `roots` (themselves canonicalised).
+bool within_roots(const std::filesystem::path& p, const std::vector<std::filesystem::path>& roots);
+
+// "a, b and c" of display paths, for hints naming the allowed roots.
+std::string describe_roots(const std::vector<std::filesystem::path>& roots);
 
 // How a path is shown to users: relative to the current directory when it
 // lies under it, else absolute; always with '/' separators. Empty stays empty.

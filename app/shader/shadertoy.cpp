@@ -1,9 +1,9 @@
 #include "shader/shadertoy.h"
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <iterator>
-#include <regex>
 #include <string>
 #include <system_error>
 
@@ -33,14 +33,24 @@ std::string strip_comments(std::string_view s) {
   return out;
 }
 
-const std::regex& main_def() {
-  static const std::regex re(R"(\bvoid\s+main\s*\()");
-  return re;
-}
-
-const std::regex& main_image_def() {
-  static const std::regex re(R"(\bvoid\s+mainImage\s*\()");
-  return re;
+// Offset of the first `void <name> (` (as whole words, any whitespace) in
+// comment-free code, npos when none. A scan, not std::regex: libstdc++'s
+// regex recurses once per character of a \s+ run, so a shader with 50 KB of
+// spaces after `void` overflowed the stack (a long fuzz_shadertoy input).
+size_t find_definition(std::string_view code, std::string_view name) {
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; };
+  for (size_t at = code.find("void"); at != std::string_view::npos; at = code.find("void", at + 1)) {
+    if (at > 0 && word(code[at - 1])) continue;
+    size_t i = at + 4;
+    const size_t gap = i;
+    while (i < code.size() && space(code[i])) ++i;
+    if (i == gap || code.substr(i, name.size()) != name) continue;
+    i += name.size();
+    while (i < code.size() && space(code[i])) ++i;
+    if (i < code.size() && code[i] == '(') return at;
+  }
+  return std::string_view::npos;
 }
 
 // The part of the wrapper before the user's file. Shadertoy's uniform set,
@@ -77,21 +87,31 @@ const char* wrapper_tail() {
 
 bool looks_like_shadertoy(std::string_view source) {
   std::string s = strip_comments(source);
-  return std::regex_search(s, main_image_def()) && !std::regex_search(s, main_def());
+  return find_definition(s, "mainImage") != std::string_view::npos &&
+         find_definition(s, "main") == std::string_view::npos;
 }
 
-ShaderSource assemble_shadertoy(const fs::path& glsl_file, const AssembleOptions& opts) {
+ShaderSource assemble_shadertoy(const fs::path& glsl_file, const AssembleOptions& opts, const fs::path& scene_file) {
   std::error_code ec;
   fs::path abs = fs::absolute(glsl_file, ec).lexically_normal();
+  PreprocessOptions popts;
+  popts.include_dirs = {opts.shader_dir};
+  // A bare shader was named on the command line: its real directory is the
+  // root, even through a symlink. A wrapped one must lie in its scene's.
+  popts.roots = include_roots(scene_file.empty() ? fs::weakly_canonical(abs, ec) : scene_file, opts);
+  if (!within_roots(abs, popts.roots))
+    fail_input("the Shadertoy shader '" + display_path(abs) + "' is outside the directories includes may read",
+               display_path(scene_file.empty() ? glsl_file : scene_file), 0, scene_file.empty() ? "" : "scene.shadertoy",
+               "allowed: " + describe_roots(popts.roots) + "; widen with --allow-include DIR");
+  // Regular files only: opening a FIFO would block.
+  if (ec || !fs::is_regular_file(abs, ec)) fail_input("cannot read the Shadertoy shader", display_path(glsl_file));
   std::ifstream in(abs, std::ios::binary);
-  if (ec || !fs::is_regular_file(abs, ec) || !in)
-    fail_input("cannot read the Shadertoy shader", display_path(glsl_file));
+  if (!in) fail_input("cannot read the Shadertoy shader", display_path(glsl_file));
   std::string user((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 
   std::string code = strip_comments(user);
-  std::smatch m;
-  if (std::regex_search(code, m, main_def())) {
-    int line = 1 + static_cast<int>(std::count(code.begin(), code.begin() + m.position(0), '\n'));
+  if (const size_t at = find_definition(code, "main"); at != std::string_view::npos) {
+    int line = 1 + static_cast<int>(std::count(code.begin(), code.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
     fail_input("a Shadertoy shader must not define main()", display_path(abs), line, {},
                "define void mainImage(out vec4 fragColor, in vec2 fragCoord) instead");
   }
@@ -103,10 +123,9 @@ ShaderSource assemble_shadertoy(const fs::path& glsl_file, const AssembleOptions
   for (const auto& [name, value] : opts.defines) root += "#define " + name + " " + value + "\n";
   root += "#include \"" + path + "\"\n";
   root += wrapper_tail();
-  ShaderSource src = preprocess(root, display_path(abs) + " (shadertoy wrapper)", abs.parent_path(),
-                                PreprocessOptions{{opts.shader_dir}});
+  ShaderSource src = preprocess(root, display_path(abs) + " (shadertoy wrapper)", abs.parent_path(), popts);
   // mainImage may come from a file the shader includes, so look after expansion.
-  if (!std::regex_search(strip_comments(src.text), main_image_def()))
+  if (find_definition(strip_comments(src.text), "mainImage") == std::string_view::npos)
     fail_input("no mainImage() found in the Shadertoy shader", display_path(abs), 0, {},
                "define void mainImage(out vec4 fragColor, in vec2 fragCoord)");
   return src;

@@ -17,7 +17,11 @@ namespace ms {
 // iFrame, iMouse, iDate, iSampleRate, iChannelTime[4], iChannelResolution[4],
 // iChannel0..3 (sampler2D), and uJitter (sub-pixel sample position, 0.5,0.5
 // = pixel centre). Throws ms::Error when the file is missing or defines main().
-ShaderSource assemble_shadertoy(const std::filesystem::path& glsl_file, const AssembleOptions& opts);
+// Includes may read scene_file's directory (the .toml that wraps the shader;
+// empty: the shader's own, symlinks resolved), opts.shader_dir and opts.allow_include, and the
+// shader itself must lie there.
+ShaderSource assemble_shadertoy(const std::filesystem::path& glsl_file, const AssembleOptions& opts,
+                                const std::filesystem::path& scene_file = {});
 
 // True when `source` (comments ignored) defines mainImage and no main().
 bool looks_like_shadertoy(std::string_view source);

@@ -14,6 +14,7 @@
 #include "render/aov.h"
 #include "run.h"
 #include "scene/load.h"
+#include "scene/quality.h"
 
 namespace ms::test {
 namespace {
@@ -90,9 +91,11 @@ TEST(Aov, CountersAddUp) {
   // the shadow steps, and per shaded hit 4 normal taps + AO_TAPS. So the
   // remainder is a whole number of shaded hits (at most 1 + bounces).
   TempDir dir;
+  // The textbook preset: every hit computes its normal (the default tracer
+  // gives analytic plane hits their exact normal, without the 4 taps).
   const Scene seed = load_scene(seed_toml());
   const int per_hit = 4 + seed.quality.ao_taps;
-  const Image img = render_aov(dir, "cost.exr", 48, 27, "cost,steps");
+  const Image img = render_aov(dir, "cost.exr", 48, 27, "cost,steps", {"--preset", "textbook"});
   int shaded_twice = 0;
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) {
@@ -115,8 +118,11 @@ TEST(Aov, CountersAddUp) {
 TEST(Aov, PrimaryStepsMatchTheCpuTracer) {
   constexpr int W = 24, H = 14;
   TempDir dir;
-  const Scene seed = load_scene(seed_toml());
-  const Image img = render_aov(dir, "steps.exr", W, H, "steps,cost");
+  // The CPU tracer is plain sphere tracing of the whole field: the textbook
+  // preset (the default tracer has its own CPU twin in test_presets.cpp).
+  Scene seed = load_scene(seed_toml());
+  seed.quality = with_preset(seed.quality, "textbook");
+  const Image img = render_aov(dir, "steps.exr", W, H, "steps,cost", {"--preset", "textbook"});
   ASSERT_EQ(img.width, W);
   int agree = 0, cap_agree = 0;
   double gpu_sum = 0, cpu_sum = 0;

@@ -11,6 +11,7 @@
 #include "cpu_tracer.h"
 #include "run.h"
 #include "scene/load.h"
+#include "scene/quality.h"
 
 namespace ms::test {
 namespace {
@@ -48,10 +49,14 @@ void leaves(const json& j, const std::string& at, std::set<std::string>& out) {
   for (const auto& [k, v] : j.items()) leaves(v, at + "/" + k, out);
 }
 
+// The CPU tracer mirrors plain sphere tracing of the whole field, the
+// textbook preset; the default tracer is checked in test_presets.cpp.
 TEST(Bench, CountingPassAgreesWithTheCpuTracer) {
   constexpr int W = 24, H = 14;
-  const json j = bench_json({scene("seed"), "--size", "24x14", "--frames", "1", "--warmup", "0"});
-  const Scene seed = load_scene(scene("seed"));
+  const json j =
+      bench_json({scene("seed"), "--size", "24x14", "--frames", "1", "--warmup", "0", "--preset", "textbook"});
+  Scene seed = load_scene(scene("seed"));
+  seed.quality = with_preset(seed.quality, "textbook");
   double sum = 0;
   int capped = 0, hits = 0, max_steps = 0;
   for (int y = 0; y < H; ++y)

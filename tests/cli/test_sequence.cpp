@@ -109,8 +109,9 @@ TEST(Sequence, FrameTimeIsExactlyFrameOverFps) {
 // frame equals `render --time` at that frame's time, pixel for pixel.
 TEST(Sequence, KeyframesAnimateTheSceneAndMatchSingleRenders) {
   TempDir dir;
-  const std::string seed = (source_dir() / "scenes" / "seed.glsl").string();
-  write_file(dir / "anim.toml", "[scene]\nmap = \"" + seed + "\"\n[camera]\nposition = [0, 1.6, -5]\n"
+  // The map next to the scene: includes may only read the scene's directory.
+  write_file(dir / "seed.glsl", read_file(source_dir() / "scenes" / "seed.glsl"));
+  write_file(dir / "anim.toml", "[scene]\nmap = \"seed.glsl\"\n[camera]\nposition = [0, 1.6, -5]\n"
                                 "target = [0, 0.8, 0]\n[render]\nwidth = 48\nheight = 27\n[[lights]]\n"
                                 "position = [4, 5, -1.5]\n[[materials]]\nname = \"floor\"\n[[materials]]\n"
                                 "name = \"ball\"\ncolor = [1, 0, 0]\n"

@@ -1,0 +1,175 @@
+#include "cli/sweep_cmd.h"
+
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "bench/plot.h"
+#include "bench/sweep.h"
+#include "bench/sweep_report.h"
+#include "cli/input.h"
+#include "cli/shader_dir.h"
+#include "core/error.h"
+#include "io/image_io.h"
+#include "scene/animation.h"
+#include "scene/quality.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
+  CLI::App* cmd =
+      app.add_subcommand("sweep", "Frame time against error over a grid of quality settings (docs/speed-vs-error.md)");
+  cmd->add_option("scene", a.input, "Scene .toml")->required();
+  cmd->add_option("--size", a.size, "Image size WxH (default 640x360)");
+  cmd->add_option("--frames", a.frames, "Timed frames per row in each round (default 5)");
+  cmd->add_option("--rounds", a.rounds,
+                  "Timing rounds over all rows; a row's time is its best round's median (default 3)");
+  cmd->add_option("--warmup", a.warmup, "Untimed frames before each row's frames in each round (default 1)");
+  cmd->add_option("--spp", a.spp, "Samples per pixel of every row and of the same-spp reference (default 1)");
+  cmd->add_option("--ref-spp", a.ref_spp, "Samples per pixel of the supersampled reference (default 16)");
+  cmd->add_option("--grid", a.grid, "quick (about 30 rows) or full (adds a tracer factorial, about 80)")
+      ->check(CLI::IsMember({"quick", "full"}));
+  cmd->add_option("--time-by", a.time_by,
+                  "The frame time the fronts and the plot use: gpu (GL timer, default), wall, or cpu (this process's "
+                  "CPU time: steadier than the others on a shared machine)")
+      ->check(CLI::IsMember({"gpu", "wall", "cpu"}));
+  cmd->add_option("--preset", a.preset, "The preset the rows vary around (default balanced)")
+      ->check(CLI::IsMember(quality_preset_names()));
+  cmd->add_option("--only", a.only, "Measure only these rows of the grid, by name (e.g. textbook,balanced)")
+      ->delimiter(',');
+  cmd->add_option("-o,--out", a.out, "Directory for <scene>.sweep.csv, .json and .png (default .)");
+  cmd->add_option("--backend", a.backend, "GL context: auto, egl or osmesa")
+      ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+  cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
+  cmd->add_option("--allow-include", a.allow_include,
+                  "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
+  cmd->add_flag("-q,--quiet", a.quiet, "No progress lines on stderr");
+  cmd->add_flag("--no-specialize", a.no_specialize,
+                "Measure the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
+  return cmd;
+}
+
+namespace {
+
+void check_range(int v, int lo, int hi, const char* flag) {
+  if (v < lo || v > hi)
+    fail_input(std::string(flag) + " must be in " + std::to_string(lo) + ".." + std::to_string(hi), {}, 0, flag);
+}
+
+// Text files are written like images: a temporary, then a rename.
+void write_text(const fs::path& path, const std::string& text) {
+  const fs::path tmp = path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    f << text;
+    if (!f.flush()) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      fail_system("cannot write '" + path.string() + "'");
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    fail_system("cannot write '" + path.string() + "': " + ec.message());
+  }
+}
+
+std::string command_line(const SweepArgs& a) {
+  std::string c = "marchstudio sweep " + a.input + " --size " + a.size + " --frames " + std::to_string(a.frames) +
+                  " --rounds " + std::to_string(a.rounds) + " --warmup " + std::to_string(a.warmup) + " --spp " + std::to_string(a.spp) + " --ref-spp " +
+                  std::to_string(a.ref_spp) + " --grid " + a.grid;
+  if (a.preset != "balanced") c += " --preset " + a.preset;
+  if (a.time_by != "gpu") c += " --time-by " + a.time_by;
+  if (!a.only.empty()) {
+    c += " --only ";
+    for (size_t i = 0; i < a.only.size(); ++i) c += (i ? "," : "") + a.only[i];
+  }
+  if (a.backend != "auto") c += " --backend " + a.backend;
+  if (a.no_specialize) c += " --no-specialize";
+  return c;
+}
+
+}  // namespace
+
+int run_sweep_command(const SweepArgs& a) {
+  const Backend backend = parse_backend(a.backend);
+  AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}, parse_allow_include(a.allow_include)};
+  // The shader render and bench build: specialized to the scene (and each row's quality).
+  opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
+  const LoadedInput in = load_input(a.input, {}, opts);
+  if (in.shadertoy)
+    fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
+               "wrap the map in a scene .toml");
+  SweepSettings s;
+  const ImageSize size = parse_size_flag(a.size);
+  s.width = size.width;
+  s.height = size.height;
+  check_range(a.frames, 1, 10000, "--frames");
+  check_range(a.warmup, 0, 10000, "--warmup");
+  check_range(a.rounds, 1, 100, "--rounds");
+  check_range(a.spp, 1, 1024, "--spp");
+  check_range(a.ref_spp, 1, 1024, "--ref-spp");
+  s.frames = a.frames;
+  s.warmup = a.warmup;
+  s.rounds = a.rounds;
+  s.spp = a.spp;
+  s.ref_spp = a.ref_spp;
+  s.grid = parse_sweep_grid(a.grid);
+  s.clock = parse_sweep_clock(a.time_by);
+  s.time = in.scene.render.time;
+
+  std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.preset);
+  if (!a.only.empty()) {
+    std::vector<SweepConfig> kept;
+    for (const std::string& name : a.only) {
+      const auto it = std::find_if(configs.begin(), configs.end(), [&](const SweepConfig& c) { return c.name == name; });
+      if (it == configs.end())
+        fail_input("no row '" + name + "' in the " + a.grid + " grid", {}, 0, "--only",
+                   "row names are in the first column of the CSV, e.g. textbook, balanced, omega=1.5");
+      kept.push_back(*it);
+    }
+    configs = std::move(kept);
+  }
+  // Outputs are checked before any work: the directory is made if missing.
+  const fs::path dir(a.out);
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec) && !fs::create_directory(dir, ec))
+    fail_input("cannot create the output directory", a.out, 0, "--out", ec ? ec.message() : "");
+  const std::string stem = in.scene.name.empty() ? fs::path(a.input).stem().string() : in.scene.name;
+  const fs::path csv = dir / (stem + ".sweep.csv"), json = dir / (stem + ".sweep.json"),
+                 png = dir / (stem + ".sweep.png");
+  check_output_path(png);
+
+  // Cold, repeatable compile times, as bench (the driver reads these at context creation).
+  ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+  ::setenv("__GL_SHADER_DISK_CACHE", "0", 1);
+  std::unique_ptr<Context> ctx = create_headless_context(backend);
+  const Scene posed = animated(in.scene, s.time);
+  const size_t n = configs.size();
+  const SweepResult r = run_sweep(*ctx, posed, configs, opts, s, [&](size_t i, const std::string& name) {
+    if (a.quiet) return;
+    if (i == 0) std::fprintf(stderr, "sweep: %s\n", name.c_str());
+    else std::fprintf(stderr, "sweep: [%zu/%zu] %s\n", i, n, name.c_str());
+  });
+
+  const SweepSubject subject{a.input, in.scene.name, command_line(a), specialization_name(opts.specialize)};
+  write_text(csv, sweep_csv(r));
+  write_text(json, sweep_json(subject, s, r));
+  const SweepPlot plot = plot_sweep(r, in.scene.name + ", " + a.size + ", " + r.gl_renderer);
+  write_image(plot.image, png);
+  if (!plot.has_text && !a.quiet)
+    std::fprintf(stderr, "sweep: no usable font for the plot's labels; drawn without text\n");
+  std::fputs(sweep_table(subject, s, r).c_str(), stdout);
+  std::printf("\nwrote %s, %s, %s\n", csv.string().c_str(), json.string().c_str(), png.string().c_str());
+  return 0;
+}
+
+}  // namespace ms

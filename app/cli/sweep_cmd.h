@@ -1,0 +1,36 @@
+// `marchstudio sweep SCENE`: frame time against error over a grid of quality
+// settings, written as CSV, JSON and a plot (docs/speed-vs-error.md).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace ms {
+
+struct SweepArgs {
+  std::string input;          // a scene .toml with an SDF map
+  std::string size = "640x360";
+  int frames = 5;
+  int rounds = 3;
+  int warmup = 1;
+  int spp = 1;
+  int ref_spp = 16;
+  std::string grid = "quick";
+  std::string time_by = "gpu";      // the clock of the fronts and the plot
+  std::vector<std::string> only;    // row names to keep (empty: the whole grid)
+  std::string preset = "balanced";  // the rows vary the settings around this preset
+  std::string out = ".";            // directory for <scene>.sweep.{csv,json,png}
+  std::string backend = "auto";
+  std::string shader_dir;
+  std::vector<std::string> allow_include;
+  bool quiet = false;
+  bool no_specialize = false;       // time the generic shader, as bench --no-specialize
+};
+
+CLI::App* add_sweep_command(CLI::App& app, SweepArgs& args);
+int run_sweep_command(const SweepArgs& args);
+
+}  // namespace ms

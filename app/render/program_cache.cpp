@@ -1,0 +1,24 @@
+#include "render/program_cache.h"
+
+#include "shader/specialize.h"
+
+namespace ms {
+
+std::shared_ptr<const Program> ProgramCache::get(const std::string& vertex, const ShaderSource& fragment, bool* hit) {
+  const std::uint64_t key = program_key(vertex, fragment.text);
+  for (auto it = entries_.begin(); it != entries_.end(); ++it) {
+    if (it->key != key || it->vertex != vertex || it->fragment != fragment.text) continue;
+    entries_.splice(entries_.begin(), entries_, it);  // now the most recent
+    ++hits_;
+    if (hit) *hit = true;
+    return entries_.front().program;
+  }
+  auto program = std::make_shared<const Program>(vertex, fragment);  // throws on a compile error
+  ++misses_;
+  if (hit) *hit = false;
+  entries_.push_front(Entry{key, vertex, fragment.text, program});
+  if (entries_.size() > capacity_) entries_.pop_back();  // a caller may still hold it: shared_ptr
+  return program;
+}
+
+}  // namespace ms

@@ -1,0 +1,69 @@
+#include "render/tiles.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "core/error.h"
+#include "render/aov.h"
+
+namespace ms {
+
+std::vector<Tile> split_tiles(int width, int height, int max_side) {
+  std::vector<Tile> tiles;
+  if (width <= 0 || height <= 0) return tiles;
+  if (max_side <= 0) max_side = std::max(width, height);
+  // Equal shares rather than max_side and a sliver: 1100 -> 367+367+366.
+  const int nx = (width + max_side - 1) / max_side, ny = (height + max_side - 1) / max_side;
+  for (int j = 0; j < ny; ++j) {
+    const int y0 = static_cast<int>(static_cast<long long>(height) * j / ny);
+    const int y1 = static_cast<int>(static_cast<long long>(height) * (j + 1) / ny);
+    for (int i = 0; i < nx; ++i) {
+      const int x0 = static_cast<int>(static_cast<long long>(width) * i / nx);
+      const int x1 = static_cast<int>(static_cast<long long>(width) * (i + 1) / nx);
+      tiles.push_back({x0, y0, x1 - x0, y1 - y0});
+    }
+  }
+  return tiles;
+}
+
+FrameMemory frame_memory(int width, int height, int gpu_targets, bool aovs, int host_frames) {
+  const double px = static_cast<double>(width) * height;
+  FrameMemory m;
+  m.aovs = aovs;
+  m.gpu_bytes = 16.0 * gpu_targets * px;  // RGBA32F
+  // Read back: the colour as float RGBA, its 8-bit (or float) encoding for
+  // the writer; with AOVs one attachment at a time, the AOV image and the
+  // colour+AOV image that is written.
+  const double nch = static_cast<double>(kAovChannels.size());
+  m.host_bytes = 16.0 * px + 16.0 * px;
+  if (aovs) m.host_bytes += 16.0 * px + 4.0 * nch * px + 4.0 * (4.0 + nch) * px;
+  m.host_bytes *= std::max(host_frames, 1);
+  return m;
+}
+
+double frame_memory_budget() {
+  double budget = 4.0 * 1024 * 1024 * 1024;
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  if (pages > 0 && page > 0) budget = std::min(budget, 0.5 * static_cast<double>(pages) * static_cast<double>(page));
+  return budget;
+}
+
+void check_frame_memory(const FrameMemory& m, int width, int height) {
+  const double budget = frame_memory_budget();
+  if (m.total() <= budget) return;
+  fail_input("image size " + std::to_string(width) + "x" + std::to_string(height) + " needs " + format_bytes(m.total()) +
+                 " (" + format_bytes(m.gpu_bytes) + " of GPU buffers, " + format_bytes(m.host_bytes) +
+                 " of host copies), over the " + format_bytes(budget) + " memory budget",
+             {}, 0, "--size", m.aovs ? "render it smaller, or without --aov" : "render it smaller");
+}
+
+std::string format_bytes(double bytes) {
+  char buf[32];
+  if (bytes >= 1024.0 * 1024 * 1024) std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / (1024.0 * 1024 * 1024));
+  else std::snprintf(buf, sizeof buf, "%.0f MiB", bytes / (1024.0 * 1024));
+  return buf;
+}
+
+}  // namespace ms

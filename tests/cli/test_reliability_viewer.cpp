@@ -1,0 +1,213 @@
+// The viewer under hostile editing (docs/reliability.md), under Xvfb like
+// test_viewer.cpp: a shader deleted while watched, files replaced by
+// directories, a scene that includes itself, and 100 saves in one second.
+// Each time the viewer keeps running and ends up showing the final state.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <iostream>
+#include <regex>
+#include <thread>
+
+#include "io/image_io.h"
+#include "run.h"
+#include "test_viewer_util.h"
+
+namespace ms::test {
+namespace {
+namespace fs = std::filesystem;
+
+// A scene of its own (the shipped ones change with the tracer): a grey
+// floor and a ball of `radius` in material `mat`, both in map().
+const char* kScene = R"([scene]
+map = "seed.glsl"
+[camera]
+position = [0.0, 1.6, -5.0]
+target = [0.0, 0.8, 0.0]
+[render]
+width = 160
+height = 90
+tonemap = "aces"
+[[lights]]
+position = [4.0, 5.0, -1.5]
+intensity = 2.0
+[[materials]]
+name = "floor"
+color = [0.6, 0.6, 0.6]
+[[materials]]
+name = "ball"
+color = [0.85, 0.10, 0.06]
+)";
+
+// The map: a ball of `radius` in material `mat` on the floor.
+std::string map_glsl(const std::string& mat, const std::string& radius = "1.0", const std::string& prefix = "") {
+  return prefix +
+         "vec2 map(vec3 p) {\n"
+         "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
+         "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), " + radius + "), " + mat + ");\n"
+         "  return opUnion(ground, ball);\n"
+         "}\n";
+}
+
+class ViewerAttack : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    toml = kScene;
+    write_file(dir / "seed.toml", toml);
+    write_file(dir / "seed.glsl", map_glsl("MAT_FLOOR"));
+  }
+
+  void start() {
+    const std::string server = std::to_string(100 + (getpid() + 7919) % 20000);
+    proc = std::make_unique<BackgroundProcess>(
+        std::vector<std::string>{"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+                                 (dir / "seed.toml").string(), "--size", "160x90", "--paused", "--no-panel", "--log",
+                                 log().string(), "--capture-dir", (dir / "cap").string(), "--exit-after", "90"},
+        dir / "out.txt", dir / "err.txt");
+    ASSERT_TRUE(proc->started());
+    ASSERT_FALSE(wait_for_line(log(), "^reload ok 0 ", 30).empty()) << read_file(log()) << read_file(dir / "err.txt");
+    ASSERT_FALSE(wait_for_line(log(), "^capture 0 ", 10).empty());
+  }
+
+  fs::path log() const { return dir / "log.txt"; }
+  Image capture(int k) { return read_image(dir / "cap" / ("frame_" + std::to_string(k) + ".png")); }
+  std::string wait_reload(int k, double timeout = 20) {
+    const std::string line = wait_for_line(log(), "^reload (ok|failed) " + std::to_string(k) + " ", timeout);
+    EXPECT_FALSE(line.empty()) << "no reload " << k << "\n" << read_file(log()) << read_file(dir / "err.txt");
+    return line;
+  }
+  // The number of the last reload once none has come for `quiet_s`.
+  int settled_reload(double quiet_s, double timeout_s) {
+    int last = -1;
+    auto t_change = std::chrono::steady_clock::now();
+    const auto end = t_change + std::chrono::duration<double>(timeout_s);
+    while (std::chrono::steady_clock::now() < end) {
+      int k = -1;
+      for (const std::string& l : file_lines(log())) {
+        std::smatch m;
+        if (std::regex_search(l, m, std::regex("^reload (ok|failed) (\\d+) "))) k = std::stoi(m[2]);
+      }
+      if (k != last) {
+        last = k;
+        t_change = std::chrono::steady_clock::now();
+      } else if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t_change).count() >= quiet_s) {
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return last;
+  }
+  void expect_alive() {
+    EXPECT_TRUE(proc->running()) << read_file(dir / "err.txt");
+  }
+
+  TempDir dir;
+  std::string toml;
+  std::unique_ptr<BackgroundProcess> proc;
+};
+
+TEST_F(ViewerAttack, ShaderDeletedWhileWatchedThenRestored) {
+  start();
+  const Image grey = capture(0);
+  fs::remove(dir / "seed.glsl");
+  std::string line = wait_reload(1);
+  EXPECT_EQ(line.rfind("reload failed 1", 0), 0u) << line;
+  expect_alive();
+  // Restored (as an editor's "undo delete" would): the new content shows.
+  write_file(dir / "seed.glsl", map_glsl("MAT_BALL", "1.3"));
+  line = wait_reload(2);
+  ASSERT_EQ(line.rfind("reload ok 2", 0), 0u) << line;
+  ASSERT_FALSE(wait_for_line(log(), "^capture 2 ", 10).empty());
+  EXPECT_GT(redness(capture(2)), redness(grey) + 0.02);
+  expect_alive();
+}
+
+TEST_F(ViewerAttack, FilesReplacedByDirectories) {
+  start();
+  // The map becomes a directory of the same name.
+  fs::remove(dir / "seed.glsl");
+  fs::create_directory(dir / "seed.glsl");
+  EXPECT_FALSE(wait_for_line(log(), "^reload failed ", 20).empty()) << read_file(log());
+  expect_alive();
+  // The scene file too (moved away, a directory in its place).
+  fs::rename(dir / "seed.toml", dir / "seed.toml.bak");
+  fs::create_directory(dir / "seed.toml");
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  expect_alive();
+  // Both back as files: the final state shows.
+  fs::remove(dir / "seed.toml");
+  fs::rename(dir / "seed.toml.bak", dir / "seed.toml");
+  fs::remove(dir / "seed.glsl");
+  write_file(dir / "seed.glsl", map_glsl("MAT_BALL", "1.3"));
+  const int k = settled_reload(1.5, 20);
+  ASSERT_GT(k, 0);
+  const std::string last = wait_reload(k);
+  ASSERT_EQ(last.rfind("reload ok", 0), 0u) << read_file(log());
+  ASSERT_FALSE(wait_for_line(log(), "^capture " + std::to_string(k) + " ", 10).empty());
+  EXPECT_GT(redness(capture(k)), redness(capture(0)) + 0.02);
+  expect_alive();
+}
+
+TEST_F(ViewerAttack, ASceneThatIncludesItself) {
+  start();
+  // The map includes itself: an include cycle, reported at its line.
+  save_by_rename(dir / "seed.glsl", map_glsl("MAT_BALL", "1.0", "// self\n#include \"seed.glsl\"\n"));
+  std::string line = wait_reload(1);
+  EXPECT_EQ(line.rfind("reload failed 1", 0), 0u) << line;
+  EXPECT_NE(line.find("include cycle"), std::string::npos) << line;
+  EXPECT_NE(line.find("seed.glsl:2:"), std::string::npos) << line;
+  expect_alive();
+  // The scene names itself as its map: TOML compiled as GLSL fails cleanly.
+  std::string self = toml;
+  self.replace(self.find("\"seed.glsl\""), 11, "\"seed.toml\"");
+  save_by_rename(dir / "seed.toml", self);
+  line = wait_reload(2);
+  EXPECT_EQ(line.rfind("reload failed 2", 0), 0u) << line;
+  expect_alive();
+  // Both fixed.
+  save_by_rename(dir / "seed.toml", toml);
+  save_by_rename(dir / "seed.glsl", map_glsl("MAT_BALL", "1.3"));
+  const int k = settled_reload(1.5, 20);
+  ASSERT_GE(k, 3);
+  ASSERT_EQ(wait_reload(k).rfind("reload ok", 0), 0u) << read_file(log());
+  ASSERT_FALSE(wait_for_line(log(), "^capture " + std::to_string(k) + " ", 10).empty());
+  EXPECT_GT(redness(capture(k)), redness(capture(0)) + 0.02);
+  expect_alive();
+}
+
+TEST_F(ViewerAttack, AHundredSavesInOneSecondEndOnTheLast) {
+  start();
+  // The final state first, alone, as the reference image.
+  const std::string final_map = map_glsl("MAT_BALL", "1.3");
+  save_by_rename(dir / "seed.glsl", final_map);
+  ASSERT_EQ(wait_reload(1).rfind("reload ok 1", 0), 0u);
+  ASSERT_FALSE(wait_for_line(log(), "^capture 1 ", 10).empty());
+  const Image reference = capture(1);
+  save_by_rename(dir / "seed.glsl", map_glsl("MAT_FLOOR", "0.6"));
+  ASSERT_EQ(wait_reload(2).rfind("reload ok 2", 0), 0u);
+
+  // 100 saves in one second: renames, in-place rewrites and a broken file
+  // among them; the last one is the final state.
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 0; i < 100; ++i) {
+    const std::string text = i == 99   ? final_map
+                             : i % 7 == 3 ? "vec2 map(vec3 p) { broken"
+                                          : map_glsl(i % 2 ? "MAT_FLOOR" : "MAT_BALL", std::to_string(0.5 + 0.005 * i));
+    if (i % 3 == 0) write_file(dir / "seed.glsl", text);
+    else save_by_rename(dir / "seed.glsl", text);
+    std::this_thread::sleep_until(t0 + std::chrono::milliseconds(10 * (i + 1)));
+  }
+  const int k = settled_reload(2.0, 30);
+  ASSERT_GE(k, 3) << read_file(log());
+  const std::string last = wait_reload(k);
+  ASSERT_EQ(last.rfind("reload ok", 0), 0u) << last;
+  ASSERT_FALSE(wait_for_line(log(), "^capture " + std::to_string(k) + " ", 10).empty());
+  EXPECT_LT(mean_abs_diff(capture(k), reference), 1e-3) << "the last reload does not show the last save";
+  expect_alive();
+  std::cout << "[ storm ] 100 saves in " << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()
+            << " s (incl. settling): " << (k - 2) << " reloads\n";
+}
+
+}  // namespace
+}  // namespace ms::test

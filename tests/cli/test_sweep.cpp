@@ -1,0 +1,288 @@
+// marchstudio sweep through the real binary (its CSV, JSON and plot are well
+// formed and agree; the reference row has zero error against itself; bad
+// flags), plus its pure parts: the grid, the Pareto front, and the exact
+// reference (sphere recogniser, camera) against the tests' own CPU tracer.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "bench/sweep.h"
+#include "bench/sweep_exact.h"
+#include "bench/sweep_grid.h"
+#include "core/error.h"
+#include "cpu_tracer.h"
+#include "io/image_io.h"
+#include "run.h"
+#include "scene/load.h"
+
+namespace ms::test {
+namespace {
+
+using nlohmann::json;
+
+std::string scene(const std::string& name) { return (source_dir() / "scenes" / (name + ".toml")).string(); }
+
+std::vector<std::vector<std::string>> read_csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::string cell;
+    std::istringstream ls(line);
+    while (std::getline(ls, cell, ',')) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.push_back("");
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+// One small sweep of the seed, shared by the tests that read its output.
+class SeedSweep : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new TempDir;
+    result_ = new RunResult(run_marchstudio({"sweep", scene("seed"), "--size", "96x54", "--frames", "1", "--rounds",
+                                             "2", "--warmup", "0", "--time-by", "cpu", "--ref-spp", "4", "-q", "-o",
+                                             dir_->path().string()}));
+  }
+  static void TearDownTestSuite() {
+    delete result_;
+    delete dir_;
+  }
+  static TempDir* dir_;
+  static RunResult* result_;
+};
+TempDir* SeedSweep::dir_ = nullptr;
+RunResult* SeedSweep::result_ = nullptr;
+
+TEST_F(SeedSweep, WritesCsvJsonAndPlotThatAgree) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  EXPECT_EQ(result_->err, "");  // -q
+  const json j = json::parse(read_file(*dir_ / "seed.sweep.json"));
+  EXPECT_EQ(j.at("schema"), "marchstudio.sweep/1");
+  EXPECT_EQ(j.at("settings").at("width"), 96);
+  EXPECT_EQ(j.at("default_preset"), "balanced");
+  EXPECT_EQ(j.at("settings").at("time_by"), "cpu");
+  EXPECT_EQ(j.at("settings").at("specialize"), "folded");  // the shader render and bench build
+  EXPECT_FALSE(j.at("machine").at("gl_renderer").get<std::string>().empty());
+  // The reference settings are in the output.
+  const json& ref = j.at("references");
+  EXPECT_EQ(ref.at("same_spp").at("spp"), 1);
+  EXPECT_EQ(ref.at("supersampled").at("spp"), 4);
+  EXPECT_EQ(ref.at("same_spp").at("quality").at("omega"), 1.0);
+  EXPECT_GE(ref.at("same_spp").at("quality").at("max_steps").get<int>(), 1000);
+  EXPECT_EQ(ref.at("exact").at("status"), "available");  // the seed is a sphere and a plane
+
+  const auto csv = read_csv(read_file(*dir_ / "seed.sweep.csv"));
+  const json& rows = j.at("rows");
+  ASSERT_EQ(csv.size(), rows.size() + 1);
+  const std::vector<std::string>& header = csv[0];
+  for (const auto& line : csv) EXPECT_EQ(line.size(), header.size());
+  std::set<std::string> names;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(csv[i + 1][0], rows[i].at("name").get<std::string>());
+    names.insert(rows[i].at("name").get<std::string>());
+    const json& t = rows[i].at("time_ms");
+    EXPECT_GT(t.at("wall").get<double>(), 0.0);
+    EXPECT_GT(t.at("cpu").get<double>(), 0.0);
+    EXPECT_EQ(t.at("front").get<double>(), t.at("cpu").get<double>()) << "--time-by cpu";
+    EXPECT_LE(t.at("wall").get<double>(), t.at("wall_median_all").get<double>() + 1e-9) << "best round <= all";
+  }
+  EXPECT_EQ(names.size(), rows.size()) << "row names must be unique";
+  for (const char* n : {"textbook", "fast", "balanced", "reference"}) EXPECT_TRUE(names.count(n)) << n;
+  // Every axis of the issue is in the quick grid.
+  std::set<std::string> axes;
+  for (const json& r : rows) axes.insert(r.at("axis").get<std::string>());
+  for (const char* a : {"max_steps", "tolerance", "omega", "geometry", "max_distance", "shadow", "ao_taps", "bounces",
+                        "normal_eps"})
+    EXPECT_TRUE(axes.count(a)) << a;
+
+  const Image plot = read_image(*dir_ / "seed.sweep.png");
+  EXPECT_GT(plot.width, 500);
+  EXPECT_GT(plot.height, 300);
+  EXPECT_NE(result_->out.find("textbook"), std::string::npos) << result_->out;
+}
+
+TEST_F(SeedSweep, ReferenceRowHasZeroErrorAgainstItself) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  const json j = json::parse(read_file(*dir_ / "seed.sweep.json"));
+  bool found = false;
+  for (const json& r : j.at("rows")) {
+    const json& e = r.at("error").at("same_spp");
+    if (r.at("name") == "reference") {
+      found = true;
+      EXPECT_TRUE(e.at("psnr").is_null()) << "identical images have PSNR +inf, written as null";
+      EXPECT_EQ(e.at("mae").get<double>(), 0.0);
+      EXPECT_EQ(e.at("depth_mean").get<double>(), 0.0);
+      EXPECT_EQ(e.at("depth_max").get<double>(), 0.0);
+      EXPECT_EQ(e.at("misclassified").get<double>(), 0.0);
+      EXPECT_TRUE(r.at("pareto").at("same_spp").get<bool>());
+      // Against exact intersection the converged reference is close: the
+      // depth where every sample of both hit, within a few tolerances.
+      EXPECT_LT(r.at("error").at("exact").at("misclassified").get<double>(), 0.01);
+    } else {
+      EXPECT_FALSE(e.at("psnr").is_null()) << r.at("name") << " is identical to the reference?";
+      EXPECT_GT(e.at("mae").get<double>(), 0.0) << r.at("name");
+    }
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST_F(SeedSweep, TextbookIsSlowerInStepsAndWorseThanBalanced) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  const json j = json::parse(read_file(*dir_ / "seed.sweep.json"));
+  json textbook, balanced;
+  for (const json& r : j.at("rows")) {
+    if (r.at("name") == "textbook") textbook = r;
+    if (r.at("name") == "balanced") balanced = r;
+  }
+  ASSERT_FALSE(textbook.is_null() || balanced.is_null());
+  // Deterministic figures only (times are not tested): steps and error.
+  EXPECT_GT(textbook.at("cost").at("mean_steps").get<double>(), 10 * balanced.at("cost").at("mean_steps").get<double>());
+  EXPECT_EQ(textbook.at("quality").at("hit_tolerance"), 0.0);
+  EXPECT_FALSE(textbook.at("quality").at("bounds").get<bool>());
+  EXPECT_FALSE(textbook.at("quality").at("analytic_planes").get<bool>());
+}
+
+TEST(Sweep, SceneWithoutExactReferenceSaysWhy) {
+  TempDir dir;
+  const RunResult r =
+      run_marchstudio({"sweep", scene("stilllife"), "--size", "32x18", "--frames", "1", "--warmup", "0", "--ref-spp",
+                       "2", "--only", "textbook,balanced", "-q", "-o", dir.path().string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(read_file(dir / "stilllife.sweep.json"));
+  EXPECT_EQ(j.at("rows").size(), 2u);  // --only
+  const std::string status = j.at("references").at("exact").at("status");
+  EXPECT_NE(status, "available");
+  EXPECT_FALSE(status.empty());
+  for (const json& row : j.at("rows")) EXPECT_TRUE(row.at("error").at("exact").is_null());
+}
+
+TEST(Sweep, BadInputExitsTwo) {
+  TempDir dir;
+  for (const std::vector<std::string>& extra :
+       {std::vector<std::string>{"--grid", "huge"}, {"--frames", "0"}, {"--size", "0x10"}, {"--ref-spp", "2000"},
+        {"--preset", "fastest"}, {"--only", "balanced,nonsense"}, {"--time-by", "sundial"}, {"--rounds", "0"}}) {
+    std::vector<std::string> args = {"sweep", scene("seed"), "-q", "-o", dir.path().string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const RunResult r = run_marchstudio(args);
+    EXPECT_EQ(r.exit_code, 2) << extra[0] << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  const RunResult st = run_marchstudio(
+      {"sweep", (source_dir() / "tests/data/shader/shadertoy/ok.glsl").string(), "-q", "-o", dir.path().string()});
+  EXPECT_EQ(st.exit_code, 2) << st.err;
+  EXPECT_TRUE(dir.entries().empty()) << "bad input leaves nothing behind";
+}
+
+TEST(SweepGrid, CoversEveryAxisWithoutRepeats) {
+  const Scene seed = load_scene(scene("seed"));
+  const auto quick = sweep_grid(seed.quality, SweepGrid::quick);
+  const auto full = sweep_grid(seed.quality, SweepGrid::full);
+  EXPECT_GT(full.size(), quick.size() + 20);
+  EXPECT_LT(full.size(), 120u) << "a full sweep must stay a few minutes on llvmpipe";
+  EXPECT_EQ(quick[0].name, "textbook");
+  const Quality& t = quick[0].quality;
+  EXPECT_EQ(t.max_steps, 255);
+  EXPECT_EQ(t.hit_tolerance, 0.0f);
+  EXPECT_EQ(t.hit_epsilon, 1e-4f);
+  EXPECT_EQ(t.max_distance, 100.0f);
+  EXPECT_EQ(t.omega, 1.0f);
+  EXPECT_FALSE(t.bounds || t.analytic_planes);
+  std::set<std::string> names;
+  for (const SweepConfig& c : full) EXPECT_TRUE(names.insert(c.name).second) << c.name;
+  EXPECT_THROW(parse_sweep_grid("medium"), Error);
+}
+
+TEST(SweepGrid, BaselineAndReferenceIgnoreTheScenesTracerKeys) {
+  Quality scene_q;
+  scene_q.max_steps = 40;
+  scene_q.ao_taps = 7;
+  scene_q.explicit_keys = {"max_steps", "ao_taps"};
+  EXPECT_EQ(sweep_preset_quality(scene_q, "textbook").max_steps, 255);
+  EXPECT_EQ(sweep_preset_quality(scene_q, "textbook").ao_taps, 7);  // shading stays the scene's
+  EXPECT_EQ(sweep_preset_quality(scene_q, "balanced").max_steps, 40);
+}
+
+TEST(SweepPareto, MarksTheRowsNoOtherBeats) {
+  SweepResult r;
+  auto row = [&](const char* name, double ms, double psnr) {
+    SweepRow x;
+    x.config.name = name;
+    x.gpu_best_median = ms;
+    x.same_spp.psnr = psnr;
+    x.supersampled.psnr = psnr;
+    r.rows.push_back(x);
+  };
+  row("fast-bad", 1, 20);
+  row("slow-bad", 5, 20);   // beaten by fast-bad
+  row("mid", 2, 30);
+  row("ref", 10, INFINITY);
+  row("tie", 2, 30);        // equal to mid: neither beats the other
+  mark_pareto(r);
+  std::vector<bool> want = {true, false, true, true, true};
+  for (size_t i = 0; i < want.size(); ++i) EXPECT_EQ(r.rows[i].pareto_same_spp, want[i]) << r.rows[i].config.name;
+}
+
+TEST(SweepExact, RecognisesUnionsOfConstantSpheresOnly) {
+  std::vector<Material> mats(2);
+  mats[0].name = "floor";
+  mats[1].name = "Ball";
+  std::string why;
+  const auto one = parse_sphere_map(read_file(source_dir() / "scenes/seed.glsl"), mats, &why);
+  ASSERT_TRUE(one) << why;
+  ASSERT_EQ(one->size(), 1u);
+  EXPECT_EQ((*one)[0].center, glm::dvec3(0.0, 1.0, 0.0));
+  EXPECT_EQ((*one)[0].radius, 1.0);
+  EXPECT_EQ((*one)[0].material, 1);
+  const auto two = parse_sphere_map(
+      "// two\nvec2 map(vec3 p) {\n  vec2 a = vec2(sdSphere(p, 0.5), MAT_FLOOR); /* origin */\n"
+      "  vec2 b = vec2(sdSphere(p - vec3(-1.0, 2.5e0, 3.), 2.0), MAT_BALL);\n  return opUnion(a, b);\n}\n",
+      mats, &why);
+  ASSERT_TRUE(two) << why;
+  ASSERT_EQ(two->size(), 2u);
+  EXPECT_EQ((*two)[1].center, glm::dvec3(-1.0, 2.5, 3.0));
+  for (const char* bad : {
+           "vec2 map(vec3 p) { return vec2(sdBox(p, vec3(1.0)), MAT_BALL); }",
+           "vec2 map(vec3 p) { return vec2(sdSphere(p - vec3(0.0, uTime, 0.0), 1.0), MAT_BALL); }",
+           "vec2 map(vec3 p) { return vec2(sdSphere(p, 1.0), MAT_NOPE); }",
+           "float k = 2.0; vec2 map(vec3 p) { return vec2(sdSphere(p, k), MAT_BALL); }",
+           "vec2 map(vec3 p) { return opSmoothUnion(vec2(sdSphere(p, 1.0), MAT_BALL), vec2(sdSphere(p, 2.0), MAT_BALL), 0.1); }",
+       }) {
+    why.clear();
+    EXPECT_FALSE(parse_sphere_map(bad, mats, &why)) << bad;
+    EXPECT_FALSE(why.empty()) << bad;
+  }
+  const Scene columns = load_scene(scene("columns"));
+  EXPECT_FALSE(exact_reference(columns, 8, 8, 100.0, &why));
+}
+
+// The exact reference's camera and intersections against the tests' own
+// (tests/cli/cpu_tracer.h), pixel by pixel.
+TEST(SweepExact, AgreesWithTheTestsCpuIntersection) {
+  constexpr int W = 48, H = 27;
+  const Scene seed = load_scene(scene("seed"));
+  std::string why;
+  const auto x = exact_reference(seed, W, H, 100.0, &why);
+  ASSERT_TRUE(x) << why;
+  int hits = 0;
+  for (int y = 0; y < H; ++y)
+    for (int px = 0; px < W; ++px) {
+      const ExactHit e = exact_seed_hit(cpu_camera_ray(seed.camera, W, H, px, y), 100.0);
+      const size_t i = static_cast<size_t>(y) * W + px;
+      ASSERT_EQ(static_cast<bool>(x->hit[i]), e.hit) << px << "," << y;
+      if (e.hit) EXPECT_NEAR(x->t[i], e.t, 1e-5 * e.t) << px << "," << y;
+      hits += e.hit;
+    }
+  EXPECT_GT(hits, W * H / 3);
+  EXPECT_LT(hits, W * H);
+}
+
+}  // namespace
+}  // namespace ms::test

@@ -1,0 +1,3 @@
+int main = 1;
+void  main  (){}
+void mainImage(

@@ -1,0 +1,2 @@
+/* void main() { } */
+void mainImage(out vec4 c, in vec2 f) { c = vec4(0); }

@@ -1,0 +1,2 @@
+#include "/etc/passwd"
+void mainImage(out vec4 c, in vec2 f) {}

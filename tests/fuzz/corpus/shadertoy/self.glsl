@@ -1,0 +1,2 @@
+#include "shader.glsl"
+void mainImage(out vec4 c, in vec2 f) {}
