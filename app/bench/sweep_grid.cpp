@@ -75,12 +75,12 @@ std::vector<SweepConfig> sweep_grid(const Quality& scene, SweepGrid grid, const 
   };
 
   for (int s : {32, 64, 128}) vary("max_steps", "steps=" + num(s), [&](Quality& q) { q.max_steps = s; });
-  for (float f : {0.0f, 0.1f, 0.25f, 0.5f, 1.0f, 2.0f})
+  for (float f : {0.0f, 0.05f, 0.1f, 0.25f, 0.5f, 1.0f})
     vary("tolerance", "tol=" + tolerance_label(f), [&](Quality& q) {
       q.hit_tolerance = f;
       q.hit_epsilon = 1e-4f;
     });
-  for (float w : {1.0f, 1.5f, 1.8f}) vary("omega", "omega=" + num(w), [&](Quality& q) { q.omega = w; });
+  for (float w : {1.2f, 1.5f, 1.8f}) vary("omega", "omega=" + num(w), [&](Quality& q) { q.omega = w; });
   vary("geometry", "no-bounds", [](Quality& q) { q.bounds = false; });
   vary("geometry", "planes-marched", [](Quality& q) { q.analytic_planes = false; });
   vary("geometry", "marched", [](Quality& q) { q.bounds = q.analytic_planes = false; });
@@ -97,7 +97,7 @@ std::vector<SweepConfig> sweep_grid(const Quality& scene, SweepGrid grid, const 
   if (grid == SweepGrid::full) {
     for (bool analytic : {false, true})
       for (int s : {64, 128, 255})
-        for (float f : {0.0f, 0.5f, 1.0f})
+        for (float f : {0.02f, 0.25f, 1.0f})
           for (float w : {1.0f, 1.25f, 1.5f}) {
             const std::string label = "steps=" + num(s) + " tol=" + tolerance_label(f) + " omega=" + num(w) +
                                       (analytic ? " analytic" : " marched");

@@ -104,10 +104,6 @@ int run_sweep_command(const SweepArgs& a) {
   AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}, parse_allow_include(a.allow_include)};
   // The shader render and bench build: specialized to the scene (and each row's quality).
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  const LoadedInput in = load_input(a.input, {}, opts);
-  if (in.shadertoy)
-    fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
-               "wrap the map in a scene .toml");
   SweepSettings s;
   const ImageSize size = parse_size_flag(a.size);
   s.width = size.width;
@@ -124,6 +120,10 @@ int run_sweep_command(const SweepArgs& a) {
   s.ref_spp = a.ref_spp;
   s.grid = parse_sweep_grid(a.grid);
   s.clock = parse_sweep_clock(a.time_by);
+  const LoadedInput in = load_input(a.input, {}, opts);
+  if (in.shadertoy)
+    fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
+               "wrap the map in a scene .toml");
   s.time = in.scene.render.time;
 
   std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.preset);
