@@ -75,6 +75,8 @@ class ViewerAttack : public ::testing::Test {
   std::string wait_reload(int k, double timeout = 20) {
     const std::string line = wait_for_line(log(), "^reload (ok|failed) " + std::to_string(k) + " ", timeout);
     EXPECT_FALSE(line.empty()) << "no reload " << k << "\n" << read_file(log()) << read_file(dir / "err.txt");
+    // For docs/reliability.md: what the viewer said about each attack.
+    if (line.rfind("reload failed", 0) == 0) std::cout << "[ attack ] " << line.substr(line.find(" -- ") + 4) << "\n";
     return line;
   }
   // The number of the last reload once none has come for `quiet_s`.
@@ -128,7 +130,9 @@ TEST_F(ViewerAttack, FilesReplacedByDirectories) {
   // The map becomes a directory of the same name.
   fs::remove(dir / "seed.glsl");
   fs::create_directory(dir / "seed.glsl");
-  EXPECT_FALSE(wait_for_line(log(), "^reload failed ", 20).empty()) << read_file(log());
+  const std::string failed = wait_for_line(log(), "^reload failed ", 20);
+  EXPECT_FALSE(failed.empty()) << read_file(log());
+  if (!failed.empty()) std::cout << "[ attack ] " << failed.substr(failed.find(" -- ") + 4) << "\n";
   expect_alive();
   // The scene file too (moved away, a directory in its place).
   fs::rename(dir / "seed.toml", dir / "seed.toml.bak");
