@@ -146,6 +146,24 @@ vec2 boundsInterval(vec3 o, vec3 d, float pad) {
 #endif
 }
 
+// True when the ray o + t d (unit d, t >= 0) can hit nothing: it meets no
+// analytic plane before MAX_DIST and misses the bounding volume. Exactly the
+// rays trace() returns as misses without a step; false without bounds.
+bool rayEscapes(vec3 o, vec3 d) {
+#if MS_BOUNDS
+  float tEnd = float(MAX_DIST);
+  int mat;
+  vec3 n;
+#if MS_ANALYTIC_PLANES
+  if (intersectPlanes(o, d, 0.0, tEnd, mat, n)) return false;
+#endif
+  vec2 bi = boundsInterval(o, d, 0.0);
+  return max(bi.x, 0.0) > min(bi.y, tEnd);
+#else
+  return false;
+#endif
+}
+
 // How far beyond the bounds a shadow ray from ro, up to tmax, can still see
 // a penumbra from a light of sharpness k. The field is at least the
 // distance h to the bounds, and the estimator stays at 1 while

@@ -133,6 +133,14 @@ bool traceSegment(int seg, inout Ray ray, inout vec3 radiance, inout vec3 throug
   ray.dOdy = dPdy;
   ray.dDdx = reflect(ray.dDdx, n);
   ray.dDdy = reflect(ray.dDdy, n);
+  // A reflected ray that can hit nothing sees the sky: add it here and end
+  // the path. Same radiance as tracing it, but a block of pixels whose rays
+  // all escape leaves the segment loop instead of running the whole segment
+  // body again (SIMD lanes, and llvmpipe, pay for a body any lane runs).
+  if (rayEscapes(ray.o, ray.d)) {
+    radiance += throughput * skyColor(ray.d);
+    return false;
+  }
   return true;
 #else
   radiance += throughput * local;
