@@ -190,8 +190,12 @@ void main() {
   int primarySteps;  // kept for the step-count AOV
   vec3 c = renderSample(floor(gl_FragCoord.xy) + uJitter, primarySteps);
   // Last line of defence: the pipeline guards its divisions, but a user map()
-  // may not; a NaN would poison the whole accumulation buffer.
-  if (notFinite(c)) c = vec3(0.0);
+  // may not; a NaN would poison the whole accumulation buffer. The sample is
+  // zeroed but flagged, so the host's NaN/Inf guard (render/bench --strict)
+  // still sees it: a negative colour alpha (post.frag turns the pixel NaN),
+  // or with AOVs a NaN depth.
+  bool nonFinite = notFinite(c);
+  if (nonFinite) c = vec3(0.0);
 #if DEBUG_VIEW
   c = debugViewColor(primarySteps);
 #endif
@@ -199,11 +203,11 @@ void main() {
   // Alpha carries hit coverage here (post ignores the accumulated alpha and
   // writes 1), so accumulated alpha / spp = the fraction of samples that hit.
   outColor = vec4(max(c, vec3(0.0)), msPrimary.hit ? 1.0 : 0.0);
-  outGeom = vec4(msPrimary.depth, msPrimary.n);
+  outGeom = vec4(nonFinite ? uintBitsToFloat(0x7fc00000u) : msPrimary.depth, msPrimary.n);
   outMisc = vec4(float(primarySteps), float(msPrimary.mat), msPrimary.shadow, msPrimary.ao);
   outCost = vec4(float(msShadowSteps), float(msPrimary.reflSteps), float(msSdfEvals),
                  msPrimary.capped ? 1.0 : 0.0);
 #else
-  outColor = vec4(max(c, vec3(0.0)), 1.0);
+  outColor = vec4(max(c, vec3(0.0)), nonFinite ? -1.0 : 0.0);  // post ignores alpha but its sign
 #endif
 }

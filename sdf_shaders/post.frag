@@ -33,7 +33,14 @@ vec3 encodeSrgb(vec3 c) {
 }
 
 void main() {
-  vec3 c = texelFetch(uAccum, ivec2(gl_FragCoord.xy), 0).rgb * uInvSamples;
+  vec4 acc = texelFetch(uAccum, ivec2(gl_FragCoord.xy), 0);
+  // A negative alpha: main.frag zeroed a NaN/Inf sample here. Keep the pixel
+  // NaN so the host's guard counts it (render/bench --strict).
+  if (acc.a < 0.0) {
+    outColor = vec4(uintBitsToFloat(0x7fc00000u));
+    return;
+  }
+  vec3 c = acc.rgb * uInvSamples;
   c = max(c * uExposure, vec3(0.0));
 #if ENCODE_SRGB
 #if TONEMAP == 1

@@ -70,7 +70,7 @@ struct Material {
 uniform Material uMaterials[NUM_MATERIALS];
 #endif
 
-layout(location = 0) out vec4 outColor;   // linear HDR radiance of this sample; alpha = 1
+layout(location = 0) out vec4 outColor;   // linear HDR radiance of this sample; alpha: main.frag
 
 // ---- library tunables: not in the contract; defaults unless #defined before this file ----
 #ifndef NORMAL_EPS_MIN

@@ -35,9 +35,9 @@ struct TraceResult {
 // relaxed step that would leave the interval is taken plain, so nothing near
 // its end is skipped.
 //
-// Running out of MAX_STEPS inside the interval counts as a hit at the last t:
-// such rays graze a surface, and calling them misses would punch sky-coloured
-// holes into it.
+// Running out of MAX_STEPS inside the interval counts as a hit at the last t
+// when the field there is below one pixel footprint: such rays graze a
+// surface, and calling them misses would punch sky-coloured holes into it.
 TraceResult trace(Ray r, float tmin) {
   float w0 = max(length(perpTo(r.dOdx, r.d)), length(perpTo(r.dOdy, r.d)));
   float spread = max(length(r.dDdx), length(r.dDdy));
@@ -94,8 +94,13 @@ TraceResult trace(Ray r, float tmin) {
   }
   MS_COUNT_SDF(res.steps);  // one map() per step
 
-  if (res.hit || res.capped || !planeHit) {
-    res.hit = res.hit || res.capped;  // budget spent close to a surface
+  // A capped ray is a hit only within a pixel footprint of a surface (a
+  // grazing ray still converging); one capped far from any (a ray rising
+  // slowly off a plane near the horizon) is not, or it paints ground into
+  // the sky (docs/stability.md, grazing).
+  bool nearSurface = res.hit || (res.capped && h.x < max(float(HIT_EPSILON), w0 + t * spread));
+  if (nearSurface || !planeHit) {
+    res.hit = nearSurface;  // budget spent close to a surface
     res.t = min(t, float(MAX_DIST));
     res.d = h.x;
     res.mat = clamp(int(h.y + 0.5), 0, NUM_MATERIALS - 1);

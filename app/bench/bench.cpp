@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 
 #include "core/error.h"
@@ -40,6 +41,19 @@ void check_bench_settings(const BenchSettings& s) {
   if (s.frames < 1 || s.frames > 100000) fail_input("--frames must be in 1..100000", {}, 0, "--frames");
   if (s.warmup < 0 || s.warmup > 100000) fail_input("--warmup must be in 0..100000", {}, 0, "--warmup");
   if (s.spp < 1 || s.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
+}
+
+long long count_nonfinite_pixels(const Image& a, const Image* b) {
+  const size_t n = static_cast<size_t>(a.width) * static_cast<size_t>(a.height);
+  auto bad = [](const Image& img, size_t p) {
+    const size_t c = img.channels.size();
+    for (size_t i = 0; i < c; ++i)
+      if (!std::isfinite(img.pixels[p * c + i])) return true;
+    return false;
+  };
+  long long count = 0;
+  for (size_t p = 0; p < n; ++p) count += bad(a, p) || (b && !b->pixels.empty() && bad(*b, p));
+  return count;
 }
 
 BenchCost measure_cost(const Image& aovs) {
@@ -117,7 +131,9 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const ShaderSource
   cp.spp = 1;
   cp.aovs = true;
   renderer.draw(count_prog, uniforms_at(s.width, s.height), post_prog, cp);
-  r.cost = measure_cost(renderer.read_aovs());
+  const Image aovs = renderer.read_aovs(), colour = renderer.read_color();
+  r.cost = measure_cost(aovs);
+  r.cost.nonfinite_pixels = count_nonfinite_pixels(colour, &aovs);
   return r;
 }
 

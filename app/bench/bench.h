@@ -37,7 +37,12 @@ struct BenchCost {
   CountStats sdf_evals;         // every map() call: trace, normals, shadows, AO, reflections
   double step_cap_fraction = 0; // primary ray ran out of MAX_STEPS (neither converged nor escaped)
   double hit_fraction = 0;      // primary ray hit a surface
+  long long nonfinite_pixels = 0;  // pixels with NaN/Inf in any channel of the counting pass (colour or AOV)
 };
+
+// Pixels of `a` (and of `b`, same size, when given) with a NaN or Inf in
+// any channel: the NaN/Inf guard of render and bench (docs/stability.md).
+long long count_nonfinite_pixels(const Image& a, const Image* b = nullptr);
 
 // Cost from FrameRenderer::read_aovs() of a spp-1 AOV frame (channels
 // steps, shadow_steps, reflection_steps, sdf_evals, step_cap, hit).

@@ -48,7 +48,8 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
                {"reflection_steps", to_json(c.reflection_steps)},
                {"sdf_evals", to_json(c.sdf_evals)},
                {"step_cap_fraction", c.step_cap_fraction},
-               {"hit_fraction", c.hit_fraction}};
+               {"hit_fraction", c.hit_fraction},
+               {"nonfinite_pixels", c.nonfinite_pixels}};
   return j.dump(2) + "\n";
 }
 
@@ -86,6 +87,8 @@ std::string bench_table(const BenchSubject& subject, const BenchSettings& s, con
   row("sdf evaluations", c.sdf_evals);
   std::snprintf(buf, sizeof buf, "  step-cap pixels    %13.3f%%\n  hit pixels         %13.1f%%\n",
                 100.0 * c.step_cap_fraction, 100.0 * c.hit_fraction);
+  out += buf;
+  std::snprintf(buf, sizeof buf, "  NaN/Inf pixels     %13lld\n", c.nonfinite_pixels);
   out += buf;
   return out;
 }

@@ -40,6 +40,9 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
       ->check(CLI::IsMember({"shadows", "reflections", "ao", "checker-filter"}));
   cmd->add_option("--allow-include", a.allow_include,
                   "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
+  cmd->add_flag("--strict", a.strict,
+                "Fail (exit 1) when any pixel of the counting pass has a NaN or Inf (colour or AOV); "
+                "the report is still printed");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Time the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   return cmd;
@@ -94,6 +97,13 @@ int run_bench_command(const BenchArgs& a) {
   const BenchSubject subject{a.input, in.scene.name, a.disable, specialization_name(opts.specialize)};
   const std::string text = a.json ? bench_json(subject, s, r) : bench_table(subject, s, r);
   std::fputs(text.c_str(), stdout);
+  if (r.cost.nonfinite_pixels > 0) {
+    const std::string what = std::to_string(r.cost.nonfinite_pixels) + " of " + std::to_string(r.cost.pixels) +
+                             " pixels have NaN/Inf values";
+    if (a.strict) throw Error({Exit::threshold, a.input, 0, "--strict", what, {}});
+    std::fprintf(stderr, "marchstudio: %s: warning: %s (--strict makes this an error)\n", a.input.c_str(),
+                 what.c_str());
+  }
   return 0;
 }
 

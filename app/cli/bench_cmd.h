@@ -23,6 +23,7 @@ struct BenchArgs {
   std::vector<std::string> disable;
   std::string preset;      // empty: the scene's [quality] preset
   bool no_specialize = false;  // time the generic shader (docs/specialization.md)
+  bool strict = false;     // any NaN/Inf pixel in the counting pass is an error (exit 1)
   std::vector<std::string> allow_include;  // more directories #include may read
 };
 

@@ -10,6 +10,7 @@
 #include <optional>
 #include <regex>
 
+#include "bench/bench.h"
 #include "cli/sequence_cmd.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
@@ -66,6 +67,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                 "Build the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   cmd->add_flag("--print-shader", a.print_shader,
                 "Print the assembled main-pass shader to stdout and exit; nothing is rendered");
+  cmd->add_flag("--strict", a.strict,
+                "Fail (exit 1, no file written) when any pixel has a NaN or Inf in its colour or AOVs; "
+                "without it they are counted on stderr");
   cmd->add_flag("--watch", a.watch, "Render again on every save of the scene or a file it includes, until Ctrl+C");
   cmd->add_option("--allow-include", a.allow_include,
                   "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
@@ -114,7 +118,10 @@ int run_render(const RenderArgs& a) {
   if (!std::isfinite(a.timeout) || a.timeout < 0)
     fail_input("--timeout must be a number of seconds >= 0 (0: no limit)", {}, 0, "--timeout");
   if (a.watch) return run_render_watch(a);
-  if (wants_sequence(a)) return run_sequence(a);
+  if (wants_sequence(a)) {
+    if (a.strict) fail_input("--strict checks one image; it does not apply to --frames yet", {}, 0, "--strict");
+    return run_sequence(a);
+  }
   // From here on the image has a.timeout seconds; the watchdog ends the
   // process if a draw (or the driver's compile) never returns.
   const Deadline deadline = Deadline::after(a.timeout);
@@ -184,11 +191,18 @@ int run_render(const RenderArgs& a) {
   const double t_compile = clock.lap();
   FrameRenderer renderer(*ctx);
   Image img;
+  long long nonfinite = 0;  // pixels with NaN/Inf in any channel read back (colour, AOVs)
   if (!in.shadertoy) {
     img = renderer.render(main_prog, [&](const Program& p) {
       set_scene_uniforms(p, posed, fp.width, fp.height, time, a.frame);
     }, post_prog, fp);
-    if (aovs) img = append_channels(img, select_channels(renderer.read_aovs(), aov_names));
+    if (aovs) {
+      const Image all = renderer.read_aovs();
+      nonfinite = count_nonfinite_pixels(img, &all);
+      img = append_channels(img, select_channels(all, aov_names));
+    } else {
+      nonfinite = count_nonfinite_pixels(img);
+    }
   } else {
     BlackChannels channels;
     ShadertoyInputs st;
@@ -198,6 +212,16 @@ int run_render(const RenderArgs& a) {
       channels.bind();
       set_shadertoy_uniforms(p, fp.width, fp.height, st);
     }, post_prog, fp);
+    nonfinite = count_nonfinite_pixels(img);
+  }
+  // The NaN/Inf guard: counted over everything read back, before writing.
+  if (nonfinite > 0) {
+    const std::string what = std::to_string(nonfinite) + " of " +
+                             std::to_string(static_cast<long long>(fp.width) * fp.height) +
+                             " pixels have NaN/Inf values";
+    if (a.strict) throw Error({Exit::threshold, input.string(), 0, "--strict", what + "; nothing written", {}});
+    std::fprintf(stderr, "marchstudio: %s: warning: %s (--strict makes this an error)\n", input.string().c_str(),
+                 what.c_str());
   }
   ImageMetadata meta{{"Software", "marchstudio 0.1.0"},
                      {"ImageDescription", input.filename().string() + " t=" + std::to_string(time) +

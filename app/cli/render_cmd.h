@@ -38,6 +38,7 @@ struct RenderArgs {
   std::vector<std::string> aov;      // AOVs to add to an .exr: depth, normal, steps, material, shadow, ao, cost, hit
   bool no_specialize = false;  // build the generic shader (docs/specialization.md)
   bool print_shader = false;   // print the assembled scene shader and exit
+  bool strict = false;         // any NaN/Inf pixel (colour or AOV) is an error: exit 1, nothing written
   std::vector<std::string> allow_include;  // more directories #include may read (shader/preprocess.h)
   double timeout = 0.0;      // seconds per image (each frame of --frames); 0: none (core/deadline.h)
   int tile_size = kTileSize; // hidden --tile-size: largest square per draw (render/tiles.h); 0: whole frame

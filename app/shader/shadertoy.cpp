@@ -79,7 +79,10 @@ const char* wrapper_tail() {
   return "void main() {\n"
          "  vec4 c = vec4(0.0, 0.0, 0.0, 1.0);\n"
          "  mainImage(c, floor(gl_FragCoord.xy) + uJitter);\n"
-         "  outColor = vec4(c.rgb, 1.0);\n"
+         "  // marchstudio: a NaN/Inf sample is zeroed but flagged by a negative alpha\n"
+         "  // sum (spp <= 1024); the post pass turns the pixel NaN for the host's guard.\n"
+         "  bool bad = any(isnan(c.rgb)) || any(isinf(c.rgb));\n"
+         "  outColor = bad ? vec4(0.0, 0.0, 0.0, -4096.0) : vec4(c.rgb, 1.0);\n"
          "}\n";
 }
 
