@@ -23,8 +23,8 @@ Quality preset_quality(std::string_view name, const std::string& key) {
     q.shadow_steps = 24;
     q.ao_taps = 3;
   } else if (name == "reference") {
-    // Converged: many steps, a tenth of balanced's tolerance near the camera
-    // and a tenth of it far away, no relaxation. Tighter than the textbook's
+    // Converged: many steps, a fifth of balanced's footprint tolerance and a
+    // tenth of its absolute floor, no relaxation. Tighter than the textbook's
     // fixed 1e-4 up to t = 0.05 / pixel angle (43 at 1280x720, fov 45).
     q.max_steps = 4000;
     q.hit_tolerance = 0.002f;

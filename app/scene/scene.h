@@ -54,7 +54,7 @@ enum class Tonemap { none, reinhard, aces };
 struct Quality {
   int max_steps = 255;
   float max_distance = 100.0f;
-  float hit_tolerance = 0.02f;  // hit when d < max(hit_epsilon, hit_tolerance * pixel footprint at t)
+  float hit_tolerance = 0.01f;  // hit when d < max(hit_epsilon, hit_tolerance * pixel footprint at t)
   float hit_epsilon = 1e-4f;    // absolute floor of the hit tolerance
   float lipschitz = 1.0f;       // the scene SDF's Lipschitz bound (step = d / L)
   float omega = 1.0f;           // over-relaxation of the primary/reflection march, [1, 2); 1: plain
