@@ -118,10 +118,7 @@ int run_render(const RenderArgs& a) {
   if (!std::isfinite(a.timeout) || a.timeout < 0)
     fail_input("--timeout must be a number of seconds >= 0 (0: no limit)", {}, 0, "--timeout");
   if (a.watch) return run_render_watch(a);
-  if (wants_sequence(a)) {
-    if (a.strict) fail_input("--strict checks one image; it does not apply to --frames yet", {}, 0, "--strict");
-    return run_sequence(a);
-  }
+  if (wants_sequence(a)) return run_sequence(a);
   // From here on the image has a.timeout seconds; the watchdog ends the
   // process if a draw (or the driver's compile) never returns.
   const Deadline deadline = Deadline::after(a.timeout);

@@ -11,6 +11,7 @@
 #include <regex>
 #include <thread>
 
+#include "bench/bench.h"
 #include "cli/input.h"
 #include "cli/progress.h"
 #include "cli/render_cmd.h"
@@ -256,12 +257,19 @@ int run_sequence(const RenderArgs& a) {
       const Scene posed = animated(scene, time);
       fp.exposure = posed.render.exposure;
       Image img;
+      long long nonfinite = 0;  // the NaN/Inf guard, as in render_cmd.cpp
       try {
         if (!in.shadertoy) {
           img = renderer.render(main_prog, [&](const Program& p) {
             set_scene_uniforms(p, posed, fp.width, fp.height, time, f);
           }, post_prog, fp);
-          if (aovs) img = append_channels(img, select_channels(renderer.read_aovs(), aov_names));
+          if (aovs) {
+            const Image all = renderer.read_aovs();
+            nonfinite = count_nonfinite_pixels(img, &all);
+            img = append_channels(img, select_channels(all, aov_names));
+          } else {
+            nonfinite = count_nonfinite_pixels(img);
+          }
         } else {
           ShadertoyInputs st;
           st.time = time;
@@ -271,6 +279,7 @@ int run_sequence(const RenderArgs& a) {
             channels.bind();
             set_shadertoy_uniforms(p, fp.width, fp.height, st);
           }, post_prog, fp);
+          nonfinite = count_nonfinite_pixels(img);
         }
       } catch (const Error& e) {
         if (watchdog) watchdog->disarm();  // its hook names `writer`, which unwinding destroys
@@ -282,6 +291,17 @@ int run_sequence(const RenderArgs& a) {
       }
       if (watchdog) watchdog->disarm();
       if (deadline.expired()) fail_timeout("frame " + std::to_string(f), a.timeout);
+      if (nonfinite > 0) {
+        const std::string what = "frame " + std::to_string(f) + ": " + std::to_string(nonfinite) + " of " +
+                                 std::to_string(static_cast<long long>(fp.width) * fp.height) +
+                                 " pixels have NaN/Inf values";
+        if (a.strict) {
+          writer.finish();  // the frames before it are good: written, so a rerun resumes after them
+          throw Error({Exit::threshold, a.input, 0, "--strict", what + "; it is not written", {}});
+        }
+        std::fprintf(stderr, "marchstudio: %s: warning: %s (--strict makes this an error)\n", a.input.c_str(),
+                     what.c_str());
+      }
       const double took = since(t0);
       render_s += took;
       progress.rendered(f, took);

@@ -449,6 +449,27 @@ TEST(NanGuard, ANanFieldReadsAsEmptySpace) {
   EXPECT_EQ(nan_half, 0);
 }
 
+// A sequence checks every frame: a warning per bad frame without --strict;
+// with it the run stops at the first one, which is not written.
+TEST(NanGuard, SequencesCheckEveryFrame) {
+  TempDir dir;
+  const std::string nan = (source_dir() / "tests/data/stability/nan_shadertoy.glsl").string();
+  const RunResult warn = run_marchstudio(
+      {"render", nan, "--frames", "0..2", "--size", "32x18", "-o", (dir / "w_%d.png").string()});
+  EXPECT_EQ(warn.exit_code, 0) << warn.err;
+  // The shader's NaN is 0/0 with iTime = 0: frame 0 only.
+  EXPECT_NE(warn.err.find("frame 0: 144 of 576 pixels have NaN/Inf values"), std::string::npos) << warn.err;
+  EXPECT_EQ(warn.err.find("frame 1: "), std::string::npos) << warn.err;
+  EXPECT_EQ(warn.err.find("frame 2: "), std::string::npos) << warn.err;
+  for (int f = 0; f < 3; ++f) EXPECT_TRUE(fs::exists(dir / ("w_" + std::to_string(f) + ".png")));
+  const RunResult strict = run_marchstudio(
+      {"render", nan, "--frames", "0..2", "--size", "32x18", "-o", (dir / "s_%d.png").string(), "--strict"});
+  EXPECT_EQ(strict.exit_code, 1) << strict.err;
+  EXPECT_NE(strict.err.find("frame 0: 144 of 576 pixels have NaN/Inf values; it is not written"), std::string::npos)
+      << strict.err;
+  for (int f = 0; f < 3; ++f) EXPECT_FALSE(fs::exists(dir / ("s_" + std::to_string(f) + ".png")));
+}
+
 TEST(NanGuard, BenchReportsTheCountInJson) {
   const auto count = [](const std::string& scene, bool strict) {
     std::vector<std::string> args = {"bench", scene, "--size", "32x18", "--frames", "1", "--warmup", "0", "--json"};
