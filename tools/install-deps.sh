@@ -8,7 +8,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config
   python3-glad                      # GL loader generator (glad2), offline specs
   libegl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0   # headless GL: EGL + OSMesa, llvmpipe
-  libglfw3-dev libglm-dev
+  libglfw3-dev libglm-dev libimgui-dev   # the viewer: a window and its panel
   libopenimageio-dev openimageio-tools
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev
