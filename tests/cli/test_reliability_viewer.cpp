@@ -8,6 +8,7 @@
 #include <iostream>
 #include <regex>
 #include <thread>
+#include <vector>
 
 #include "io/image_io.h"
 #include "run.h"
@@ -103,6 +104,23 @@ class ViewerAttack : public ::testing::Test {
   void expect_alive() {
     EXPECT_TRUE(proc->running()) << read_file(dir / "err.txt");
   }
+  // The counts of the viewer's once-a-second "frames N" lines, in order.
+  std::vector<long> frames_logged() {
+    std::vector<long> n;
+    for (const std::string& l : file_lines(log()))
+      if (l.rfind("frames ", 0) == 0) n.push_back(std::stol(l.substr(7)));
+    return n;
+  }
+  // Still running and still drawing: two stats lines written after this
+  // call (so after the attack) show the frame count rising.
+  void expect_still_drawing() {
+    expect_alive();
+    const size_t seen = frames_logged().size();
+    std::vector<long> n;
+    EXPECT_TRUE(wait_until([&] { return (n = frames_logged()).size() >= seen + 2; }, 10))
+        << "no new stats lines\n" << read_file(log());
+    if (n.size() >= seen + 2) EXPECT_GT(n.back(), n[n.size() - 2]) << "no frames drawn\n" << read_file(log());
+  }
 
   TempDir dir;
   std::string toml;
@@ -115,7 +133,10 @@ TEST_F(ViewerAttack, ShaderDeletedWhileWatchedThenRestored) {
   fs::remove(dir / "seed.glsl");
   std::string line = wait_reload(1);
   EXPECT_EQ(line.rfind("reload failed 1", 0), 0u) << line;
-  expect_alive();
+  // The last good image stays on screen and frames keep coming.
+  ASSERT_FALSE(wait_for_line(log(), "^capture 1 ", 10).empty());
+  EXPECT_LT(mean_abs_diff(capture(1), grey), 1e-3) << "a failed reload changed the image";
+  expect_still_drawing();
   // Restored (as an editor's "undo delete" would): the new content shows.
   write_file(dir / "seed.glsl", map_glsl("MAT_BALL", "1.3"));
   line = wait_reload(2);
@@ -133,12 +154,12 @@ TEST_F(ViewerAttack, FilesReplacedByDirectories) {
   const std::string failed = wait_for_line(log(), "^reload failed ", 20);
   EXPECT_FALSE(failed.empty()) << read_file(log());
   if (!failed.empty()) std::cout << "[ attack ] " << failed.substr(failed.find(" -- ") + 4) << "\n";
-  expect_alive();
+  expect_still_drawing();
   // The scene file too (moved away, a directory in its place).
   fs::rename(dir / "seed.toml", dir / "seed.toml.bak");
   fs::create_directory(dir / "seed.toml");
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  expect_alive();
+  expect_still_drawing();
   // Both back as files: the final state shows.
   fs::remove(dir / "seed.toml");
   fs::rename(dir / "seed.toml.bak", dir / "seed.toml");
@@ -161,14 +182,14 @@ TEST_F(ViewerAttack, ASceneThatIncludesItself) {
   EXPECT_EQ(line.rfind("reload failed 1", 0), 0u) << line;
   EXPECT_NE(line.find("include cycle"), std::string::npos) << line;
   EXPECT_NE(line.find("seed.glsl:2:"), std::string::npos) << line;
-  expect_alive();
+  expect_still_drawing();
   // The scene names itself as its map: TOML compiled as GLSL fails cleanly.
   std::string self = toml;
   self.replace(self.find("\"seed.glsl\""), 11, "\"seed.toml\"");
   save_by_rename(dir / "seed.toml", self);
   line = wait_reload(2);
   EXPECT_EQ(line.rfind("reload failed 2", 0), 0u) << line;
-  expect_alive();
+  expect_still_drawing();
   // Both fixed.
   save_by_rename(dir / "seed.toml", toml);
   save_by_rename(dir / "seed.glsl", map_glsl("MAT_BALL", "1.3"));
