@@ -13,6 +13,20 @@
 #include "lighting.glsl"
 #include "aov.glsl"
 
+// FUSED_POST 1: this pass writes the output image itself (tonemap.glsl, with
+// the host's TONEMAP and ENCODE_SRGB), so a one-sample frame needs no float
+// accumulation buffer and no post pass. Needs one sample per pixel and no AOVs.
+#ifndef FUSED_POST
+#define FUSED_POST 0
+#endif
+#if FUSED_POST
+#if AOV_OUTPUTS
+#error "marchstudio: FUSED_POST writes the image itself and cannot carry AOV outputs"
+#endif
+#include "tonemap.glsl"
+uniform float uExposure;   // linear multiplier (post.frag's, here)
+#endif
+
 #if AOV_OUTPUTS
 // Extra targets, accumulated additively over samples like outColor (the host
 // divides by spp). Layout and miss values: docs/shader-library.md, "AOVs".
@@ -207,6 +221,8 @@ void main() {
   outMisc = vec4(float(primarySteps), float(msPrimary.mat), msPrimary.shadow, msPrimary.ao);
   outCost = vec4(float(msShadowSteps), float(msPrimary.reflSteps), float(msSdfEvals),
                  msPrimary.capped ? 1.0 : 0.0);
+#elif FUSED_POST
+  outColor = nonFinite ? nonFiniteOutput() : vec4(outputColor(max(c, vec3(0.0)), uExposure), 1.0);
 #else
   outColor = vec4(max(c, vec3(0.0)), nonFinite ? -1.0 : 0.0);  // post ignores alpha but its sign
 #endif

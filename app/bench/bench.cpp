@@ -84,6 +84,7 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const ShaderSource
   fp.height = s.height;
   fp.spp = s.spp;
   fp.exposure = scene.render.exposure;
+  fp.fused_post = s.fused_post;
   auto uniforms_at = [&](int w, int h) {
     return [&scene, &s, w, h](const Program& p) { set_scene_uniforms(p, scene, w, h, s.time, 0); };
   };
@@ -130,6 +131,7 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const ShaderSource
   FrameParams cp = fp;
   cp.spp = 1;
   cp.aovs = true;
+  cp.fused_post = false;
   renderer.draw(count_prog, uniforms_at(s.width, s.height), post_prog, cp);
   const Image aovs = renderer.read_aovs(), colour = renderer.read_color();
   r.cost = measure_cost(aovs);

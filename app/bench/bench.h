@@ -24,6 +24,9 @@ struct BenchSettings {
   // default, so compile times are cold and repeatable (the caller sets the
   // driver environment before creating the context: see bench_cmd.cpp).
   bool shader_cache = false;
+  // The main program writes the image itself (FrameParams::fused_post):
+  // assembled with fused_post_defines(), for spp 1. Reported as passes 1.
+  bool fused_post = false;
 };
 
 // The deterministic cost of one frame at spp 1, from the AOV counters.

@@ -30,7 +30,7 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
   j["settings"] = {{"width", s.width},   {"height", s.height}, {"spp", s.spp},
                    {"frames", s.frames}, {"warmup", s.warmup}, {"time", s.time},
                    {"disable", subject.disable}, {"shader_cache", s.shader_cache},
-                   {"specialize", subject.specialize}};
+                   {"specialize", subject.specialize}, {"passes", s.fused_post ? 1 : 2}};
   j["machine"] = {{"backend", r.backend},
                   {"gl_renderer", r.gl_renderer},
                   {"gl_vendor", r.gl_vendor},
@@ -56,9 +56,10 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
 std::string bench_table(const BenchSubject& subject, const BenchSettings& s, const BenchResult& r) {
   std::string out;
   char buf[256];
-  std::snprintf(buf, sizeof buf, "scene     %s (%s)\nsettings  %dx%d, spp %d, %d frames after %d warm-up, %s shader\n",
+  std::snprintf(buf, sizeof buf,
+                "scene     %s (%s)\nsettings  %dx%d, spp %d, %d frames after %d warm-up, %s shader, %s\n",
                 subject.scene_name.c_str(), subject.scene_file.c_str(), s.width, s.height, s.spp, s.frames,
-                s.warmup, subject.specialize.c_str());
+                s.warmup, subject.specialize.c_str(), s.fused_post ? "one pass" : "main + post pass");
   out += buf;
   std::snprintf(buf, sizeof buf, "machine   %s, %s, GL %s\n", r.backend.c_str(), r.gl_renderer.c_str(),
                 r.gl_version.c_str());

@@ -53,23 +53,28 @@ class RowRenderer {
     sc.quality = c.quality;
     return sc;
   }
-  AssembleOptions opts_for(const SweepConfig& c, bool aovs) const {
+  // The timed frames are drawn as render draws them: in one pass at spp 1.
+  bool fused() const { return s_.spp == 1; }
+  AssembleOptions opts_for(const SweepConfig& c, bool aovs, bool fused = false) const {
     AssembleOptions o = opts_;
     o.defines.insert(o.defines.end(), c.tunables.begin(), c.tunables.end());
     if (aovs)
       for (const auto& d : aov_defines()) o.defines.push_back(d);
+    if (fused)
+      for (auto& d : fused_post_defines(scene_.render.tonemap, true)) o.defines.push_back(std::move(d));
     return o;
   }
   UniformFn uniforms(const Scene& sc, int w, int h) const {
     return [&sc, w, h, t = s_.time](const Program& p) { set_scene_uniforms(p, sc, w, h, t, 0); };
   }
-  FrameParams params(int spp, bool aovs) const {
+  FrameParams params(int spp, bool aovs, bool fused = false) const {
     FrameParams fp;
     fp.width = s_.width;
     fp.height = s_.height;
     fp.spp = spp;
     fp.exposure = scene_.render.exposure;
     fp.aovs = aovs;
+    fp.fused_post = fused;
     return fp;
   }
 
@@ -86,13 +91,14 @@ class RowRenderer {
 
   // Compile one row's plain program (timed, with a 1x1 frame that forces
   // llvmpipe's lazy code generation), then render its image and AOVs with
-  // the AOV build, whose colour is bit-identical to the plain one's.
+  // the AOV build, whose colour is bit-identical to the plain one's
+  // (tests/cli/test_fused_post.cpp).
   std::unique_ptr<Program> compile(const SweepConfig& c, SweepRow& row, Frame& image) {
     const Scene sc = scene_for(c);
-    const ShaderSource src = assemble_scene(sc, opts_for(c, false));
+    const ShaderSource src = assemble_scene(sc, opts_for(c, false, fused()));
     const Clock::time_point t0 = Clock::now();
     auto prog = std::make_unique<Program>(vs_, src);
-    FrameParams tiny = params(1, false);
+    FrameParams tiny = params(1, false, fused());
     tiny.width = tiny.height = 1;
     renderer_.draw(*prog, uniforms(sc, 1, 1), post_, tiny);
     glFinish();
@@ -110,7 +116,7 @@ class RowRenderer {
   Medians time_round(const Program& prog, const SweepConfig& c, std::vector<double>& gpu, std::vector<double>& wall,
                      std::vector<double>& cpu) {
     const Scene sc = scene_for(c);
-    const FrameParams fp = params(s_.spp, false);
+    const FrameParams fp = params(s_.spp, false, fused());
     for (int i = 0; i < s_.warmup; ++i) renderer_.draw(prog, uniforms(sc, s_.width, s_.height), post_, fp);
     glFinish();
     std::vector<double> g, w, u;

@@ -64,13 +64,14 @@ int run_bench_command(const BenchArgs& a) {
   const Backend backend = parse_backend(a.backend);
   AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}, parse_allow_include(a.allow_include)};
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  const LoadedInput in = load_input(a.input, a.disable, opts, a.preset);
+  LoadedInput in = load_input_scene(a.input, a.disable, a.preset);
   if (in.shadertoy)
     fail_input("bench needs an SDF scene: a Shadertoy shader has no step counters", a.input, 0, {},
                "wrap the map in a scene .toml");
   // The counting pass: the same scene with the AOV counters compiled in.
-  opts.defines = aov_defines();
-  const ShaderSource counting = assemble_scene(in.scene, opts);
+  AssembleOptions count_opts = opts;
+  count_opts.defines = aov_defines();
+  const ShaderSource counting = assemble_scene(in.scene, count_opts);
   const ShaderSource post = assemble_post(in.scene.render.tonemap, true, opts);
 
   BenchSettings s;
@@ -86,6 +87,9 @@ int run_bench_command(const BenchArgs& a) {
   s.frames = a.frames;
   s.warmup = a.warmup;
   s.time = in.scene.render.time;
+  // Timed frames as render draws them: one pass at spp 1 (PNG output).
+  s.fused_post = fuse_post(in, s.spp, false, true, opts);
+  assemble_input(in, opts);
 
   s.shader_cache = a.shader_cache;
   check_bench_settings(s);  // before the (slow) context

@@ -60,11 +60,12 @@ std::vector<fs::path> parse_allow_include(const std::vector<std::string>& flags)
   return dirs;
 }
 
-LoadedInput load_input(const fs::path& input, const std::vector<std::string>& disable, const AssembleOptions& opts,
-                       const std::string& preset) {
+LoadedInput load_input_scene(const fs::path& input, const std::vector<std::string>& disable,
+                             const std::string& preset) {
   std::error_code ec;
   if (!fs::is_regular_file(input, ec)) fail_input("input file not found", input.string());
   LoadedInput in;
+  in.path = input;
   if (input.extension() == ".toml") {
     in.scene = load_scene(input);
   } else {
@@ -84,10 +85,26 @@ LoadedInput load_input(const fs::path& input, const std::vector<std::string>& di
     in.scene.quality = with_preset(in.scene.quality, preset);  // the file's explicit keys still win
   }
   apply_disable(in.scene.quality, disable);
-  const bool wrapped = input.extension() == ".toml";  // includes confined to the .toml's directory
-  in.main = in.shadertoy ? assemble_shadertoy(in.scene.shadertoy_file, opts, wrapped ? input : fs::path{})
-                         : assemble_scene(in.scene, opts);
   return in;
+}
+
+void assemble_input(LoadedInput& in, const AssembleOptions& opts) {
+  const bool wrapped = in.path.extension() == ".toml";  // includes confined to the .toml's directory
+  in.main = in.shadertoy ? assemble_shadertoy(in.scene.shadertoy_file, opts, wrapped ? in.path : fs::path{})
+                         : assemble_scene(in.scene, opts);
+}
+
+LoadedInput load_input(const fs::path& input, const std::vector<std::string>& disable, const AssembleOptions& opts,
+                       const std::string& preset) {
+  LoadedInput in = load_input_scene(input, disable, preset);
+  assemble_input(in, opts);
+  return in;
+}
+
+bool fuse_post(const LoadedInput& in, int spp, bool aovs, bool encode_srgb, AssembleOptions& opts) {
+  if (in.shadertoy || spp != 1 || aovs) return false;
+  for (auto& d : fused_post_defines(in.scene.render.tonemap, encode_srgb)) opts.defines.push_back(std::move(d));
+  return true;
 }
 
 }  // namespace ms

@@ -14,8 +14,9 @@
 namespace ms {
 
 struct LoadedInput {
+  std::filesystem::path path;  // the input as given
   Scene scene;           // a bare .glsl gets a default scene: 640x360, no tone map
-  ShaderSource main;     // the main pass
+  ShaderSource main;     // the main pass (assemble_input)
   bool shadertoy = false;
 };
 
@@ -40,5 +41,16 @@ std::vector<std::filesystem::path> parse_allow_include(const std::vector<std::st
 // empty keeps the file's. The file's explicit [quality] keys still apply.
 LoadedInput load_input(const std::filesystem::path& input, const std::vector<std::string>& disable,
                        const AssembleOptions& opts, const std::string& preset = {});
+
+// load_input() in two steps, for callers whose shader depends on the scene
+// (fuse_post): the scene alone (main left empty), then its main pass.
+LoadedInput load_input_scene(const std::filesystem::path& input, const std::vector<std::string>& disable,
+                             const std::string& preset = {});
+void assemble_input(LoadedInput& in, const AssembleOptions& opts);
+
+// Frames of one sample without AOVs need no accumulation buffer and no post
+// pass: for an SDF scene, adds fused_post_defines() (shader/assemble.h) to
+// opts and returns true; the frames must then set FrameParams::fused_post.
+bool fuse_post(const LoadedInput& in, int spp, bool aovs, bool encode_srgb, AssembleOptions& opts);
 
 }  // namespace ms

@@ -142,11 +142,7 @@ int run_render(const RenderArgs& a) {
                        parse_allow_include(a.allow_include)};
   if (aovs) for (const auto& d : aov_defines()) opts.defines.push_back(d);
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  const LoadedInput in = load_input(input, a.disable, opts, a.preset);
-  if (a.print_shader) {
-    std::fputs(in.main.text.c_str(), stdout);
-    return 0;
-  }
+  LoadedInput in = load_input_scene(input, a.disable, a.preset);
   if (aovs && in.shadertoy)
     fail_input("--aov needs a scene: a Shadertoy shader has no AOV outputs", input.string(), 0, "--aov");
   const Scene& scene = in.scene;
@@ -159,6 +155,12 @@ int run_render(const RenderArgs& a) {
     fp.height = s.height;
   }
   fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
+  fp.fused_post = fuse_post(in, fp.spp, aovs, display, opts);
+  assemble_input(in, opts);
+  if (a.print_shader) {
+    std::fputs(in.main.text.c_str(), stdout);
+    return 0;
+  }
   fp.exposure = scene.render.exposure;
   fp.aovs = aovs;
   fp.deadline = deadline.limited() ? &deadline : nullptr;

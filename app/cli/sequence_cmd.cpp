@@ -185,7 +185,7 @@ int run_sequence(const RenderArgs& a) {
     for (const auto& d : aov_defines()) opts.defines.push_back(d);
   // Animated values stay uniforms in a folded shader: one program serves every frame.
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  const LoadedInput in = load_input(a.input, a.disable, opts, a.preset);
+  LoadedInput in = load_input_scene(a.input, a.disable, a.preset);
   if (aovs && in.shadertoy) fail_input("--aov needs a scene, not a Shadertoy shader", a.input, 0, "--aov");
   const Scene& scene = in.scene;
   FrameParams fp;
@@ -199,6 +199,8 @@ int run_sequence(const RenderArgs& a) {
   fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
   fp.aovs = aovs;
   fp.tile_size = a.tile_size;
+  fp.fused_post = fuse_post(in, fp.spp, aovs, display, opts);
+  assemble_input(in, opts);
   // The frame in flight and those waiting for the writers are alive at once.
   check_frame_memory(frame_memory(fp.width, fp.height, aovs ? 6 : 2, aovs,
                                   1 + static_cast<int>(kQueuedFrames) + writer_threads()),

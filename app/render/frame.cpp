@@ -99,15 +99,20 @@ FrameRenderer::~FrameRenderer() { glDeleteVertexArrays(1, &vao_); }  // targets 
 
 void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, const Program& post,
                          const FrameParams& p) {
+  if (p.fused_post && (p.spp != 1 || p.aovs))
+    fail_system("internal: a fused post pass needs one sample per pixel and no AOVs");
   const int attachments = p.aovs ? 1 + kAovTargets : 1;
   check_frame_size(ctx_.info(), p.width, p.height, attachments + 1);
-  if (p.width != width_ || p.height != height_ || !accum_ || accum_->count() != attachments) {
-    accum_ = std::make_unique<RenderTarget>(p.width, p.height, attachments);
+  if (p.width != width_ || p.height != height_ || !result_) {
+    accum_.reset();
     result_ = std::make_unique<RenderTarget>(p.width, p.height);
     width_ = p.width;
     height_ = p.height;
   }
+  if (!p.fused_post && (!accum_ || accum_->count() != attachments))
+    accum_ = std::make_unique<RenderTarget>(p.width, p.height, attachments);
   spp_ = std::max(p.spp, 1);
+  aovs_ = p.aovs;
   glBindVertexArray(vao_);
   glViewport(0, 0, p.width, p.height);
   glDisable(GL_DEPTH_TEST);
@@ -117,7 +122,7 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   // One sample writes every pixel exactly once (the tiles do not overlap):
   // no clear and no blending, which on llvmpipe read back the whole float
   // buffer (about 15% of a fast frame at 1280x720).
-  glBindFramebuffer(GL_FRAMEBUFFER, accum_->fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, p.fused_post ? result_->fbo : accum_->fbo);
   if (spp_ > 1) {
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
@@ -127,6 +132,7 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   }
   glUseProgram(main.id());
   set_uniforms(main);
+  if (p.fused_post) glUniform1f(main.loc("uExposure"), p.exposure);
   const GLint jitter = main.loc("uJitter");
   // Tile by tile (scissor; the viewport stays whole, so gl_FragCoord and the
   // image are unchanged), every sample of a tile before the next: no draw
@@ -155,14 +161,17 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);
-  glUseProgram(post.id());
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, accum_->tex[0]);
-  glUniform1i(post.loc("uAccum"), 0);
-  glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(p.spp));
-  glUniform1f(post.loc("uExposure"), p.exposure);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // The post pass (not for a fused main pass, which wrote the result).
+  if (!p.fused_post) {
+    glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);
+    glUseProgram(post.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, accum_->tex[0]);
+    glUniform1i(post.loc("uAccum"), 0);
+    glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(p.spp));
+    glUniform1f(post.loc("uExposure"), p.exposure);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     fail_system("GL error " + std::to_string(err) + " while rendering");
@@ -180,7 +189,7 @@ Image FrameRenderer::read_color() const {
 
 Image FrameRenderer::read_aovs() const {
   Image img;
-  if (!accum_ || accum_->count() != 1 + kAovTargets) return img;
+  if (!aovs_ || !accum_ || accum_->count() != 1 + kAovTargets) return img;
   img.width = width_;
   img.height = height_;
   img.channels = kAovChannels;

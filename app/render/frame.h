@@ -1,6 +1,8 @@
 // One frame: N jittered samples of a main program accumulated additively into
 // a float buffer, then a post program (average, exposure, tone map, encode),
-// read back top row first. Shared by scenes and Shadertoy shaders.
+// read back top row first; or, for one sample of a main program that encodes
+// its own output (FrameParams::fused_post), that one pass straight into the
+// result. Shared by scenes and Shadertoy shaders.
 #pragma once
 #include <functional>
 #include <memory>
@@ -21,6 +23,10 @@ struct FrameParams {
   // Also accumulate the AOV targets (locations 1..3): the main program must be
   // assembled with AOV_OUTPUTS 1 (render/aov.h). read_aovs() reads them.
   bool aovs = false;
+  // The main program writes the output pixels itself: it was assembled with
+  // fused_post_defines() (shader/assemble.h). Needs spp 1 and no AOVs; the
+  // frame then has no accumulation buffer and no post pass.
+  bool fused_post = false;
   // Largest square one draw covers (render/tiles.h); <= 0: one draw per sample.
   int tile_size = kTileSize;
   // When set, every draw is waited for (glFinish) and the deadline checked
@@ -46,7 +52,7 @@ class FrameRenderer {
   FrameRenderer& operator=(const FrameRenderer&) = delete;
 
   // Accumulate p.spp samples of `main` tile by tile, then run `post` into
-  // the result target. Targets are kept while the size stays the same (the viewer draws
+  // the result target (with p.fused_post: `main` alone, into the result). Targets are kept while the size stays the same (the viewer draws
   // every frame).
   void draw(const Program& main, const UniformFn& set_uniforms, const Program& post, const FrameParams& p);
   // The post output of the last draw(): channels R,G,B,A, top row first.
@@ -66,6 +72,7 @@ class FrameRenderer {
   const Context& ctx_;
   GLuint vao_ = 0;
   int width_ = 0, height_ = 0, spp_ = 1;
+  bool aovs_ = false;  // the last draw() accumulated AOVs
   std::unique_ptr<RenderTarget> accum_, result_;
 };
 

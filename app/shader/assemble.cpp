@@ -192,13 +192,21 @@ ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts) {
   return preprocess(root, scene_display_name(scene) + ".frag (generated)", opts.shader_dir, popts);
 }
 
+// tonemap.glsl's TONEMAP values.
+static int tonemap_id(Tonemap tonemap) {
+  return tonemap == Tonemap::none ? 0 : tonemap == Tonemap::reinhard ? 1 : 2;
+}
+
 ShaderSource assemble_post(Tonemap tonemap, bool encode_srgb, const AssembleOptions& opts) {
-  int tm = tonemap == Tonemap::none ? 0 : tonemap == Tonemap::reinhard ? 1 : 2;
   std::string root = "#version 450 core\n";
-  define(root, "TONEMAP", tm);
+  define(root, "TONEMAP", tonemap_id(tonemap));
   define(root, "ENCODE_SRGB", encode_srgb ? 1 : 0);
   root += "#include \"post.frag\"\n";
   return preprocess(root, "post pass (generated)", opts.shader_dir, library_options(opts));
+}
+
+std::vector<std::pair<std::string, std::string>> fused_post_defines(Tonemap tonemap, bool encode_srgb) {
+  return {{"FUSED_POST", "1"}, {"TONEMAP", std::to_string(tonemap_id(tonemap))}, {"ENCODE_SRGB", encode_srgb ? "1" : "0"}};
 }
 
 std::string fullscreen_vertex_source() {

@@ -51,6 +51,12 @@ FeatureSet scene_features(const Scene& scene, const AssembleOptions& opts);
 // post.frag.
 ShaderSource assemble_post(Tonemap tonemap, bool encode_srgb, const AssembleOptions& opts);
 
+// The extra defines (AssembleOptions::defines) of a scene shader that writes
+// the output image itself, as assemble_post()'s pass would: FUSED_POST 1,
+// TONEMAP and ENCODE_SRGB. For frames of one sample without AOVs
+// (FrameParams::fused_post); saves the accumulation buffer and the post pass.
+std::vector<std::pair<std::string, std::string>> fused_post_defines(Tonemap tonemap, bool encode_srgb);
+
 // The shared vertex shader: one triangle covering the viewport, positions
 // from gl_VertexID, no attributes (the host still binds an empty VAO).
 std::string fullscreen_vertex_source();
