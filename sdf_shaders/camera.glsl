@@ -10,26 +10,15 @@ struct Ray {
   vec3 dDdx, dDdy;    // d(direction)/d(pixel); perpendicular to d
 };
 
-// Look-at basis (right, up, forward) as matrix columns. Degenerate input never
-// yields NaN: a zero view vector looks down +z, and an up parallel to the view
-// direction is replaced by another axis.
-mat3 cameraBasis(vec3 pos, vec3 target, vec3 upHint) {
-  vec3 fw = safeNormalize(target - pos, vec3(0.0, 0.0, 1.0));
-  vec3 up = safeNormalize(upHint, vec3(0.0, 1.0, 0.0));
-  if (abs(dot(fw, up)) > 0.9999)
-    up = abs(fw.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0);
-  vec3 right = normalize(cross(fw, up));
-  return mat3(right, cross(right, fw), fw);
-}
-
-// tan(fov/2) with the fov kept inside (0, pi).
-float cameraTanHalfFov() {
-  return tan(0.5 * clamp(uFovY, 1e-4, PI - 1e-3));
-}
+// The look-at basis (right, up, forward as columns) and tan(fov/2) come from
+// the host (uCamBasis, uCamTanHalfFov: app/scene/camera_frame.h), computed
+// once per frame. Degenerate input never yields NaN there: a zero view
+// vector looks down +z, and an up parallel to the view direction is replaced
+// by another axis.
 
 // Angle subtended by one pixel at the image centre (radians, small-angle).
 float pixelAngle() {
-  return 2.0 * cameraTanHalfFov() / max(uResolution.y, 1.0);
+  return 2.0 * uCamTanHalfFov / max(uResolution.y, 1.0);
 }
 
 // Differential of normalize(v) given the differential dv of v (Igehy eq. 10).
@@ -42,8 +31,8 @@ vec3 normalizeDiff(vec3 v, vec3 dv) {
 // floor(gl_FragCoord.xy) + uJitter), pinhole look-at camera from the
 // uniforms, with differentials for a one-pixel step.
 Ray cameraRay(vec2 pix) {
-  mat3 B = cameraBasis(uCamPos, uCamTarget, uCamUp);
-  float th = cameraTanHalfFov();
+  mat3 B = uCamBasis;
+  float th = uCamTanHalfFov;
   float invH = 1.0 / max(uResolution.y, 1.0);
   vec2 uv = (2.0 * pix - uResolution) * invH;     // y in [-1,1], x scaled by aspect
   vec3 v = B[2] + th * (uv.x * B[0] + uv.y * B[1]); // |v| >= 1: never zero

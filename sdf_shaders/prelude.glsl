@@ -40,6 +40,8 @@ uniform vec3  uCamPos;
 uniform vec3  uCamTarget;
 uniform vec3  uCamUp;
 uniform float uFovY;         // vertical field of view, radians
+uniform mat3  uCamBasis;     // columns: right, up, forward (unit; the host's camera_frame())
+uniform float uCamTanHalfFov;  // tan(uFovY / 2), fov kept inside (0, pi)
 #if SKY_UNIFORMS               // otherwise the host folded them into constants of these names
 uniform vec3  uSkyHorizon;
 uniform vec3  uSkyZenith;

@@ -10,6 +10,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "scene/camera_frame.h"
+
 namespace ms {
 namespace {
 
@@ -157,13 +159,10 @@ std::optional<std::vector<ExactSphere>> parse_sphere_map(std::string_view map_gl
 
 ExactDepth exact_depth(const Camera& cam, int width, int height, const std::vector<ExactSphere>& spheres,
                        const std::vector<Plane>& planes, double max_distance) {
-  // camera.glsl's cameraBasis() and cameraRay(), in double.
-  const glm::dvec3 pos(cam.position), fw = glm::normalize(glm::dvec3(cam.target) - pos);
-  glm::dvec3 up = glm::normalize(glm::dvec3(cam.up));
-  if (std::abs(glm::dot(fw, up)) > 0.9999) up = std::abs(fw.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
-  const glm::dvec3 right = glm::normalize(glm::cross(fw, up)), upv = glm::cross(right, fw);
-  const double fovy = static_cast<double>(static_cast<float>(cam.fov_deg * 3.14159265358979f / 180.0f));
-  const double th = std::tan(0.5 * std::clamp(fovy, 1e-4, 3.14159265358979 - 1e-3));
+  // camera.glsl's cameraRay() in double, from the frame the shader gets.
+  const CameraFrame cf = camera_frame(cam);
+  const glm::dvec3 pos(cam.position), fw(cf.forward), right(cf.right), upv(cf.up);
+  const double th = cf.tan_half_fov;
   ExactDepth out;
   out.width = width;
   out.height = height;

@@ -36,9 +36,9 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   cmd->add_option("--grid", a.grid, "quick (about 30 rows) or full (adds a tracer factorial, about 80)")
       ->check(CLI::IsMember({"quick", "full"}));
   cmd->add_option("--time-by", a.time_by,
-                  "The frame time the fronts and the plot use: gpu (GL timer, default), wall, or cpu (this process's "
-                  "CPU time: steadier than the others on a shared machine)")
-      ->check(CLI::IsMember({"gpu", "wall", "cpu"}));
+                  "The frame time the fronts and the plot use: gpu (GL timer), wall, cpu (this process's CPU time: "
+                  "steadier on a shared machine), or auto (default: cpu on a software GL such as llvmpipe, else gpu)")
+      ->check(CLI::IsMember({"auto", "gpu", "wall", "cpu"}));
   cmd->add_option("--preset", a.preset, "The preset the rows vary around (default balanced)")
       ->check(CLI::IsMember(quality_preset_names()));
   cmd->add_option("--only", a.only, "Measure only these rows of the grid, by name (e.g. textbook,balanced)")
@@ -87,7 +87,7 @@ std::string command_line(const SweepArgs& a) {
                   " --rounds " + std::to_string(a.rounds) + " --warmup " + std::to_string(a.warmup) + " --spp " + std::to_string(a.spp) + " --ref-spp " +
                   std::to_string(a.ref_spp) + " --grid " + a.grid;
   if (a.preset != "balanced") c += " --preset " + a.preset;
-  if (a.time_by != "gpu") c += " --time-by " + a.time_by;
+  if (a.time_by != "auto") c += " --time-by " + a.time_by;
   if (!a.only.empty()) {
     c += " --only ";
     for (size_t i = 0; i < a.only.size(); ++i) c += (i ? "," : "") + a.only[i];
@@ -119,7 +119,7 @@ int run_sweep_command(const SweepArgs& a) {
   s.spp = a.spp;
   s.ref_spp = a.ref_spp;
   s.grid = parse_sweep_grid(a.grid);
-  s.clock = parse_sweep_clock(a.time_by);
+  if (a.time_by != "auto") s.clock = parse_sweep_clock(a.time_by);
   const LoadedInput in = load_input(a.input, {}, opts);
   if (in.shadertoy)
     fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
@@ -152,6 +152,7 @@ int run_sweep_command(const SweepArgs& a) {
   ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
   ::setenv("__GL_SHADER_DISK_CACHE", "0", 1);
   std::unique_ptr<Context> ctx = create_headless_context(backend);
+  if (a.time_by == "auto") s.clock = ctx->info().software() ? SweepClock::cpu : SweepClock::gpu;
   const Scene posed = animated(in.scene, s.time);
   const size_t n = configs.size();
   const SweepResult r = run_sweep(*ctx, posed, configs, opts, s, [&](size_t i, const std::string& name) {

@@ -19,7 +19,7 @@ struct SweepArgs {
   int spp = 1;
   int ref_spp = 16;
   std::string grid = "quick";
-  std::string time_by = "gpu";      // the clock of the fronts and the plot
+  std::string time_by = "auto";     // the clock of the fronts and the plot
   std::vector<std::string> only;    // row names to keep (empty: the whole grid)
   std::string preset = "balanced";  // the rows vary the settings around this preset
   std::string out = ".";            // directory for <scene>.sweep.{csv,json,png}

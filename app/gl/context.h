@@ -21,6 +21,12 @@ struct GlInfo {
   int max_viewport[2] = {0, 0};
   int max_texture_size = 0;
   int max_renderbuffer_size = 0;
+  // Mesa's CPU rasterizers (llvmpipe, softpipe): shaders run on this
+  // process's threads, so its CPU time is the frame's work; their GL timer
+  // queries do not cover the last flush of a frame.
+  bool software() const {
+    return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
+  }
 };
 
 class Context {

@@ -4,8 +4,10 @@
 #include <string>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "scene/camera_frame.h"
 #include "shader/specialize.h"
 
 namespace ms {
@@ -28,6 +30,11 @@ void set_scene_uniforms(const Program& p, const Scene& s, int width, int height,
   set3(p, "uCamTarget", s.camera.target);
   set3(p, "uCamUp", s.camera.up);
   set1(p, "uFovY", radians(s.camera.fov_deg));
+  // The frame every primary ray is built from, once here instead of per pixel.
+  const CameraFrame cf = camera_frame(s.camera);
+  const glm::mat3 basis(cf.right, cf.up, cf.forward);
+  glUniformMatrix3fv(p.loc("uCamBasis"), 1, GL_FALSE, glm::value_ptr(basis));
+  set1(p, "uCamTanHalfFov", cf.tan_half_fov);
   set3(p, "uSkyHorizon", s.sky.horizon);
   set3(p, "uSkyZenith", s.sky.zenith);
   set3(p, "uAmbient", s.sky.ambient);
