@@ -4,6 +4,9 @@
 #pragma once
 #include "aov.glsl"
 #include "bounds.glsl"
+#ifdef EXACT_SPHERES
+#include "exact.glsl"
+#endif
 
 // What a traced ray found. `steps` is kept for the step-count AOV.
 struct TraceResult {
@@ -50,6 +53,22 @@ TraceResult trace(Ray r, float tmin) {
   res.capped = false;
   res.exact = false;
   res.n = vec3(0.0);
+#ifdef EXACT_SPHERES
+  // The exact-intersection reference (exact.glsl): nothing is marched. A
+  // sphere hit is shaded like a marched one (its normal from the field).
+  float tx = float(MAX_DIST);
+  int pm = 0;
+  vec3 pn = vec3(0.0);
+  bool onPlane = intersectPlanes(r.o, r.d, tmin, tx, pm, pn);
+  int sm = intersectSpheres(r.o, r.d, tmin, tx);
+  res.hit = onPlane || sm >= 0;
+  res.t = res.hit ? tx : float(MAX_DIST);
+  res.d = 0.0;
+  res.mat = clamp(sm >= 0 ? sm : pm, 0, NUM_MATERIALS - 1);
+  res.exact = res.hit && sm < 0;
+  res.n = res.exact ? pn : vec3(0.0);
+  return res;
+#endif
 
   // The nearest analytic plane ends the march; the bounds clip it further.
   float tPlane = float(MAX_DIST);

@@ -190,9 +190,13 @@ SweepError error_against(const Frame& ref, const Frame& f) {
   return e;
 }
 
-SweepError error_against_exact(const ExactDepth& x, const Frame& f) {
+// `image` against the exact-intersection image of the same row (`exact`)
+// and its primary rays against the CPU's exact depths (`x`).
+SweepError error_against_exact(const ExactDepth& x, const Frame& exact, const Frame& f) {
   SweepError e;
-  e.psnr = e.mae = std::numeric_limits<double>::quiet_NaN();
+  const CompareMetrics m = compare_images(exact.color, f.color);
+  e.psnr = m.psnr;
+  e.mae = m.mean_abs;
   depth_errors(
       f.aovs, [&](size_t p) { return x.hit[p] ? 1.0 : 0.0; }, [&](size_t p) { return x.t[p]; }, e);
   return e;
@@ -257,10 +261,18 @@ SweepResult run_sweep(const Context& ctx, const Scene& scene, const std::vector<
   const Frame ref_same = rr.render(ref, s.spp, true);
   const Frame ref_super = rr.render(ref, s.ref_spp, false);
   std::string why;
-  const std::optional<ExactDepth> exact =
-      s.spp == 1 ? exact_reference(scene, s.width, s.height, ref.quality.max_distance, &why) : std::nullopt;
+  const std::optional<std::vector<ExactSphere>> spheres =
+      s.spp == 1 ? exact_spheres(scene, &why) : std::nullopt;
   if (s.spp != 1) why = "needs --spp 1 (one ray per pixel centre)";
+  std::optional<ExactDepth> exact;
+  if (spheres) exact = exact_depth(scene.camera, s.width, s.height, *spheres, scene.planes, ref.quality.max_distance);
   result.exact_status = exact ? "available" : why;
+  // A row's exact image: its own settings, its rays intersected exactly.
+  const auto exact_image = [&](const SweepConfig& c) {
+    SweepConfig x = c;
+    for (auto& d : exact_sphere_defines(*spheres)) x.tunables.push_back(std::move(d));
+    return rr.render(x, s.spp, false);
+  };
 
   // Compile and render every row (errors need only one image), keeping the
   // programs for the timing rounds.
@@ -273,7 +285,7 @@ SweepResult run_sweep(const Context& ctx, const Scene& scene, const std::vector<
     programs.push_back(rr.compile(configs[i], row, f));
     row.same_spp = error_against(ref_same, f);
     row.supersampled = error_against(ref_super, f);
-    if (exact) row.exact = error_against_exact(*exact, f);
+    if (exact) row.exact = error_against_exact(*exact, exact_image(configs[i]), f);
     result.rows.push_back(std::move(row));
   }
   // Timing rounds, every row in turn in each.

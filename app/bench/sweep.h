@@ -63,7 +63,11 @@ struct SweepRow {
   BenchCost cost;         // from the AOV frame at `spp`: steps, cap fraction, map() calls
   SweepError same_spp;    // against the converged reference at the same spp
   SweepError supersampled;  // against the converged reference at ref_spp (psnr, mae only)
-  std::optional<SweepError> exact;  // depth and hit/miss against exact intersection (analytic scenes)
+  // Against exact intersection (analytic scenes, spp 1): psnr and mae
+  // against the row's own shading with its primary and reflection rays
+  // intersected exactly (sdf_shaders/exact.glsl); depth and hit/miss of the
+  // primary rays against the CPU's double-precision intersection.
+  std::optional<SweepError> exact;
   bool pareto_same_spp = false, pareto_supersampled = false;  // on the time/PSNR front
 };
 

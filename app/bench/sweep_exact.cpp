@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "scene/camera_frame.h"
+#include "shader/assemble.h"
 
 namespace ms {
 namespace {
@@ -184,17 +185,36 @@ ExactDepth exact_depth(const Camera& cam, int width, int height, const std::vect
   return out;
 }
 
-std::optional<ExactDepth> exact_reference(const Scene& scene, int width, int height, double max_distance,
-                                          std::string* why) {
+std::optional<std::vector<ExactSphere>> exact_spheres(const Scene& scene, std::string* why) {
   std::ifstream in(scene.map_file, std::ios::binary);
   if (!in) {
     if (why) *why = "cannot read the map file";
     return std::nullopt;
   }
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  const auto spheres = parse_sphere_map(text, scene.materials, why);
+  return parse_sphere_map(text, scene.materials, why);
+}
+
+std::optional<ExactDepth> exact_reference(const Scene& scene, int width, int height, double max_distance,
+                                          std::string* why) {
+  const auto spheres = exact_spheres(scene, why);
   if (!spheres) return std::nullopt;
   return exact_depth(scene.camera, width, height, *spheres, scene.planes, max_distance);
+}
+
+std::vector<std::pair<std::string, std::string>> exact_sphere_defines(const std::vector<ExactSphere>& spheres) {
+  std::string list, mats;
+  for (const ExactSphere& sp : spheres) {
+    if (!list.empty()) {
+      list += ", ";
+      mats += ", ";
+    }
+    list += "vec4(" + glsl_float(static_cast<float>(sp.center.x)) + ", " + glsl_float(static_cast<float>(sp.center.y)) +
+            ", " + glsl_float(static_cast<float>(sp.center.z)) + ", " + glsl_float(static_cast<float>(sp.radius)) + ")";
+    mats += std::to_string(sp.material);
+  }
+  return {{"EXACT_SPHERES", std::to_string(spheres.size())}, {"EXACT_SPHERE_LIST", list},
+          {"EXACT_SPHERE_MATERIALS", mats}};
 }
 
 }  // namespace ms

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -39,9 +40,18 @@ struct ExactDepth {
 ExactDepth exact_depth(const Camera& camera, int width, int height, const std::vector<ExactSphere>& spheres,
                        const std::vector<Plane>& planes, double max_distance);
 
-// The reference for `scene` (map file read from disk), or nullopt with the
-// reason in `why`.
+// The spheres of `scene`'s map() (its map file read from disk), or nullopt
+// with the reason in `why`.
+std::optional<std::vector<ExactSphere>> exact_spheres(const Scene& scene, std::string* why);
+
+// exact_depth() for `scene`'s spheres and planes, or nullopt with the reason
+// in `why`.
 std::optional<ExactDepth> exact_reference(const Scene& scene, int width, int height, double max_distance,
                                           std::string* why);
+
+// The defines (AssembleOptions::defines) that make trace() intersect these
+// spheres and the scene's planes exactly (sdf_shaders/exact.glsl): the
+// exact-intersection reference image, shaded like any other.
+std::vector<std::pair<std::string, std::string>> exact_sphere_defines(const std::vector<ExactSphere>& spheres);
 
 }  // namespace ms

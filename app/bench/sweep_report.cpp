@@ -55,7 +55,7 @@ std::string sweep_csv(const SweepResult& r) {
       "shadow_estimator,ao_taps,bounces,normal_eps_scale,normal_eps_min,lipschitz,"
       "gpu_ms,wall_ms,cpu_ms,compile_ms,mean_steps,step_cap_fraction,sdf_evals_mean,"
       "psnr,mae,depth_err_mean,depth_err_max,misclassified,psnr_ss,mae_ss,"
-      "exact_depth_err_mean,exact_depth_err_max,exact_misclassified,pareto,pareto_ss\n";
+      "exact_psnr,exact_mae,exact_depth_err_mean,exact_depth_err_max,exact_misclassified,pareto,pareto_ss\n";
   for (const SweepRow& row : r.rows) {
     const SweepConfig& c = row.config;
     const Quality& q = c.quality;
@@ -70,7 +70,8 @@ std::string sweep_csv(const SweepResult& r) {
         cell(row.compile_ms), cell(row.cost.primary_steps.mean), cell(row.cost.step_cap_fraction),
         cell(row.cost.sdf_evals.mean), cell(row.same_spp.psnr), cell(row.same_spp.mae), cell(row.same_spp.depth_mean),
         cell(row.same_spp.depth_max), cell(row.same_spp.misclassified), cell(row.supersampled.psnr),
-        cell(row.supersampled.mae), cell(x.depth_mean), cell(x.depth_max), cell(x.misclassified),
+        cell(row.supersampled.mae), cell(x.psnr), cell(x.mae), cell(x.depth_mean), cell(x.depth_max),
+        cell(x.misclassified),
         row.pareto_same_spp ? "1" : "0", row.pareto_supersampled ? "1" : "0"};
     std::string line;
     for (const std::string& s : cells) {
@@ -102,7 +103,11 @@ std::string sweep_json(const SweepSubject& subject, const SweepSettings& s, cons
   j["references"] = {
       {"same_spp", {{"spp", s.spp}, {"quality", quality_json(r.reference_quality)}}},
       {"supersampled", {{"spp", s.ref_spp}, {"quality", quality_json(r.reference_quality)}}},
-      {"exact", {{"status", r.exact_status}}}};
+      {"exact",
+       {{"status", r.exact_status},
+        {"image", "each row's own settings with its primary and reflection rays intersected exactly "
+                  "(sdf_shaders/exact.glsl), same spp"},
+        {"depth", "primary rays through the pixel centres, intersected on the CPU in double"}}}};
   Json rows = Json::array();
   for (const SweepRow& row : r.rows) {
     const SweepConfig& c = row.config;
@@ -130,7 +135,9 @@ std::string sweep_json(const SweepSubject& subject, const SweepSettings& s, cons
                {"error",
                 {{"same_spp", error_json(row.same_spp, true)},
                  {"supersampled", error_json(row.supersampled, false)},
-                 {"exact", row.exact ? Json{{"depth_mean", jnum(row.exact->depth_mean)},
+                 {"exact", row.exact ? Json{{"psnr", jnum(row.exact->psnr)},
+                                            {"mae", jnum(row.exact->mae)},
+                                            {"depth_mean", jnum(row.exact->depth_mean)},
                                             {"depth_max", jnum(row.exact->depth_max)},
                                             {"misclassified", jnum(row.exact->misclassified)}}
                                      : Json(nullptr)}}},
@@ -153,27 +160,29 @@ std::string sweep_table(const SweepSubject& subject, const SweepSettings& s, con
          fmt("%g", r.reference_quality.hit_epsilon) + ", omega 1; same spp and " + std::to_string(s.ref_spp) +
          " spp; exact: " + r.exact_status + "\n\n";
   char buf[512];
-  std::snprintf(buf, sizeof buf, "%-40s %9s %9s %7s %7s %7s %7s %9s %7s %7s %9s %7s %5s\n", "config",
+  std::snprintf(buf, sizeof buf, "%-40s %9s %9s %7s %7s %7s %7s %9s %7s %7s %7s %9s %7s %5s\n", "config",
                 r.gpu_timer ? "gpu ms" : "wall ms", "cpu ms", "steps", "cap%", "PSNR", "MAE/255", "depth", "miss%",
-                "PSNRss", "exact dz", "exmiss%", "front");
+                "PSNRss", "PSNRex", "exact dz", "exmiss%", "front");
   out += buf;
   for (const SweepRow& row : r.rows) {
     const auto ps = [](double v) { return std::isinf(v) ? std::string("inf") : fmt("%.2f", v); };
+    const std::string ex_p = row.exact ? ps(row.exact->psnr) : "-";
     const std::string ex_d = row.exact ? fmt("%.2e", row.exact->depth_mean) : "-";
     const std::string ex_m = row.exact ? fmt("%.3f", 100.0 * row.exact->misclassified) : "-";
     std::string front = row.pareto_same_spp ? "A" : "";
     if (row.pareto_supersampled) front += "B";
-    std::snprintf(buf, sizeof buf, "%-40s %9.2f %9.2f %7.2f %7.3f %7s %7.3f %9.2e %7.3f %7s %9s %7s %5s\n",
+    std::snprintf(buf, sizeof buf, "%-40s %9.2f %9.2f %7.2f %7.3f %7s %7.3f %9.2e %7.3f %7s %7s %9s %7s %5s\n",
                   row.config.name.substr(0, 40).c_str(), r.gpu_timer ? row.gpu_best_median : row.wall_best_median,
                   row.cpu_best_median, row.cost.primary_steps.mean,
                   100.0 * row.cost.step_cap_fraction, ps(row.same_spp.psnr).c_str(), 255.0 * row.same_spp.mae,
                   row.same_spp.depth_mean, 100.0 * row.same_spp.misclassified, ps(row.supersampled.psnr).c_str(),
-                  ex_d.c_str(), ex_m.c_str(), front.c_str());
+                  ex_p.c_str(), ex_d.c_str(), ex_m.c_str(), front.c_str());
     out += buf;
   }
   out += "\nPSNR, MAE, depth, miss%: against the converged reference at the same spp; PSNRss: against the " +
          std::to_string(s.ref_spp) +
-         " spp one; exact: primary-ray depth and hit/miss against exact intersection. Times: best round's "
+         " spp one; PSNRex: against the row's own shading with its rays intersected exactly; exact dz, exmiss%: "
+         "primary-ray depth and hit/miss against exact intersection on the CPU. Times: best round's "
          "median per frame; cpu: this process's CPU time (llvmpipe's threads). front: on the " +
          std::string(sweep_clock_name(r.clock)) + " time/PSNR Pareto front (A same spp, B supersampled).\n";
   return out;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -145,6 +146,55 @@ TEST_F(SeedSweep, TextbookIsSlowerInStepsAndWorseThanBalanced) {
   EXPECT_EQ(textbook.at("quality").at("hit_tolerance"), 0.0);
   EXPECT_FALSE(textbook.at("quality").at("bounds").get<bool>());
   EXPECT_FALSE(textbook.at("quality").at("analytic_planes").get<bool>());
+}
+
+// The exact-intersection image (sdf_shaders/exact.glsl): every row has its
+// PSNR against it, converged tracing comes closest, and the default preset
+// is well above the textbook tracer and the 40 dB of docs/speed-vs-error.md.
+TEST_F(SeedSweep, EveryRowIsComparedWithItsExactImage) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  const json j = json::parse(read_file(*dir_ / "seed.sweep.json"));
+  std::map<std::string, double> psnr;
+  for (const json& r : j.at("rows")) {
+    const json& x = r.at("error").at("exact");
+    ASSERT_TRUE(x.is_object()) << r.at("name");
+    ASSERT_FALSE(x.at("psnr").is_null()) << r.at("name") << ": identical to its exact image?";
+    EXPECT_GT(x.at("mae").get<double>(), 0.0) << r.at("name");
+    psnr[r.at("name").get<std::string>()] = x.at("psnr").get<double>();
+  }
+  for (const auto& [name, p] : psnr)
+    if (name != "reference") EXPECT_GT(psnr.at("reference"), p) << name;
+  EXPECT_GT(psnr.at("balanced"), psnr.at("textbook") + 10.0);
+  EXPECT_GT(psnr.at("balanced"), 40.0);
+  const auto csv = read_csv(read_file(*dir_ / "seed.sweep.csv"));
+  EXPECT_NE(std::find(csv[0].begin(), csv[0].end(), "exact_psnr"), csv[0].end());
+}
+
+// exact.glsl's intersections against the tests' own, in double: the depth
+// AOV of an exact render of the seed (its one sphere given by hand).
+TEST(SweepExact, TheExactImageHitsWhereTheCpuDoes) {
+  constexpr int W = 64, H = 36;
+  TempDir dir;
+  const RunResult r = run_marchstudio({"render", scene("seed"), "-o", (dir / "x.exr").string(), "--size",
+                                       std::to_string(W) + "x" + std::to_string(H), "--aov", "depth,steps", "-D",
+                                       "EXACT_SPHERES=1", "-D", "EXACT_SPHERE_LIST=vec4(0.0, 1.0, 0.0, 1.0)", "-D",
+                                       "EXACT_SPHERE_MATERIALS=1"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Image img = read_image(dir / "x.exr");
+  const auto ch = [&](const char* n) {
+    return static_cast<int>(std::find(img.channels.begin(), img.channels.end(), n) - img.channels.begin());
+  };
+  const Scene seed = load_scene(scene("seed"));
+  int hits = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const ExactHit e = exact_seed_hit(cpu_camera_ray(seed.camera, W, H, x, y), seed.quality.max_distance);
+      ASSERT_EQ(img.at(x, y, ch("hit")) > 0.5f, e.hit) << x << "," << y;
+      EXPECT_EQ(img.at(x, y, ch("steps")), 0.0f) << "nothing is marched";
+      if (e.hit) EXPECT_NEAR(img.at(x, y, ch("Z")), e.t, 2e-6 * (1.0 + e.t)) << x << "," << y;
+      hits += e.hit;
+    }
+  EXPECT_GT(hits, W * H / 3);
 }
 
 TEST(Sweep, SceneWithoutExactReferenceSaysWhy) {
