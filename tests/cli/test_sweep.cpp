@@ -43,31 +43,30 @@ std::vector<std::vector<std::string>> read_csv(const std::string& text) {
   return rows;
 }
 
-// One small sweep of the seed, shared by the tests that read its output.
-class SeedSweep : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    dir_ = new TempDir;
-    // A few rows: the grid itself is checked by SweepGrid below.
-    result_ = new RunResult(run_marchstudio({"sweep", scene("seed"), "--size", "96x54", "--frames", "1", "--rounds",
-                                             "2", "--warmup", "0", "--time-by", "cpu", "--ref-spp", "4", "--only",
-                                             "textbook,fast,balanced,reference,omega=1.5,tol=fp1,no-bounds,ao=3", "-q",
-                                             "-o", dir_->path().string()}));
-  }
-  static void TearDownTestSuite() {
-    delete result_;
-    delete dir_;
-  }
-  static TempDir* dir_;
-  static RunResult* result_;
+// One small sweep of the seed, read by the checks below (one test: under
+// ctest each test is a process of its own, and would run the sweep again).
+struct SeedSweepRun {
+  TempDir dir;
+  RunResult result;
 };
-TempDir* SeedSweep::dir_ = nullptr;
-RunResult* SeedSweep::result_ = nullptr;
+const SeedSweepRun& seed_sweep() {
+  static SeedSweepRun run;  // destroyed at exit, and its directory with it
+  static const bool ran = [] {
+    // A few rows: the grid itself is checked by SweepGrid below.
+    run.result = run_marchstudio({"sweep", scene("seed"), "--size", "96x54", "--frames", "1", "--rounds", "2",
+                                  "--warmup", "0", "--time-by", "cpu", "--ref-spp", "4", "--only",
+                                  "textbook,fast,balanced,reference,omega=1.5,tol=fp1,no-bounds,ao=3", "-q", "-o",
+                                  run.dir.path().string()});
+    return true;
+  }();
+  (void)ran;
+  return run;
+}
 
-TEST_F(SeedSweep, WritesCsvJsonAndPlotThatAgree) {
-  ASSERT_EQ(result_->exit_code, 0) << result_->err;
-  EXPECT_EQ(result_->err, "");  // -q
-  const json j = json::parse(read_file(*dir_ / "seed.sweep.json"));
+void WritesCsvJsonAndPlotThatAgree() {
+  ASSERT_EQ(seed_sweep().result.exit_code, 0) << seed_sweep().result.err;
+  EXPECT_EQ(seed_sweep().result.err, "");  // -q
+  const json j = json::parse(read_file(seed_sweep().dir / "seed.sweep.json"));
   EXPECT_EQ(j.at("schema"), "marchstudio.sweep/1");
   EXPECT_EQ(j.at("settings").at("width"), 96);
   EXPECT_EQ(j.at("default_preset"), "balanced");
@@ -82,7 +81,7 @@ TEST_F(SeedSweep, WritesCsvJsonAndPlotThatAgree) {
   EXPECT_GE(ref.at("same_spp").at("quality").at("max_steps").get<int>(), 1000);
   EXPECT_EQ(ref.at("exact").at("status"), "available");  // the seed is a sphere and a plane
 
-  const auto csv = read_csv(read_file(*dir_ / "seed.sweep.csv"));
+  const auto csv = read_csv(read_file(seed_sweep().dir / "seed.sweep.csv"));
   const json& rows = j.at("rows");
   ASSERT_EQ(csv.size(), rows.size() + 1);
   const std::vector<std::string>& header = csv[0];
@@ -101,15 +100,15 @@ TEST_F(SeedSweep, WritesCsvJsonAndPlotThatAgree) {
   for (const char* n : {"textbook", "fast", "balanced", "reference"}) EXPECT_TRUE(names.count(n)) << n;
   EXPECT_EQ(rows.size(), 8u);  // --only
 
-  const Image plot = read_image(*dir_ / "seed.sweep.png");
+  const Image plot = read_image(seed_sweep().dir / "seed.sweep.png");
   EXPECT_GT(plot.width, 500);
   EXPECT_GT(plot.height, 300);
-  EXPECT_NE(result_->out.find("textbook"), std::string::npos) << result_->out;
+  EXPECT_NE(seed_sweep().result.out.find("textbook"), std::string::npos) << seed_sweep().result.out;
 }
 
-TEST_F(SeedSweep, ReferenceRowHasZeroErrorAgainstItself) {
-  ASSERT_EQ(result_->exit_code, 0) << result_->err;
-  const json j = json::parse(read_file(*dir_ / "seed.sweep.json"));
+void ReferenceRowHasZeroErrorAgainstItself() {
+  ASSERT_EQ(seed_sweep().result.exit_code, 0) << seed_sweep().result.err;
+  const json j = json::parse(read_file(seed_sweep().dir / "seed.sweep.json"));
   bool found = false;
   for (const json& r : j.at("rows")) {
     const json& e = r.at("error").at("same_spp");
@@ -132,9 +131,9 @@ TEST_F(SeedSweep, ReferenceRowHasZeroErrorAgainstItself) {
   EXPECT_TRUE(found);
 }
 
-TEST_F(SeedSweep, TextbookIsSlowerInStepsAndWorseThanBalanced) {
-  ASSERT_EQ(result_->exit_code, 0) << result_->err;
-  const json j = json::parse(read_file(*dir_ / "seed.sweep.json"));
+void TextbookIsSlowerInStepsAndWorseThanBalanced() {
+  ASSERT_EQ(seed_sweep().result.exit_code, 0) << seed_sweep().result.err;
+  const json j = json::parse(read_file(seed_sweep().dir / "seed.sweep.json"));
   json textbook, balanced;
   for (const json& r : j.at("rows")) {
     if (r.at("name") == "textbook") textbook = r;
@@ -151,9 +150,9 @@ TEST_F(SeedSweep, TextbookIsSlowerInStepsAndWorseThanBalanced) {
 // The exact-intersection image (sdf_shaders/exact.glsl): every row has its
 // PSNR against it, converged tracing comes closest, and the default preset
 // is well above the textbook tracer and the 40 dB of docs/speed-vs-error.md.
-TEST_F(SeedSweep, EveryRowIsComparedWithItsExactImage) {
-  ASSERT_EQ(result_->exit_code, 0) << result_->err;
-  const json j = json::parse(read_file(*dir_ / "seed.sweep.json"));
+void EveryRowIsComparedWithItsExactImage() {
+  ASSERT_EQ(seed_sweep().result.exit_code, 0) << seed_sweep().result.err;
+  const json j = json::parse(read_file(seed_sweep().dir / "seed.sweep.json"));
   std::map<std::string, double> psnr;
   for (const json& r : j.at("rows")) {
     const json& x = r.at("error").at("exact");
@@ -166,8 +165,18 @@ TEST_F(SeedSweep, EveryRowIsComparedWithItsExactImage) {
     if (name != "reference") EXPECT_GT(psnr.at("reference"), p) << name;
   EXPECT_GT(psnr.at("balanced"), psnr.at("textbook") + 10.0);
   EXPECT_GT(psnr.at("balanced"), 40.0);
-  const auto csv = read_csv(read_file(*dir_ / "seed.sweep.csv"));
+  const auto csv = read_csv(read_file(seed_sweep().dir / "seed.sweep.csv"));
   EXPECT_NE(std::find(csv[0].begin(), csv[0].end(), "exact_psnr"), csv[0].end());
+}
+
+TEST(SeedSweep, OutputsAgreeAndTheErrorsHold) {
+  for (auto [name, check] : {std::pair{"outputs agree", &WritesCsvJsonAndPlotThatAgree},
+                             std::pair{"reference row", &ReferenceRowHasZeroErrorAgainstItself},
+                             std::pair{"textbook vs balanced", &TextbookIsSlowerInStepsAndWorseThanBalanced},
+                             std::pair{"exact images", &EveryRowIsComparedWithItsExactImage}}) {
+    SCOPED_TRACE(name);
+    check();
+  }
 }
 
 // exact.glsl's intersections against the tests' own, in double: the depth
