@@ -1,0 +1,26 @@
+// Runs a function on a thread with a large, explicit stack.
+//
+//   int rc = ms::run_on_big_stack([&] { return run_cli(argc, argv); });
+//
+// Why: Mesa's GLSL compiler recurses once per level of an expression's
+// syntax tree (about 0.7 KB a level, measured in docs/reliability.md), so
+// a 20,000-term sum overflowed the 8 MiB main-thread stack and killed the
+// process with SIGSEGV. A thread's stack size is set here, independent of
+// `ulimit -s`; the memory is reserved, not used, until a deep compile
+// touches it. shader/cpp_engine.h refuses expressions deeper than what
+// this stack holds with room to spare (kMaxExpressionDepth).
+#pragma once
+#include <cstddef>
+#include <functional>
+
+namespace ms {
+
+// The compile stack: every subcommand runs on it, the viewer included.
+inline constexpr std::size_t kBigStackBytes = std::size_t{256} << 20;
+
+// Calls fn() on a new thread with `bytes` of stack and returns its result.
+// Exceptions propagate. Where the thread cannot be made (an address-space
+// limit, `ulimit -v`), smaller stacks are tried, and last fn() runs here.
+int run_on_big_stack(const std::function<int()>& fn, std::size_t bytes = kBigStackBytes);
+
+}  // namespace ms
