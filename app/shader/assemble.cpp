@@ -93,7 +93,8 @@ PreprocessOptions scene_options(const Scene& scene, const AssembleOptions& opts)
 // pipeline (main.frag and its files) and the -D values. Only primitives.glsl
 // and operators.glsl themselves are left out: they are included first, so
 // #pragma once skips them afterwards.
-std::string library_users(const std::string& map_path, const AssembleOptions& opts, const PreprocessOptions& popts) {
+std::string library_users(const std::string& map_path, const AssembleOptions& opts, PreprocessOptions popts) {
+  popts.model_driver = false;  // every include, whatever the #ifs: the scan over-approximates
   const std::string marker = "// marchstudio: library users start here\n";
   const std::string root = "#include \"primitives.glsl\"\n#include \"operators.glsl\"\n" + marker +
                            "#include \"" + map_path + "\"\n#include \"main.frag\"\n";

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <fstream>
-#include <map>
-#include <set>
 #include <iterator>
+#include <map>
+#include <memory>
+#include <set>
 #include <system_error>
 
+#include "io/input_file.h"
 #include "core/error.h"
+#include "shader/directive.h"
 
 // Line mapping. GLSL >= 3.30 (and what we generate is #version 450) defines
 // `#line L S` as: the line AFTER the directive is line L of source string S.
@@ -35,187 +38,22 @@ namespace ms {
 
 namespace fs = std::filesystem;
 
-std::string display_path(const fs::path& p) {
-  if (p.empty()) return {};
-  std::error_code ec;
-  fs::path abs = fs::weakly_canonical(fs::absolute(p, ec), ec);
-  if (ec) abs = p;
-  fs::path cwd = fs::current_path(ec);
-  if (!ec) {
-    fs::path ccwd = fs::weakly_canonical(cwd, ec);
-    if (!ec) cwd = ccwd;
-    fs::path rel = abs.lexically_relative(cwd);
-    if (!rel.empty() && *rel.begin() != ".." && rel != ".") return rel.generic_string();
-  }
-  return abs.generic_string();
-}
-
-namespace {
-
-// Absolute, symlinks resolved as far as the path exists, ".." folded.
-fs::path resolved(const fs::path& p) {
-  std::error_code ec;
-  fs::path a = fs::absolute(p, ec);
-  if (ec) a = p;
-  fs::path c = fs::weakly_canonical(a, ec);
-  return ec ? a.lexically_normal() : c;
-}
-
-bool inside(const fs::path& canonical, const std::vector<fs::path>& canonical_roots) {
-  for (const fs::path& root : canonical_roots) {
-    const fs::path rel = canonical.lexically_relative(root);
-    if (!rel.empty() && *rel.begin() != "..") return true;
-  }
-  return false;
-}
-
-std::vector<fs::path> resolved_all(const std::vector<fs::path>& roots) {
-  std::vector<fs::path> out;
-  for (const fs::path& r : roots)
-    if (!r.empty()) out.push_back(resolved(r));
-  return out;
-}
-
-}  // namespace
-
-bool within_roots(const fs::path& p, const std::vector<fs::path>& roots) {
-  return inside(resolved(p), resolved_all(roots));
-}
-
-std::string describe_roots(const std::vector<fs::path>& roots) {
-  std::vector<std::string> names;
-  for (const fs::path& r : resolved_all(roots)) {
-    std::string n = display_path(r);
-    if (n.empty()) n.push_back('.');
-    if (n.back() != '/') n.push_back('/');
-    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
-  }
-  std::string out;
-  for (size_t i = 0; i < names.size(); ++i) {
-    if (i > 0) out.append(i + 1 == names.size() ? " and " : ", ");
-    out.append(names[i]);
-  }
-  return out;
-}
-
 namespace {
 
 // Encoded line numbers must stay below 2^31.
 constexpr int kMaxFiles = 21000;
-// Includes expand recursively: a chain of 10000 files overflowed the stack.
-// GCC's cpp stops at 200 levels too.
-constexpr size_t kMaxDepth = 200;
-
-enum class Kind { none, include, pragma_once, version, group_switch, other };
-
-struct Directive {
-  Kind kind = Kind::none;
-  std::string target;    // include: the name between the delimiters
-  bool angled = false;   // include: <...> rather than "..."
-  std::string problem;   // include: why the line is malformed, empty when fine
-};
-
-std::string_view trim(std::string_view s) {
-  size_t b = s.find_first_not_of(" \t");
-  if (b == std::string_view::npos) return {};
-  size_t e = s.find_last_not_of(" \t");
-  return s.substr(b, e - b + 1);
-}
-
-bool is_word_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-}
-
-// Classifies a line that does not start inside a block comment.
-Directive parse_directive(std::string_view line) {
-  Directive d;
-  std::string_view s = trim(line);
-  if (s.empty() || s[0] != '#') return d;
-  s = trim(s.substr(1));
-  size_t n = 0;
-  while (n < s.size() && is_word_char(s[n])) ++n;
-  std::string_view word = s.substr(0, n);
-  std::string_view rest = trim(s.substr(n));
-  d.kind = Kind::other;
-  if (word == "version") {
-    d.kind = Kind::version;
-  } else if (word == "else" || word == "elif" || word == "endif") {
-    d.kind = Kind::group_switch;
-  } else if (word == "pragma") {
-    if (rest.substr(0, 4) == "once" && (rest.size() == 4 || !is_word_char(rest[4]))) d.kind = Kind::pragma_once;
-  } else if (word == "include") {
-    d.kind = Kind::include;
-    if (rest.empty() || (rest[0] != '"' && rest[0] != '<')) {
-      d.problem = "expected #include \"file\" or #include <file>";
-      return d;
-    }
-    d.angled = rest[0] == '<';
-    size_t close = rest.find(d.angled ? '>' : '"', 1);
-    if (close == std::string_view::npos) {
-      d.problem = "unterminated file name in #include";
-      return d;
-    }
-    d.target = std::string(rest.substr(1, close - 1));
-    std::string_view tail = trim(rest.substr(close + 1));
-    if (d.target.empty()) d.problem = "empty file name in #include";
-    else if (!tail.empty() && tail.substr(0, 2) != "//")
-      d.problem = "unexpected text after #include: '" + std::string(tail) + "'";
-  }
-  return d;
-}
-
-// Updates the block-comment state over one line (GLSL has no string
-// literals, so "/*" can only start a comment).
-bool ends_in_comment(std::string_view line, bool in_comment) {
-  for (size_t i = 0; i < line.size(); ++i) {
-    if (in_comment) {
-      if (line[i] == '*' && i + 1 < line.size() && line[i + 1] == '/') { in_comment = false; ++i; }
-    } else if (line[i] == '/' && i + 1 < line.size()) {
-      if (line[i + 1] == '/') return false;
-      if (line[i + 1] == '*') { in_comment = true; ++i; }
-    }
-  }
-  return in_comment;
-}
-
-bool is_blank_or_comment(std::string_view line, bool starts_in_comment) {
-  bool c = starts_in_comment;
-  for (size_t i = 0; i < line.size(); ++i) {
-    if (c) {
-      if (line[i] == '*' && i + 1 < line.size() && line[i + 1] == '/') { c = false; ++i; }
-    } else if (line[i] == '/' && i + 1 < line.size() && line[i + 1] == '/') {
-      return true;
-    } else if (line[i] == '/' && i + 1 < line.size() && line[i + 1] == '*') {
-      c = true; ++i;
-    } else if (line[i] != ' ' && line[i] != '\t') {
-      return false;
-    }
-  }
-  return true;
-}
-
-std::vector<std::string_view> split_lines(std::string_view text) {
-  std::vector<std::string_view> lines;
-  size_t pos = 0;
-  while (pos < text.size()) {
-    size_t nl = text.find('\n', pos);
-    size_t end = nl == std::string_view::npos ? text.size() : nl;
-    std::string_view l = text.substr(pos, end - pos);
-    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
-    lines.push_back(l);
-    pos = end + 1;
-  }
-  return lines;
-}
 
 class Preprocessor {
  public:
-  explicit Preprocessor(const PreprocessOptions& opts) : opts_(opts), roots_(resolved_all(opts.roots)) {}
+  explicit Preprocessor(const PreprocessOptions& opts) : opts_(opts), roots_(resolved_roots(opts.roots)) {
+    if (opts.model_driver) engine_ = std::make_unique<MacroEngine>(opts.limits, out_.files);
+  }
 
   ShaderSource run(std::string_view root_text, const std::string& root_name, const fs::path& root_dir) {
     out_.files.push_back(root_name);
     paths_.push_back({});
     process(root_text, 0, root_dir);
+    if (engine_) engine_->finish();
     return std::move(out_);
   }
 
@@ -226,44 +64,89 @@ class Preprocessor {
     bool expanded = false;  // an include was expanded: re-sync after group switches
     bool seen_code = false; // root only: #version must precede everything else
     stack_.push_back(file);
-    int line_no = 0;
+    if (engine_) engine_->begin_file();
+    int physical = 0;
+    long shift = 0;  // a user's #line: the line numbers it gives minus the physical ones
     for (std::string_view line : split_lines(text)) {
+      const int line_no = static_cast<int>(++physical + shift);
       // The line after the last (an include's return) must still encode into this file.
-      if (++line_no > kLineStride - 2)
+      if (physical > kLineStride - 2)
         fail_input("file is too long for line mapping (limit " + std::to_string(kLineStride - 2) + " lines)",
                    out_.files[file]);
       const bool starts_in_comment = in_comment;
       in_comment = ends_in_comment(line, in_comment);
       Directive d = starts_in_comment ? Directive{} : parse_directive(line);
+      const bool dead = engine_ && engine_->region() == MacroEngine::Region::dead;
       switch (d.kind) {
-        case Kind::include:
+        case DirectiveKind::include:
+          if (dead) {  // the driver drops it with its group: so do we, unread
+            out_.text += "// #include skipped: its #if group is not compiled\n";
+            break;
+          }
           if (!d.problem.empty()) fail_input(d.problem, out_.files[file], line_no);
           include(d, file, line_no, dir);
           expanded = true;
           break;
-        case Kind::pragma_once:
-          if (!is_root) once_.insert(paths_[file]);
+        case DirectiveKind::pragma_once:
+          if (!is_root && !dead) once_.insert(paths_[file]);
           out_.text += "// #pragma once (handled by marchstudio)\n";
           break;
-        case Kind::version:
+        case DirectiveKind::version:
           if (!is_root)
             fail_input("#version is only allowed in the root shader", out_.files[file], line_no, {},
                        "library and scene files must not declare a #version");
           if (seen_code) fail_input("#version must come before anything else", out_.files[file], line_no);
-          out_.text.append(line).push_back('\n');
+          emit(line, {file, line_no});
           break;
-        case Kind::group_switch:
-          out_.text.append(line).push_back('\n');
-          if (expanded) line_directive(line_no + 1, file);
+        case DirectiveKind::line:
+          // `#line L`: the next line is L of this same file, in our encoding.
+          if (is_root || !d.problem.empty() || dead) {
+            emit(line, {file, line_no});
+            break;
+          }
+          if (d.line > kLineStride - 2)
+            fail_input("#line " + std::to_string(d.line) + " is beyond marchstudio's line mapping (limit " +
+                           std::to_string(kLineStride - 2) + ")",
+                       out_.files[file], line_no);
+          shift = d.line - (physical + 1);
+          line_directive(static_cast<int>(d.line), file);
+          break;
+        case DirectiveKind::group_switch:
+          emit(line, {file, line_no});
+          if (expanded) line_directive(static_cast<int>(physical + 1 + shift), file);
           break;
         default:
-          out_.text.append(line).push_back('\n');
+          emit(line, {file, line_no});
           break;
       }
       if (!is_blank_or_comment(line, starts_in_comment)) seen_code = true;
     }
-    if (in_comment) fail_input("unterminated /* comment", out_.files[file], line_no);
+    if (in_comment) fail_input("unterminated /* comment", out_.files[file], static_cast<int>(physical + shift));
+    if (engine_) engine_->end_file();
     stack_.pop_back();
+  }
+
+  // A line the driver reads as it is; the engine reads it too.
+  void emit(std::string_view line, PpWhere where) {
+    out_.text.append(line).push_back('\n');
+    check_size(where);
+    if (engine_) engine_->line(line, where);
+  }
+
+  void check_size(PpWhere where) const {
+    if (out_.text.size() <= opts_.limits.max_text_bytes) return;
+    // The file included most often is the likely cause (an include diamond).
+    std::string hint = "the driver would need gigabytes to compile it";
+    int most = 0;
+    const fs::path* which = nullptr;
+    for (const auto& [path, n] : included_)
+      if (n > most) { most = n; which = &path; }
+    if (which && most > 1)
+      hint = "'" + display_path(*which) + "' is included " + std::to_string(most) +
+             " times: guard it with #pragma once or #ifndef";
+    fail_input("the shader is larger than " + std::to_string(opts_.limits.max_text_bytes >> 20) +
+                   " MiB with its includes expanded",
+               out_.files[where.file], where.line, {}, hint);
   }
 
   void line_directive(int line, int file) {
@@ -274,7 +157,12 @@ class Preprocessor {
   void include(const Directive& d, int parent, int line_no, const fs::path& dir) {
     std::vector<fs::path> searched;
     fs::path outside;
-    fs::path found = resolve(d, dir, searched, outside);
+    // Resolved once per directory and name: a file included a thousand
+    // times is looked up once.
+    const std::string key = dir.string() + (d.angled ? "\n<" : "\n\"") + d.target;
+    auto known = resolved_.find(key);
+    fs::path found = known != resolved_.end() ? known->second : resolve(d, dir, searched, outside);
+    if (known == resolved_.end() && outside.empty() && !found.empty()) resolved_.emplace(key, found);
     if (!outside.empty())
       fail_input("include '" + d.target + "' resolves to " + display_path(outside) +
                      ", outside the directories includes may read",
@@ -295,9 +183,10 @@ class Preprocessor {
       out_.text += "// #include \"" + d.target + "\" skipped: #pragma once\n";
       return;
     }
-    if (stack_.size() >= kMaxDepth)
-      fail_input("#include nested more than " + std::to_string(kMaxDepth) + " levels deep", out_.files[parent], line_no,
-                 {}, "an include chain this long is most likely generated by mistake");
+    // Level 1 is the first file the root includes; the root is not counted.
+    if (static_cast<int>(stack_.size()) > kMaxIncludeDepth)
+      fail_input("#include nested more than " + std::to_string(kMaxIncludeDepth) + " levels deep", out_.files[parent],
+                 line_no, {}, "an include chain this long is most likely generated by mistake");
     int file = file_index(found);
     if (std::find(stack_.begin(), stack_.end(), file) != stack_.end()) {
       std::string chain;
@@ -306,11 +195,17 @@ class Preprocessor {
       chain += out_.files[file];
       fail_input("include cycle: " + chain, out_.files[parent], line_no);
     }
+    const std::string& text = read(found, parent, line_no);
+    if (engine_ && !guards_[found].empty() && engine_->defined(guards_[found])) {
+      out_.text += "// #include \"" + d.target + "\" skipped: include guard " + guards_[found] + "\n";
+      return;
+    }
+    ++included_[found];
     line_directive(1, file);
-    process(read(found, parent, line_no), file, found.parent_path());
+    process(text, file, found.parent_path());
     line_directive(line_no + 1, parent);
+    check_size({parent, line_no});
   }
-
   // The first candidate that is a regular file, canonical. With roots, a
   // candidate outside them stops the search (in `outside`) whether or not
   // it exists, so errors do not tell which files exist out there either.
@@ -320,8 +215,8 @@ class Preprocessor {
     auto usable = [&](const fs::path& p) { return fs::is_regular_file(p, ec); };
     auto confined = [&](const fs::path& p) {
       if (roots_.empty()) return true;
-      const fs::path c = resolved(p);
-      if (inside(c, roots_)) return true;
+      const fs::path c = resolved_path(p);
+      if (inside_roots(c, roots_)) return true;
       outside = c;
       return false;
     };
@@ -358,21 +253,25 @@ class Preprocessor {
   const std::string& read(const fs::path& canonical, int parent, int line_no) {
     auto it = texts_.find(canonical);
     if (it != texts_.end()) return it->second;
-    std::ifstream in(canonical, std::ios::binary);
     std::string text;
-    if (in) text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (!in.is_open() || in.bad())
-      fail_input("cannot read include '" + display_path(canonical) + "'", out_.files[parent], line_no);
+    if (const std::string why = input_file_problem(canonical); !why.empty())
+      fail_input("include '" + display_path(canonical) + "' " + why, out_.files[parent], line_no);
+    text = read_input_file(canonical, "include file");
     out_.dependencies.push_back(canonical);
+    if (engine_) guards_[canonical] = include_guard(text);
     return texts_.emplace(canonical, std::move(text)).first->second;
   }
 
   const PreprocessOptions& opts_;
   const std::vector<fs::path> roots_;    // opts_.roots, canonical
   ShaderSource out_;
+  std::unique_ptr<MacroEngine> engine_;  // after out_: it refers to out_.files
   std::vector<fs::path> paths_;          // file index -> canonical path (root: empty)
   std::map<fs::path, int> index_;        // canonical path -> file index
   std::map<fs::path, std::string> texts_;  // each file is read once
+  std::map<fs::path, std::string> guards_; // its include guard macro, or empty
+  std::map<fs::path, int> included_;     // how many times each file was expanded
+  std::map<std::string, fs::path> resolved_;  // directory + include name -> the file found
   std::set<fs::path> once_;              // files that said #pragma once and were included
   std::vector<int> stack_;               // files being expanded, outermost first
 };

@@ -1,11 +1,17 @@
 // marchstudio's own GLSL preprocessor: expands `#include`, honours
-// `#pragma once`, and emits `#line` directives so that every line the driver
-// reports maps back to the file and line it came from. No GL here.
+// `#pragma once` and include guards, and emits `#line` directives so that
+// every line the driver reports maps back to the file and line it came
+// from. Alongside, shader/macro_engine.h models the driver's own
+// preprocessor over the result: the shader's size, its macro expansion and
+// its expression depth are bounded, and a live `#error` fails here. No GL.
 #pragma once
 #include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "shader/confine.h"
+#include "shader/macro_engine.h"
 
 namespace ms {
 
@@ -30,28 +36,29 @@ struct PreprocessOptions {
   // and have the compiler echo it. assemble.h sets the scene's directory,
   // sdf_shaders/ and --allow-include; empty: unconfined (tests, tools).
   std::vector<std::filesystem::path> roots;
+  // The budgets (macro_engine.h). The text size holds in any case.
+  PreprocessLimits limits;
+  // Model the driver's preprocessor: conditionals (an #include in a dead
+  // #if group is skipped), macro and depth budgets, #error. Off only for
+  // text that is never compiled (the library scan of assemble.cpp).
+  bool model_driver = true;
 };
+
+// An #include chain may be this many files deep, counting from the first
+// file the root includes (a scene's map, a Shadertoy shader) as 1.
+inline constexpr int kMaxIncludeDepth = 200;
 
 // Expand `#include "file"` (and `#include <file>`, searched in include_dirs
 // only) recursively in `root_text`. The root is shown as `root_name` in
 // errors and is source string 0; its relative includes resolve against
 // root_dir, then include_dirs. Absolute include paths are allowed.
 // Throws ms::Error (bad_input) for cycles, missing includes, a #version in an
-// included file, malformed #include lines and (with opts.roots) an include
-// outside the roots, located at file:line. That error names the path and
-// is raised before the file is opened: none of its content is ever shown.
+// included file, malformed #include lines, (with opts.roots) an include
+// outside the roots, a shader over opts.limits and a live #error, located
+// at file:line. The confinement error names the path and is raised before
+// the file is opened: none of its content is ever shown.
+// A user's `#line L` in an included file renumbers that file's lines from L.
 ShaderSource preprocess(std::string_view root_text, const std::string& root_name,
                         const std::filesystem::path& root_dir, const PreprocessOptions& opts);
-
-// Whether `p`, made absolute with symlinks resolved as far as it exists,
-// lies inside one of `roots` (themselves canonicalised).
-bool within_roots(const std::filesystem::path& p, const std::vector<std::filesystem::path>& roots);
-
-// "a, b and c" of display paths, for hints naming the allowed roots.
-std::string describe_roots(const std::vector<std::filesystem::path>& roots);
-
-// How a path is shown to users: relative to the current directory when it
-// lies under it, else absolute; always with '/' separators. Empty stays empty.
-std::string display_path(const std::filesystem::path& p);
 
 }  // namespace ms

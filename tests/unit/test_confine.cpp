@@ -166,10 +166,12 @@ TEST_F(Confine, IncludeDepthIsBounded) {
     FAIL() << "a 250-level chain was accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("nested more than 200 levels"), std::string::npos) << e.what();
-    EXPECT_NE(e.info().file.find("d198.glsl"), std::string::npos) << e.what();
+    // d0 is level 1: d199 (level 200) may not include d200.
+    EXPECT_NE(e.info().file.find("d199.glsl"), std::string::npos) << e.what();
   }
-  // 150 levels are fine.
-  EXPECT_NO_THROW(preprocess("#include \"d100.glsl\"\n", "root.glsl", scene(), confined()));
+  // Exactly 200 levels are fine: d50 .. d249.
+  EXPECT_NO_THROW(preprocess("#include \"d50.glsl\"\n", "root.glsl", scene(), confined()));
+  EXPECT_THROW(preprocess("#include \"d49.glsl\"\n", "root.glsl", scene(), confined()), Error);
 }
 
 // The scene level: assemble_scene with a map file outside the scene's

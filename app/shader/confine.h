@@ -1,0 +1,31 @@
+// Paths as the shader loaders judge and show them: include confinement
+// (which directories an #include, a map or a Shadertoy file may read) and
+// the display form of a path in errors. No GL, no file contents.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ms {
+
+// Whether `p`, made absolute with symlinks resolved as far as it exists,
+// lies inside one of `roots` (themselves canonicalised).
+bool within_roots(const std::filesystem::path& p, const std::vector<std::filesystem::path>& roots);
+
+// "a, b and c" of display paths, for hints naming the allowed roots.
+std::string describe_roots(const std::vector<std::filesystem::path>& roots);
+
+// How a path is shown to users: relative to the current directory when it
+// lies under it, else absolute; always with '/' separators. Empty stays empty.
+std::string display_path(const std::filesystem::path& p);
+
+// Absolute, symlinks resolved as far as the path exists, ".." folded.
+std::filesystem::path resolved_path(const std::filesystem::path& p);
+
+// Whether canonical path `p` lies inside one of `canonical_roots`.
+bool inside_roots(const std::filesystem::path& canonical, const std::vector<std::filesystem::path>& canonical_roots);
+
+// `roots` made canonical (resolved_path), empty ones dropped.
+std::vector<std::filesystem::path> resolved_roots(const std::vector<std::filesystem::path>& roots);
+
+}  // namespace ms
