@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "io/input_file.h"
 #include "scene/camera_frame.h"
 #include "shader/assemble.h"
 
@@ -186,12 +187,11 @@ ExactDepth exact_depth(const Camera& cam, int width, int height, const std::vect
 }
 
 std::optional<std::vector<ExactSphere>> exact_spheres(const Scene& scene, std::string* why) {
-  std::ifstream in(scene.map_file, std::ios::binary);
-  if (!in) {
+  if (!input_file_problem(scene.map_file).empty()) {
     if (why) *why = "cannot read the map file";
     return std::nullopt;
   }
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string text = read_input_file(scene.map_file, "map file");
   return parse_sphere_map(text, scene.materials, why);
 }
 

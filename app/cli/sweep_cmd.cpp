@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "io/atomic_file.h"
 #include "bench/plot.h"
 #include "bench/sweep.h"
 #include "bench/sweep_report.h"
@@ -60,26 +61,6 @@ namespace {
 void check_range(int v, int lo, int hi, const char* flag) {
   if (v < lo || v > hi)
     fail_input(std::string(flag) + " must be in " + std::to_string(lo) + ".." + std::to_string(hi), {}, 0, flag);
-}
-
-// Text files are written like images: a temporary, then a rename.
-void write_text(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    f << text;
-    if (!f.flush()) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      fail_system("cannot write '" + path.string() + "'");
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    fail_system("cannot write '" + path.string() + "': " + ec.message());
-  }
 }
 
 std::string command_line(const SweepArgs& a) {
@@ -162,8 +143,8 @@ int run_sweep_command(const SweepArgs& a) {
   });
 
   const SweepSubject subject{a.input, in.scene.name, command_line(a), specialization_name(opts.specialize)};
-  write_text(csv, sweep_csv(r));
-  write_text(json, sweep_json(subject, s, r));
+  write_file_atomic(csv, sweep_csv(r));
+  write_file_atomic(json, sweep_json(subject, s, r));
   const SweepPlot plot = plot_sweep(r, in.scene.name + ", " + a.size + ", " + r.gl_renderer);
   write_image(plot.image, png);
   if (!plot.has_text && !a.quiet)

@@ -4,6 +4,30 @@
 
 namespace ms {
 
+namespace {
+
+// An error is one line: a newline or another control character in a file
+// name (or echoed text) is shown escaped, as \n or \x1b.
+std::string one_line(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) {
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else if (c == '\t') out += "\\t";
+    else if (c < 0x20 || c == 0x7f) {
+      static const char* hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 // (An ostringstream rather than string +=: GCC 12 warns falsely on the latter, PR105651.)
 std::string format_error(const ErrorInfo& e) {
   std::ostringstream out;
@@ -16,7 +40,7 @@ std::string format_error(const ErrorInfo& e) {
   if (!e.key.empty() && e.what.find(e.key) == std::string::npos) out << e.key << ": ";
   out << e.what;
   if (!e.hint.empty()) out << " (" << e.hint << ')';
-  return out.str();
+  return one_line(out.str());
 }
 
 Error::Error(ErrorInfo info) : std::runtime_error(format_error(info)), info_(std::move(info)) {}

@@ -1,12 +1,17 @@
 #include "io/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
+
+#include <climits>
 
 #include <algorithm>
 #include <cctype>
 
 #include "core/error.h"
+#include "io/atomic_file.h"
+#include "io/input_file.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -34,24 +39,41 @@ void check_output_path(const fs::path& path) {
   if (::access(dir.c_str(), W_OK) != 0)
     fail_input("output directory is not writable", dir.string(), 0, "-o");
   if (fs::is_directory(path, ec)) fail_input("output path is a directory", path.string(), 0, "-o");
+  const std::size_t name = path.filename().string().size(), limit = name_limit(dir);
+  if (name > limit)
+    fail_input("output file name is " + std::to_string(name) + " bytes, more than this file system's " +
+                   std::to_string(limit),
+               path.string(), 0, "-o");
+  if (fs::absolute(path, ec).string().size() >= PATH_MAX)
+    fail_input("output path is longer than PATH_MAX (" + std::to_string(PATH_MAX) + " bytes)", path.string(), 0, "-o");
 }
 
-fs::path temp_path_for(const fs::path& target, long pid) {
-  std::string name = ".";
-  name.append(target.stem().string()).append(".tmp").append(std::to_string(pid));
-  name.append(target.extension().string());
-  return target.parent_path() / name;
-}
+namespace {
 
-std::string temp_target_name(const std::string& name) {
-  const size_t at = name.rfind(".tmp");
-  if (name.size() < 2 || name[0] != '.' || at == std::string::npos || at < 1) return {};
-  const size_t digits_end = name.find_first_not_of("0123456789", at + 4);
-  if (digits_end == at + 4) return {};  // no pid
-  const std::string ext = digits_end == std::string::npos ? "" : name.substr(digits_end);
-  if (!ext.empty() && (ext[0] != '.' || ext.find('.', 1) != std::string::npos)) return {};
-  return name.substr(1, at - 1) + ext;
-}
+// OpenImageIO's codecs write through this. It never tells a codec that a
+// write failed (OpenImageIO's PNG writer would go on regardless; libjpeg's
+// default handler calls exit(1)); the AtomicFile records the failure and
+// commit() reports it.
+class AtomicProxy final : public OIIO::Filesystem::IOProxy {
+ public:
+  explicit AtomicProxy(AtomicFile& f) : IOProxy(f.target().string(), Write), f_(f) {}
+  const char* proxytype() const override { return "marchstudio-atomic"; }
+  size_t write(const void* buf, size_t n) override {
+    f_.pwrite(buf, n, static_cast<std::uint64_t>(m_pos));
+    m_pos += static_cast<int64_t>(n);
+    return n;
+  }
+  size_t pwrite(const void* buf, size_t n, int64_t offset) override {
+    f_.pwrite(buf, n, static_cast<std::uint64_t>(offset));
+    return n;
+  }
+  size_t size() const override { return f_.size(); }
+
+ private:
+  AtomicFile& f_;
+};
+
+}  // namespace
 
 void write_image(const Image& image, const fs::path& path, const ImageMetadata& meta) {
   const ImageFormat format = image_format_for(path);
@@ -77,32 +99,26 @@ void write_image(const Image& image, const fs::path& path, const ImageMetadata& 
   else spec.attribute("oiio:ColorSpace", "Linear");
   for (const auto& [k, v] : meta) spec.attribute(k, v);
 
-  const fs::path tmp = temp_path_for(path, ::getpid());
-  auto out = OIIO::ImageOutput::create(tmp.string());
+  AtomicFile file(path);
+  AtomicProxy proxy(file);
+  // The format comes from the target's name; the bytes go to the temporary.
+  auto out = OIIO::ImageOutput::create(path.string(), &proxy);
   if (!out) fail_system("cannot create an image writer: " + OIIO::geterror(), path.string());
   const OIIO::stride_t xstride = static_cast<OIIO::stride_t>(nch * sizeof(float));
-  bool ok = out->open(tmp.string(), spec) &&
-            out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data(), xstride) && out->close();
-  if (!ok) {
-    const std::string err = out->geterror();
-    out.reset();
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    fail_system("cannot write image: " + err, path.string());
-  }
+  const bool ok = out->open(path.string(), spec) &&
+                  out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data(), xstride) && out->close();
+  const std::string err = ok ? "" : out->geterror();
   out.reset();
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    fail_system("cannot rename temporary image into place: " + ec.message(), path.string());
-  }
+  if (!ok) fail_system("cannot write image: " + err, path.string());
+  file.commit();
 }
 
 Image read_image(const fs::path& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) fail_input("image file not found", path.string());
-  auto in = OIIO::ImageInput::open(path.string());
+  // Read by us (a FIFO or a device is refused), decoded from memory.
+  std::string bytes = read_input_file(path, "image file", {}, kMaxImageInput);
+  OIIO::Filesystem::IOMemReader mem(bytes.data(), bytes.size());
+  OIIO::ImageSpec config;
+  auto in = OIIO::ImageInput::open(path.string(), &config, &mem);
   if (!in) fail_input("cannot read image: " + OIIO::geterror(), path.string());
   const OIIO::ImageSpec& spec = in->spec();
   Image img;

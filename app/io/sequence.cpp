@@ -2,6 +2,7 @@
 
 #include "io/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -10,6 +11,8 @@
 #include <set>
 
 #include "core/error.h"
+#include "io/atomic_file.h"
+#include "io/input_file.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -134,9 +137,18 @@ bool frame_is_complete(const fs::path& path, int width, int height, std::string*
     if (why) *why = reason.substr(0, reason.find('\n'));
     return false;
   };
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) return no("missing");
-  auto in = OIIO::ImageInput::open(path.string());
+  const std::string problem = input_file_problem(path);
+  if (problem == "not found") return no("missing");
+  if (!problem.empty()) return no("it " + problem);
+  std::string bytes;
+  try {
+    bytes = read_input_file(path, "frame", {}, kMaxImageInput);
+  } catch (const Error& e) {
+    return no(e.info().what);
+  }
+  OIIO::Filesystem::IOMemReader mem(bytes.data(), bytes.size());
+  OIIO::ImageSpec config;
+  auto in = OIIO::ImageInput::open(path.string(), &config, &mem);
   if (!in) return no("unreadable: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width != width || spec.height != height)
@@ -154,15 +166,20 @@ std::vector<fs::path> remove_stale_temps(const FramePattern& pattern, const std:
   std::vector<fs::path> removed;
   if (frames.empty()) return removed;
   const fs::path dir = pattern.path(frames.front()).parent_path();
-  std::set<std::string> targets;
-  for (int f : frames) targets.insert(pattern.path(f).filename().string());
   std::error_code ec;
   fs::directory_iterator it(dir.empty() ? fs::path(".") : dir, ec);
   if (ec) return removed;
-  for (const fs::directory_entry& e : it) {
-    const std::string name = e.path().filename().string();
-    if (!targets.count(temp_target_name(name))) continue;
-    if (fs::remove(e.path(), ec)) removed.push_back(dir / name);
+  // Temporaries start with '.': only those are matched against the frames.
+  std::vector<fs::path> candidates;
+  for (const fs::directory_entry& e : it)
+    if (e.path().filename().string().rfind(".", 0) == 0) candidates.push_back(e.path());
+  for (const fs::path& c : candidates) {
+    const std::string name = c.filename().string();
+    for (int f : frames) {
+      if (!is_temp_of(name, pattern.path(f))) continue;
+      if (fs::remove(c, ec)) removed.push_back(dir / name);
+      break;
+    }
   }
   return removed;
 }

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <vector>
 
+#include "io/atomic_file.h"
 #include "core/error.h"
 
 extern char** environ;
@@ -53,11 +54,7 @@ void check_video_path(const fs::path& out) {
 }
 
 void encode_video(const VideoJob& job) {
-  // Appended, not "." + string: GCC 12 warns falsely (-Wrestrict) on that.
-  std::string tmp_name(1, '.');
-  tmp_name.append(job.output.stem().string()).append(".tmp").append(std::to_string(::getpid()));
-  tmp_name.append(job.output.extension().string());
-  const fs::path tmp = job.output.parent_path() / tmp_name;
+  const fs::path tmp = temp_path_for(job.output, ::getpid(), true);  // ffmpeg picks the container by the extension
   char fps[64];
   std::snprintf(fps, sizeof fps, "%.17g", job.fps);
   // yuv420p: what players accept; it needs even sizes, hence the pad.

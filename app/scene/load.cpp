@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "io/input_file.h"
 #include "core/error.h"
 #include "scene/animation.h"
 #include "scene/load_geometry.h"
@@ -280,16 +281,10 @@ fs::path resolve_glsl(const Reader& r, const toml::table& t, const fs::path& dis
   const int line = Reader::line_of(t, key);
   if (file.empty()) r.fail(line, dotted, quote(dotted) + " must not be empty");
   const fs::path resolved = (display_path.parent_path() / fs::path(file)).lexically_normal();
-  std::error_code ec;
-  if (fs::is_directory(resolved, ec))
-    r.fail(line, dotted, key + " file " + quote(resolved.string()) + " is a directory");
   // Opening a FIFO or a device would block (or read forever): files only.
-  if (fs::exists(resolved, ec) && !fs::is_regular_file(resolved, ec))
-    r.fail(line, dotted, key + " file " + quote(resolved.string()) + " is not a regular file");
-  if (!std::ifstream(resolved))
-    r.fail(line, dotted, "cannot open " + key + " file " + quote(resolved.string()),
-           fs::exists(resolved, ec) ? "it is not readable"
-                                    : "no such file; " + quote(dotted) + " is relative to the scene file");
+  if (const std::string why = input_file_problem(resolved); !why.empty())
+    r.fail(line, dotted, key + " file " + quote(resolved.string()) + " " + why,
+           why == "not found" ? quote(dotted) + " is relative to the scene file" : "");
   return resolved;
 }
 
@@ -360,18 +355,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
 }
 
 Scene load_scene(const fs::path& toml_path) {
-  const std::string file = toml_path.string();
-  std::error_code ec;
-  if (fs::is_directory(toml_path, ec)) fail_input("cannot open scene file", file, 0, {}, "it is a directory");
-  if (fs::exists(toml_path, ec) && !fs::is_regular_file(toml_path, ec))  // a FIFO would block the open
-    fail_input("cannot open scene file", file, 0, {}, "it is not a regular file");
-  std::ifstream in(toml_path, std::ios::binary);
-  if (!in)
-    fail_input("cannot open scene file", file, 0, {},
-               fs::exists(toml_path, ec) ? "it is not readable" : "no such file or directory");
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) fail_input("cannot read scene file", file);
-  return parse_scene(text, toml_path);
+  return parse_scene(read_input_file(toml_path, "scene file"), toml_path);
 }
 
 }  // namespace ms

@@ -12,6 +12,8 @@
 
 #include <toml++/toml.h>
 
+#include "io/atomic_file.h"
+#include "io/input_file.h"
 #include "core/error.h"
 #include "scene/toml_guard.h"
 
@@ -151,13 +153,7 @@ std::string apply_one(const std::string& text, const TomlEdit& e, const std::str
   return out.insert(at, line);
 }
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) fail_input("cannot read the scene file", file.string());
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_text(const fs::path& file) { return read_input_file(file, "scene file"); }
 
 }  // namespace
 
@@ -174,23 +170,8 @@ void write_toml_edits(const fs::path& file, const std::vector<TomlEdit>& edits, 
   const std::string text = apply_toml_edits(read_text(file), edits, file.string());
   if (check) check(text);
   struct stat st {};
-  const mode_t mode = ::stat(file.c_str(), &st) == 0 ? (st.st_mode & 07777) : 0644;
-  std::string tmp = (file.parent_path() / ("." + file.filename().string() + ".XXXXXX")).string();
-  if (file.parent_path().empty()) tmp = "." + file.filename().string() + ".XXXXXX";
-  const int fd = ::mkstemp(tmp.data());
-  if (fd < 0) fail_system("cannot create a temporary file next to the scene file", file.string());
-  bool ok = ::fchmod(fd, mode) == 0;
-  for (size_t done = 0; ok && done < text.size();) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    ok = n > 0;
-    if (ok) done += static_cast<size_t>(n);
-  }
-  ok = ::fsync(fd) == 0 && ok;
-  ok = ::close(fd) == 0 && ok;
-  if (!ok || ::rename(tmp.c_str(), file.c_str()) != 0) {
-    ::unlink(tmp.c_str());
-    fail_system("cannot write the scene file", file.string());
-  }
+  const int mode = ::stat(file.c_str(), &st) == 0 ? static_cast<int>(st.st_mode & 07777) : -1;
+  write_file_atomic(file, text, mode);  // the user's permissions are kept
 }
 
 std::vector<TomlEdit> camera_edits(const Camera& cam) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <system_error>
 
+#include "io/input_file.h"
 #include "core/error.h"
 
 namespace ms {
@@ -107,10 +108,7 @@ ShaderSource assemble_shadertoy(const fs::path& glsl_file, const AssembleOptions
                display_path(scene_file.empty() ? glsl_file : scene_file), 0, scene_file.empty() ? "" : "scene.shadertoy",
                "allowed: " + describe_roots(popts.roots) + "; widen with --allow-include DIR");
   // Regular files only: opening a FIFO would block.
-  if (ec || !fs::is_regular_file(abs, ec)) fail_input("cannot read the Shadertoy shader", display_path(glsl_file));
-  std::ifstream in(abs, std::ios::binary);
-  if (!in) fail_input("cannot read the Shadertoy shader", display_path(glsl_file));
-  std::string user((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string user = read_input_file(abs, "Shadertoy shader", scene_file.empty() ? "" : "scene.shadertoy");
 
   std::string code = strip_comments(user);
   if (const size_t at = find_definition(code, "main"); at != std::string_view::npos) {

@@ -1,0 +1,73 @@
+// Every file marchstudio writes goes through here: a temporary beside the
+// target, every write checked, then fsync, a size check and a rename. The
+// target appears only complete; a failure (a full disk, an I/O error)
+// removes the temporary and throws Exit::system naming the target.
+//
+//   AtomicFile f("out/frame_0001.png");
+//   f.write(bytes, n);     // a failure is recorded here, reported by commit()
+//   f.commit();            // verified, renamed into place; throws ms::Error
+//
+//   write_file_atomic("sweep.csv", text);   // the same for a whole buffer
+//
+// Codecs write through AtomicFile (image_io.cpp's IOProxy) rather than to
+// a path: OpenImageIO's PNG writer ignores failed writes, and libjpeg's
+// default error handler calls exit(1). A proxy that records a failure and
+// tells the codec all is well lets commit() decide, the same for every format.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace ms {
+
+class AtomicFile {
+ public:
+  // Creates the temporary (temp_path_for(target, pid)); throws system when
+  // it cannot be created.
+  explicit AtomicFile(std::filesystem::path target, bool keep_extension = false);
+  ~AtomicFile();  // without commit(): the temporary is removed
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  // Writes at the end, or at `offset`. Return false once anything failed.
+  bool write(const void* data, std::size_t n);
+  bool pwrite(const void* data, std::size_t n, std::uint64_t offset);
+  bool failed() const { return error_ != 0; }
+  std::uint64_t size() const { return size_; }
+  const std::filesystem::path& temp() const { return temp_; }
+  const std::filesystem::path& target() const { return target_; }
+
+  // fsync, the size on disk against the bytes written, close, rename, and
+  // fsync of the directory. Throws system naming the target.
+  void commit();
+  // Closes and removes the temporary now (for a writer that gave up).
+  void discard();
+  // The permissions the file gets (else 0666 less the umask).
+  void set_mode(unsigned mode);
+
+ private:
+  std::filesystem::path target_, temp_;
+  int fd_ = -1;
+  int error_ = 0;           // the first errno that failed, 0 while all is well
+  std::uint64_t pos_ = 0;   // where write() appends
+  std::uint64_t size_ = 0;  // the furthest byte written
+};
+
+// A whole buffer; `mode` >= 0: the file's permissions (else 0666 less the umask).
+void write_file_atomic(const std::filesystem::path& target, std::string_view bytes, int mode = -1);
+
+// The temporary of `target` for process `pid`: ".<name>.tmp<pid>" beside
+// it, or with keep_extension ".<stem>.tmp<pid><ext>" (for ffmpeg, which
+// picks a container by the extension). Shortened, with a hash of the whole
+// name, so that it stays within the file system's name limit.
+std::filesystem::path temp_path_for(const std::filesystem::path& target, long pid, bool keep_extension = false);
+
+// Whether `name` (a file name) is a temporary of `target` by any process.
+bool is_temp_of(std::string_view name, const std::filesystem::path& target);
+
+// The file system's limit on one name in `dir` (NAME_MAX, usually 255).
+std::size_t name_limit(const std::filesystem::path& dir);
+
+}  // namespace ms
