@@ -8,6 +8,7 @@
 
 #include "bench/bench.h"
 #include "bench/bench_report.h"
+#include "cli/flag_checks.h"
 #include "cli/input.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
@@ -21,23 +22,24 @@ namespace ms {
 CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
   CLI::App* cmd = app.add_subcommand("bench", "Time a scene and count its steps per pixel (docs/bench.md)");
   cmd->add_option("scene", a.input, "Scene .toml")->required();
-  cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)");
+  cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
   cmd->add_option("--frames", a.frames, "Timed frames (default 30)");
   cmd->add_option("--warmup", a.warmup, "Untimed frames before them (default 3)");
-  cmd->add_option("--spp", a.spp, "Samples per timed frame (default: the scene's; the cost pass uses 1)");
+  cmd->add_option("--spp", a.spp, "Samples per timed frame, 1..1024 (default: the scene's; the cost pass uses 1)")
+      ->check(CLI::Range(1, 1024));
   cmd->add_flag("--json", a.json, "Print one JSON object (schema marchstudio.bench/1) instead of a table");
   cmd->add_flag("--shader-cache", a.shader_cache,
                 "Allow the driver's on-disk shader cache (default: off, so compile times are cold)");
   cmd->add_option("--backend", a.backend, "GL context: auto, egl or osmesa")
-      ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+      ->check(one_of(kBackendNames));
   cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
   cmd->add_option("--preset", a.preset,
                   "Quality preset: fast, balanced, reference or textbook (default: the scene's; its explicit "
                   "[quality] keys still apply)")
-      ->check(CLI::IsMember(quality_preset_names()));
+      ->check(one_of(quality_preset_names()));
   cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter")
       ->delimiter(',')
-      ->check(CLI::IsMember({"shadows", "reflections", "ao", "checker-filter"}));
+      ->check(one_of(kEffectNames));
   cmd->add_option("--allow-include", a.allow_include,
                   "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
   cmd->add_flag("--strict", a.strict,
@@ -104,7 +106,7 @@ int run_bench_command(const BenchArgs& a) {
   if (r.cost.nonfinite_pixels > 0) {
     const std::string what = std::to_string(r.cost.nonfinite_pixels) + " of " + std::to_string(r.cost.pixels) +
                              " pixels have NaN/Inf values";
-    if (a.strict) throw Error({Exit::threshold, a.input, 0, "--strict", what, {}});
+    if (a.strict) throw Error({Exit::threshold, a.input, 0, "--strict", what, {}, {}});
     std::fprintf(stderr, "marchstudio: %s: warning: %s (--strict makes this an error)\n", a.input.c_str(),
                  what.c_str());
   }

@@ -9,10 +9,22 @@
 #include "cli/view_cmd.h"
 #include "cli/bench_cmd.h"
 #include "cli/compare_cmd.h"
+#include "cli/flag_checks.h"
 #include "cli/sweep_cmd.h"
 #include "core/error.h"
 
 namespace ms {
+
+namespace {
+
+// Whether the subcommand that ran was given -v.
+bool verbose(const CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands())
+    if (const CLI::Option* v = sub->get_option_no_throw("--verbose"); v && v->count() > 0) return true;
+  return false;
+}
+
+}  // namespace
 
 int run_cli(int argc, char** argv) {
   CLI::App app{"marchstudio: a GLSL raymarching studio for SDF scenes", "marchstudio"};
@@ -29,6 +41,10 @@ int run_cli(int argc, char** argv) {
   SweepArgs sweep_args;
   CLI::App* sweep = add_sweep_command(app, sweep_args);
 
+  if (const std::string bad = unknown_subcommand(app, argc, argv); !bad.empty()) {
+    std::fprintf(stderr, "marchstudio: %s (see 'marchstudio --help')\n", bad.c_str());
+    return static_cast<int>(Exit::bad_input);
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -37,6 +53,10 @@ int run_cli(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const CLI::ExtrasError& e) {
+    std::fprintf(stderr, "marchstudio: %s (see 'marchstudio %s --help')\n", explain_extras(app, e).c_str(),
+                 app.get_subcommands().empty() ? "" : app.get_subcommands().back()->get_name().c_str());
+    return static_cast<int>(Exit::bad_input);
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "marchstudio: %s (see 'marchstudio --help')\n", e.what());
     return static_cast<int>(Exit::bad_input);
@@ -50,6 +70,7 @@ int run_cli(int argc, char** argv) {
     if (sweep->parsed()) return run_sweep_command(sweep_args);
   } catch (const Error& e) {
     std::fprintf(stderr, "marchstudio: %s\n", e.what());
+    if (!e.info().detail.empty() && verbose(app)) std::fprintf(stderr, "%s", e.info().detail.c_str());
     return static_cast<int>(e.code());
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "marchstudio: out of memory\n");

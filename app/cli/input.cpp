@@ -3,6 +3,7 @@
 #include <regex>
 
 #include "core/error.h"
+#include "io/input_file.h"
 #include "scene/load.h"
 #include "scene/quality.h"
 #include "shader/shadertoy.h"
@@ -62,8 +63,7 @@ std::vector<fs::path> parse_allow_include(const std::vector<std::string>& flags)
 
 LoadedInput load_input_scene(const fs::path& input, const std::vector<std::string>& disable,
                              const std::string& preset) {
-  std::error_code ec;
-  if (!fs::is_regular_file(input, ec)) fail_input("input file not found", input.string());
+  check_input_file(input, input.extension() == ".toml" ? "scene file" : "input file");
   LoadedInput in;
   in.path = input;
   if (input.extension() == ".toml") {

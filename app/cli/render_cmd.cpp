@@ -23,6 +23,7 @@
 #include "render/tiles.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
+#include "cli/flag_checks.h"
 #include "cli/input.h"
 #include "live/render_watch.h"
 
@@ -32,36 +33,42 @@ namespace fs = std::filesystem;
 CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene (.toml) or a Shadertoy shader (.glsl) to an image");
   cmd->add_option("input", a.input, "Scene .toml or Shadertoy .glsl/.frag")->required();
-  cmd->add_option("-o,--output", a.output, "Output image: .png .jpg .tif (8-bit sRGB) or .exr (linear float)");
-  cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)");
-  cmd->add_option("--time", a.time, "Scene time in seconds (default 0)")->each([&a](const std::string&) {
-    a.time_set = true;
-  });
-  cmd->add_option("--spp", a.spp, "Samples per pixel, stratified (default: the scene's)");
+  cmd->add_option("-o,--output", a.output, "Output image: .png .jpg .tif (8-bit sRGB) or .exr (linear float)")
+      ->check(not_empty());
+  cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
+  cmd->add_option("--time", a.time, "Scene time in seconds (default 0)")
+      ->check(seconds_value())
+      ->each([&a](const std::string&) { a.time_set = true; });
+  cmd->add_option("--spp", a.spp, "Samples per pixel, stratified, 1..1024 (default: the scene's)")
+      ->check(CLI::Range(1, 1024));
   cmd->add_option("--frame", a.frame, "Frame number (uFrame / iFrame)");
   cmd->add_option("--backend", a.backend, "GL context: auto, egl or osmesa")
-      ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+      ->check(one_of(kBackendNames));
   cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
   cmd->add_option("--preset", a.preset,
                   "Quality preset: fast, balanced, reference or textbook (default: the scene's; its explicit "
                   "[quality] keys still apply)")
-      ->check(CLI::IsMember(quality_preset_names()));
+      ->check(one_of(quality_preset_names()));
   cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter")
       ->delimiter(',')
-      ->check(CLI::IsMember({"shadows", "reflections", "ao", "checker-filter"}));
+      ->check(one_of(kEffectNames));
   cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
-  cmd->add_option("--frames", a.frames, "Render frames A..B (both included) to -o PATTERN, e.g. out/f_%04d.png");
+  cmd->add_option("--frames", a.frames, "Render frames A..B (both included) to -o PATTERN, e.g. out/f_%04d.png")
+      ->check(not_empty());
   cmd->add_option("--fps", a.fps, "Frames per second of --frames: frame f is at time f / fps (default 24)")
       ->each([&a](const std::string&) { a.fps_set = true; });
-  cmd->add_option("--shard", a.shard, "Render only shard I of N (I/N, from 0) of --frames");
-  cmd->add_option("--shard-mode", a.shard_mode, "How --shard splits the frames: stride (default) or chunk");
-  cmd->add_option("--video", a.video, "Encode the --frames sequence with ffmpeg into this file (e.g. out.mp4)");
+  cmd->add_option("--shard", a.shard, "Render only shard I of N (I/N, from 0) of --frames")->check(not_empty());
+  cmd->add_option("--shard-mode", a.shard_mode, "How --shard splits the frames: stride (default) or chunk")
+      ->check(one_of({"stride", "chunk"}));
+  cmd->add_option("--video", a.video, "Encode the --frames sequence with ffmpeg into this file (e.g. out.mp4)")
+      ->check(not_empty());
   cmd->add_flag("--no-write", a.no_write, "Render --frames but write nothing (throughput measurements)")
       ->group("");
   cmd->add_option("--aov", a.aov,
                   "Add AOV channels to the .exr: depth, normal, steps, material, shadow, ao, cost, hit "
                   "(see docs/usage.md)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(one_of(kAovNames));
   cmd->add_flag("-v,--verbose", a.verbose, "Print the backend, GL renderer and timings");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Build the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
@@ -218,7 +225,7 @@ int run_render(const RenderArgs& a) {
     const std::string what = std::to_string(nonfinite) + " of " +
                              std::to_string(static_cast<long long>(fp.width) * fp.height) +
                              " pixels have NaN/Inf values";
-    if (a.strict) throw Error({Exit::threshold, input.string(), 0, "--strict", what + "; nothing written", {}});
+    if (a.strict) throw Error({Exit::threshold, input.string(), 0, "--strict", what + "; nothing written", {}, {}});
     std::fprintf(stderr, "marchstudio: %s: warning: %s (--strict makes this an error)\n", input.string().c_str(),
                  what.c_str());
   }

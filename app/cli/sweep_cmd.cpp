@@ -13,6 +13,7 @@
 #include "bench/plot.h"
 #include "bench/sweep.h"
 #include "bench/sweep_report.h"
+#include "cli/flag_checks.h"
 #include "cli/input.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
@@ -35,18 +36,18 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   cmd->add_option("--spp", a.spp, "Samples per pixel of every row and of the same-spp reference (default 1)");
   cmd->add_option("--ref-spp", a.ref_spp, "Samples per pixel of the supersampled reference (default 16)");
   cmd->add_option("--grid", a.grid, "quick (about 30 rows) or full (adds a tracer factorial, about 80)")
-      ->check(CLI::IsMember({"quick", "full"}));
+      ->check(one_of({"quick", "full"}));
   cmd->add_option("--time-by", a.time_by,
                   "The frame time the fronts and the plot use: gpu (GL timer), wall, cpu (this process's CPU time: "
                   "steadier on a shared machine), or auto (default: cpu on a software GL such as llvmpipe, else gpu)")
-      ->check(CLI::IsMember({"auto", "gpu", "wall", "cpu"}));
+      ->check(one_of({"auto", "gpu", "wall", "cpu"}));
   cmd->add_option("--preset", a.preset, "The preset the rows vary around (default balanced)")
-      ->check(CLI::IsMember(quality_preset_names()));
+      ->check(one_of(quality_preset_names()));
   cmd->add_option("--only", a.only, "Measure only these rows of the grid, by name (e.g. textbook,balanced)")
       ->delimiter(',');
   cmd->add_option("-o,--out", a.out, "Directory for <scene>.sweep.csv, .json and .png (default .)");
   cmd->add_option("--backend", a.backend, "GL context: auto, egl or osmesa")
-      ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+      ->check(one_of(kBackendNames));
   cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
   cmd->add_option("--allow-include", a.allow_include,
                   "Let #include read files under DIR too (default: the scene's directory and the shader dir)");

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <regex>
 
+#include "cli/flag_checks.h"
 #include "cli/input.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
+#include "io/input_file.h"
 #include "live/viewer.h"
 #include "scene/load.h"
 
@@ -18,7 +20,7 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   CLI::App* cmd = app.add_subcommand("view", "Open a window on a scene (.toml) or Shadertoy shader (.glsl); "
                                              "reloads on every save (docs/viewer.md)");
   cmd->add_option("input", a.input, "Scene .toml or Shadertoy .glsl/.frag")->required();
-  cmd->add_option("--size", a.size, "Window size WxH (default: the scene's, at most 1280x720)");
+  cmd->add_option("--size", a.size, "Window size WxH (default: the scene's, at most 1280x720)")->check(not_empty());
   cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
   cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
   cmd->add_option("--debug-view", a.debug_view,
@@ -58,8 +60,7 @@ int run_view(const ViewArgs& a) {
   // include error in the window instead of exiting); a bare Shadertoy file
   // goes through the same loader as `render`.
   o.load = [input, opts]() -> Scene {
-    std::error_code ec;
-    if (!fs::is_regular_file(input, ec)) fail_input("input file not found", input.string());
+    check_input_file(input, input.extension() == ".toml" ? "scene file" : "input file");
     if (input.extension() == ".toml") return load_scene(input);
     return load_input(input, {}, opts).scene;
   };

@@ -131,8 +131,9 @@ double key_number(const Reader& r, const toml::node& n, const std::string& name,
   else if (const auto* f = n.as_floating_point()) v = f->get();
   else r.fail(n, name, quote(name) + " must be a number");
   if (!std::isfinite(v)) r.fail(n, name, quote(name) + " must be a finite number, got " + format_number(v));
-  if (is_time) return v;
+  // Times too: they reach the shader as a float, as [render] time does.
   if (std::abs(v) > FLT_MAX) r.fail(n, name, quote(name) + " = " + format_number(v) + " is too large for a 32-bit float");
+  if (is_time) return v;
   if (!range.contains(v))
     r.fail(n, name, quote(name) + " must be " + range.describe() + ", got " + format_number(v),
            "it is a value of " + target);

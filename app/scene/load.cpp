@@ -305,6 +305,23 @@ void resolve_sources(const Reader& r, const toml::table* t, const fs::path& disp
   scene.map_file = resolve_glsl(r, *t, display_path, "map");
 }
 
+// A Shadertoy shader draws everything itself: of the scene file it takes
+// only [scene] and [render]'s size, samples, time and exposure. Anything
+// else would be silently dropped, so it is an error at its line.
+void check_shadertoy_wrapper(const Reader& r, const toml::table& root) {
+  const std::string hint = "a [scene] shadertoy wrapper takes [scene] and [render] width, height, spp, time, exposure";
+  for (auto&& [k, v] : root) {
+    const std::string key(k.str());
+    if (key == "scene" || key == "render") continue;
+    int line = static_cast<int>(v.source().begin.line);
+    if (const toml::array* a = v.as_array(); a && !a->empty()) line = static_cast<int>((*a)[0].source().begin.line);
+    r.fail(line, key, quote(key) + " has no effect on a Shadertoy shader", hint);
+  }
+  if (const toml::table* render = root["render"].as_table(); render && render->contains("tonemap"))
+    r.fail(Reader::line_of(*render, "tonemap"), "render.tonemap",
+           "'render.tonemap' has no effect on a Shadertoy shader", "its output is display-referred already");
+}
+
 }  // namespace
 
 Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
@@ -320,6 +337,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
   if (st) {
     schema.check(r, *st, "scene", "scene");
     r.read(*st, "scene", "name", scene.name);
+    if (st->contains("shadertoy")) check_shadertoy_wrapper(r, root);
   }
   const toml::table* camera = read_section(r, schema, root, "camera", kCameraFields, scene.camera);
   check_camera(r, camera, scene.camera);

@@ -1,0 +1,101 @@
+#include "cli/flag_checks.h"
+
+#include <cfloat>
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
+#include "scene/suggest.h"
+
+namespace ms {
+
+const std::vector<std::string> kBackendNames = {"auto", "egl", "osmesa"};
+const std::vector<std::string> kEffectNames = {"shadows", "reflections", "ao", "checker-filter"};
+
+namespace {
+
+std::string hint_for(const std::string& word, const std::vector<std::string>& names) {
+  std::vector<std::string_view> views(names.begin(), names.end());
+  const std::string d = did_you_mean(word, views);
+  return d.empty() ? "" : " (" + d + ")";
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + names[i];
+  return out;
+}
+
+}  // namespace
+
+CLI::Validator one_of(std::vector<std::string> names) {
+  const std::string desc = "{" + joined(names) + "}";
+  return CLI::Validator(
+      [names](std::string& v) -> std::string {
+        for (const std::string& n : names)
+          if (v == n) return {};
+        return "'" + v + "' is not one of " + joined(names) + hint_for(v, names);
+      },
+      desc);
+}
+
+CLI::Validator not_empty() {
+  return CLI::Validator([](std::string& v) -> std::string { return v.empty() ? "must not be empty" : ""; }, "");
+}
+
+CLI::Validator seconds_value() {
+  return CLI::Validator(
+      [](std::string& v) -> std::string {
+        char* end = nullptr;
+        const double t = std::strtod(v.c_str(), &end);
+        if (end == v.c_str() || *end != '\0') return "'" + v + "' is not a number of seconds";
+        if (!std::isfinite(t)) return "must be a finite number of seconds";
+        if (std::abs(t) > FLT_MAX) return v + " is too large for a 32-bit float";
+        return {};
+      },
+      "SECONDS");
+}
+
+std::string unknown_subcommand(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-' || argv[1][0] == '\0') return {};
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    if (sub->get_name() == argv[1]) return {};
+    names.push_back(sub->get_name());
+  }
+  return "unknown subcommand '" + std::string(argv[1]) + "'" + hint_for(argv[1], names) + "; one of " + joined(names);
+}
+
+std::string explain_extras(const CLI::App& app, const CLI::ExtrasError& e) {
+  // The subcommand that was parsed, else the top level.
+  const CLI::App* where = &app;
+  for (const CLI::App* sub : app.get_subcommands()) where = sub;
+  std::vector<std::string> flags;
+  for (const CLI::Option* o : where->get_options()) {
+    for (const std::string& n : o->get_lnames()) flags.push_back("--" + n);
+    for (const std::string& n : o->get_snames()) flags.push_back("-" + n);
+  }
+  std::string out = e.what();
+  const std::string prefix = "The following argument was not expected: ";
+  const std::string prefixes = "The following arguments were not expected: ";
+  std::string rest = out.rfind(prefix, 0) == 0 ? out.substr(prefix.size())
+                     : out.rfind(prefixes, 0) == 0 ? out.substr(prefixes.size())
+                                                   : "";
+  if (rest.empty()) return out;
+  // A misspelt flag's value comes out as an extra too: name the flag.
+  std::string first = rest.substr(0, rest.find(' '));
+  for (size_t at = 0; at < rest.size();) {
+    const size_t end = std::min(rest.find(' ', at), rest.size());
+    if (rest[at] == '-') {
+      first = rest.substr(at, end - at);
+      break;
+    }
+    at = end + 1;
+  }
+  const size_t eq = first.find('=');
+  if (eq != std::string::npos) first.resize(eq);
+  if (first.empty() || first[0] != '-') return "unexpected argument '" + first + "'";
+  return "unknown flag '" + first + "' for '" + where->get_name() + "'" + hint_for(first, flags);
+}
+
+}  // namespace ms
