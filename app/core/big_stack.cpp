@@ -1,6 +1,7 @@
 #include "core/big_stack.h"
 
 #include <pthread.h>
+#include <signal.h>
 
 #include <exception>
 
@@ -31,7 +32,14 @@ bool run_with(Call& call, std::size_t bytes) {
                     pthread_create(&thread, &attr, trampoline, &call) == 0;
   pthread_attr_destroy(&attr);
   if (!made) return false;
+  // Signals sent to the process go to the thread that runs the program, as
+  // they went to the main thread before: there, handlers and signalfd
+  // masks (render --watch, sequences) see them. This thread only waits.
+  sigset_t all, old;
+  sigfillset(&all);
+  pthread_sigmask(SIG_BLOCK, &all, &old);
   pthread_join(thread, nullptr);
+  pthread_sigmask(SIG_SETMASK, &old, nullptr);
   return true;
 }
 

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -14,7 +15,12 @@ Deadline Deadline::after(double seconds) {
   if (!(seconds > 0.0) || !std::isfinite(seconds)) return d;
   d.limited_ = true;
   d.seconds_ = seconds;
-  d.at_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+  // The clock counts nanoseconds in 64 bits (292 years): a longer limit
+  // would wrap into the past and expire at once. Beyond a century, a
+  // century: no limit in practice, and room for the watchdog's grace.
+  constexpr double kCentury = 100.0 * 365.25 * 24 * 3600;
+  d.at_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                             std::chrono::duration<double>(std::min(seconds, kCentury)));
   return d;
 }
 
@@ -28,7 +34,7 @@ ErrorInfo timeout_info(const std::string& what, double seconds) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", seconds);
   return ErrorInfo{Exit::system, {}, 0, "--timeout", what + " did not finish within " + buf + " s",
-                   "a shader loop that never ends, or more work than the time allows"};
+                   "a shader loop that never ends, or more work than the time allows", {}};
 }
 
 }  // namespace

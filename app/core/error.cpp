@@ -46,11 +46,11 @@ std::string format_error(const ErrorInfo& e) {
 Error::Error(ErrorInfo info) : std::runtime_error(format_error(info)), info_(std::move(info)) {}
 
 void fail_input(std::string what, std::string file, int line, std::string key, std::string hint) {
-  throw Error({Exit::bad_input, std::move(file), line, std::move(key), std::move(what), std::move(hint)});
+  throw Error({Exit::bad_input, std::move(file), line, std::move(key), std::move(what), std::move(hint), {}});
 }
 
 void fail_system(std::string what, std::string file) {
-  throw Error({Exit::system, std::move(file), 0, {}, std::move(what), {}});
+  throw Error({Exit::system, std::move(file), 0, {}, std::move(what), {}, {}});
 }
 
 }  // namespace ms

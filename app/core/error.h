@@ -22,6 +22,9 @@ struct ErrorInfo {
   std::string key;   // dotted TOML key or flag name, empty when none
   std::string what;  // the message, without file/line
   std::string hint;  // e.g. "did you mean 'light'?", empty when none
+  // More than the line holds, printed after it with -v: a compile error's
+  // whole driver log, each location mapped to file:line. Empty when none.
+  std::string detail;
 };
 
 class Error : public std::runtime_error {

@@ -29,14 +29,17 @@ constexpr ImGuiWindowFlags kOverlayFlags = ImGuiWindowFlags_NoDecoration | ImGui
                                            ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                            ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
 
-void draw_error(const std::string& error) {
+void draw_error(const std::string& error, bool have_frame) {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(10.0f, size.y - 10.0f), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
   ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(size.x - 20.0f, size.y * 0.5f));
   ImGui::PushStyleColor(ImGuiCol_WindowBg, IM_COL32(60, 0, 0, 230));
   ImGui::PushStyleColor(ImGuiCol_Border, IM_COL32(255, 80, 80, 255));
   ImGui::Begin("##error", nullptr, kOverlayFlags);
-  ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.6f, 1.0f), "Reload failed; showing the last good frame");
+  // Before the first good build there is no frame to keep.
+  ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.6f, 1.0f), "%s",
+                     have_frame ? "Reload failed; showing the last good frame"
+                                : "Build failed; nothing to show until the shader compiles");
   ImGui::PushTextWrapPos(size.x - 40.0f);
   ImGui::TextUnformatted(error.c_str());
   ImGui::PopTextWrapPos();
@@ -94,7 +97,7 @@ void draw_overlay(const ViewState& s, const Session& session) {
     if (view == 1) draw_legend(session.scene());
     ImGui::End();
   }
-  if (!session.error().empty()) draw_error(session.error());
+  if (!session.error().empty()) draw_error(session.error(), session.generation() > 0);
   if (!s.message.empty() && s.now < s.message_until) {
     ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 10.0f - (session.error().empty() ? 0.0f : 90.0f)),
                             ImGuiCond_Always, ImVec2(0.5f, 1.0f));

@@ -33,9 +33,16 @@ std::string program_log(GLuint program) { return info_log(program, glGetProgrami
     ++errors;
   }
   if (!first && !diags.empty()) first = &diags.front();
-  std::string hint = errors > 1 ? "+" + std::to_string(errors - 1) + " more" : "";
+  std::string hint = errors > 1 ? "+" + std::to_string(errors - 1) + " more; -v prints them all" : "";
   if (!first) fail_input(stage + " failed with an empty log", src.files.empty() ? "" : src.files[0]);
-  fail_input(stage + " error: " + first->message, first->file, first->line, {}, hint);
+  // The whole log, mapped, for -v: what "+N more" stands for.
+  std::string detail;
+  for (const ShaderDiagnostic& d : diags) {
+    if (!d.file.empty()) detail += d.file + (d.line > 0 ? ":" + std::to_string(d.line) : "") + ": ";
+    if (!d.severity.empty()) detail += d.severity + ": ";
+    detail += d.message + "\n";
+  }
+  throw Error(ErrorInfo{Exit::bad_input, first->file, first->line, {}, stage + " error: " + first->message, hint, detail});
 }
 
 GLuint compile(GLenum type, const std::string& text, const ShaderSource& src, const char* stage) {

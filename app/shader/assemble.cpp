@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "shader/glsl_scan.h"
 #include "shader/specialize.h"
 
 namespace ms {
@@ -190,7 +191,12 @@ ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts) {
   root += "#include \"operators.glsl\"\n";
   root += "#include \"" + map_path + "\"\n";
   root += "#include \"main.frag\"\n";
-  return preprocess(root, scene_display_name(scene) + ".frag (generated)", opts.shader_dir, popts);
+  ShaderSource src = preprocess(root, scene_display_name(scene) + ".frag (generated)", opts.shader_dir, popts);
+  // Without it the driver would blame the library line that calls map().
+  if (find_definition(strip_comments(src.text), "map", "vec2") == std::string::npos)
+    fail_input("the map file defines no map() function", display_path(scene.file), 0, "scene.map",
+               "define vec2 map(vec3 p), returning the distance and a material id");
+  return src;
 }
 
 // tonemap.glsl's TONEMAP values.

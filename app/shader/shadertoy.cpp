@@ -9,50 +9,13 @@
 
 #include "io/input_file.h"
 #include "core/error.h"
+#include "shader/glsl_scan.h"
 
 namespace ms {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// Comments replaced by spaces, newlines kept, so offsets still give lines.
-std::string strip_comments(std::string_view s) {
-  std::string out(s);
-  for (size_t i = 0; i < out.size(); ++i) {
-    if (out[i] != '/' || i + 1 >= out.size()) continue;
-    if (out[i + 1] == '/') {
-      while (i < out.size() && out[i] != '\n') out[i++] = ' ';
-    } else if (out[i + 1] == '*') {
-      out[i] = out[i + 1] = ' ';
-      for (i += 2; i < out.size() && !(out[i] == '*' && i + 1 < out.size() && out[i + 1] == '/'); ++i)
-        if (out[i] != '\n') out[i] = ' ';
-      if (i < out.size()) out[i] = out[i + 1] = ' ';
-      ++i;
-    }
-  }
-  return out;
-}
-
-// Offset of the first `void <name> (` (as whole words, any whitespace) in
-// comment-free code, npos when none. A scan, not std::regex: libstdc++'s
-// regex recurses once per character of a \s+ run, so a shader with 50 KB of
-// spaces after `void` overflowed the stack (a long fuzz_shadertoy input).
-size_t find_definition(std::string_view code, std::string_view name) {
-  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; };
-  for (size_t at = code.find("void"); at != std::string_view::npos; at = code.find("void", at + 1)) {
-    if (at > 0 && word(code[at - 1])) continue;
-    size_t i = at + 4;
-    const size_t gap = i;
-    while (i < code.size() && space(code[i])) ++i;
-    if (i == gap || code.substr(i, name.size()) != name) continue;
-    i += name.size();
-    while (i < code.size() && space(code[i])) ++i;
-    if (i < code.size() && code[i] == '(') return at;
-  }
-  return std::string_view::npos;
-}
 
 // The part of the wrapper before the user's file. Shadertoy's uniform set,
 // spelled as on shadertoy.com so shaders paste in unchanged.
@@ -126,9 +89,17 @@ ShaderSource assemble_shadertoy(const fs::path& glsl_file, const AssembleOptions
   root += wrapper_tail();
   ShaderSource src = preprocess(root, display_path(abs) + " (shadertoy wrapper)", abs.parent_path(), popts);
   // mainImage may come from a file the shader includes, so look after expansion.
-  if (find_definition(strip_comments(src.text), "mainImage") == std::string_view::npos)
-    fail_input("no mainImage() found in the Shadertoy shader", display_path(abs), 0, {},
-               "define void mainImage(out vec4 fragColor, in vec2 fragCoord)");
+  if (find_definition(strip_comments(src.text), "mainImage") == std::string_view::npos) {
+    // A scene's map file handed over by mistake: point at its scene.
+    fs::path toml = abs;
+    toml.replace_extension(".toml");
+    std::string hint = "define void mainImage(out vec4 fragColor, in vec2 fragCoord)";
+    if (find_definition(code, "map", "vec2") != std::string_view::npos)
+      hint = fs::is_regular_file(toml, ec) ? "it defines map(): render its scene, " + display_path(toml)
+                                           : "it defines map(): a map file is rendered through a scene .toml whose "
+                                             "[scene] map names it (docs/scene-format.md)";
+    fail_input("no mainImage() found in the Shadertoy shader", display_path(abs), 0, {}, hint);
+  }
   return src;
 }
 
