@@ -172,7 +172,7 @@ int run_sequence(const RenderArgs& a) {
     ffmpeg = find_on_path("ffmpeg");
     if (ffmpeg.empty())
       throw Error(ErrorInfo{Exit::system, {}, 0, "--video", "ffmpeg is not installed (not found on PATH)",
-                            "install it (Debian: apt-get install ffmpeg), or drop --video and encode the frames later"});
+                            "install it (Debian: apt-get install ffmpeg), or drop --video and encode the frames later", {}});
   }
 
   // --timeout: loading and compiling get one budget, then each frame its own.
@@ -225,6 +225,8 @@ int run_sequence(const RenderArgs& a) {
 
   int stop_signal = 0;
   double render_s = 0, wait_s = 0, loop_s = 0, writer_busy_s = 0;
+  // From here to the end, encoding included: Ctrl-C and SIGTERM stop cleanly.
+  StopSignals signals;
   if (!todo.empty()) {
     std::unique_ptr<Context> ctx = create_headless_context(parse_backend(a.backend));
     if (a.verbose)
@@ -243,7 +245,6 @@ int run_sequence(const RenderArgs& a) {
           std::fflush(stdout);
         },
         {}, writer_threads());
-    StopSignals signals;
     progress.start();
     const auto loop_start = std::chrono::steady_clock::now();
     deadline.check("loading and compiling");
@@ -299,7 +300,7 @@ int run_sequence(const RenderArgs& a) {
                                  " pixels have NaN/Inf values";
         if (a.strict) {
           writer.finish();  // the frames before it are good: written, so a rerun resumes after them
-          throw Error({Exit::threshold, a.input, 0, "--strict", what + "; it is not written", {}});
+          throw Error({Exit::threshold, a.input, 0, "--strict", what + "; it is not written", {}, {}});
         }
         std::fprintf(stderr, "marchstudio: %s: warning: %s (--strict makes this an error)\n", a.input.c_str(),
                      what.c_str());
@@ -327,13 +328,19 @@ int run_sequence(const RenderArgs& a) {
                 "%.2f s; %zu skipped",
                 done, loop_s, loop_s > 0 ? done / loop_s : 0.0, render_s, wait_s, writer_busy_s, scan.skipped.size());
   progress.line(summary);
-  if (stop_signal != 0) {
-    progress.line(std::string("stopped by ") + (stop_signal == SIGINT ? "SIGINT" : "SIGTERM") +
+  const auto stopped = [&](int sig) {
+    progress.line(std::string("stopped by ") + (sig == SIGINT ? "SIGINT" : "SIGTERM") +
                   ": the frames rendered so far are written; run the same command again to render the rest");
-    return 128 + stop_signal;
-  }
+    return 128 + sig;
+  };
+  if (stop_signal != 0) return stopped(stop_signal);
   if (!a.video.empty()) {
-    encode_video(VideoJob{ffmpeg, plan.pattern, plan.range.first, plan.fps, a.video});
+    for (const fs::path& p : remove_stale_video_temps(a.video))
+      std::fprintf(stderr, "marchstudio: removed %s, left by an interrupted encode\n", p.string().c_str());
+    // The encoding gets one --timeout of its own, as each frame does.
+    VideoJob job{ffmpeg, plan.pattern, plan.range.first, plan.fps, a.video, Deadline::after(a.timeout),
+                 [&signals] { return signals.signal(); }};
+    if (!encode_video(job)) return stopped(signals.signal());
     std::printf("%s\n", a.video.c_str());
   }
   return 0;

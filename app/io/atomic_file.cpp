@@ -68,8 +68,27 @@ bool is_temp_of(std::string_view name, const fs::path& target) {
   return false;
 }
 
+void check_output_directory(const fs::path& dir, const std::string& key) {
+  std::error_code ec;
+  fs::path existing = dir;
+  while (!existing.empty() && !fs::exists(existing, ec)) existing = existing.parent_path();
+  if (existing.empty()) existing = ".";
+  if (!fs::is_directory(existing, ec))
+    fail_input(existing == dir ? "output directory is not a directory"
+                               : "output directory cannot be made: " + existing.string() + " is not a directory",
+               dir.string(), 0, key);
+  if (::access(existing.c_str(), W_OK) != 0)
+    fail_input(existing == dir ? "output directory is not writable"
+                               : "output directory cannot be made: " + existing.string() + " is not writable",
+               dir.string(), 0, key);
+}
+
 AtomicFile::AtomicFile(fs::path target, bool keep_extension)
     : target_(std::move(target)), temp_(temp_path_for(target_, ::getpid(), keep_extension)) {
+  std::error_code ec;
+  if (!target_.parent_path().empty() && !fs::is_directory(target_.parent_path(), ec) &&
+      !fs::create_directories(target_.parent_path(), ec) && ec)
+    fail_system("cannot make the output directory: " + ec.message(), target_.parent_path().string());
   // O_EXCL: a name someone else made is never written through.
   fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd_ < 0 && errno == EEXIST) {  // a stale one of this pid (a reused pid): ours to replace

@@ -24,8 +24,8 @@ namespace ms {
 
 class AtomicFile {
  public:
-  // Creates the temporary (temp_path_for(target, pid)); throws system when
-  // it cannot be created.
+  // Creates the temporary (temp_path_for(target, pid)), and the target's
+  // directory first when missing; throws system when either cannot be made.
   explicit AtomicFile(std::filesystem::path target, bool keep_extension = false);
   ~AtomicFile();  // without commit(): the temporary is removed
   AtomicFile(const AtomicFile&) = delete;
@@ -66,6 +66,11 @@ std::filesystem::path temp_path_for(const std::filesystem::path& target, long pi
 
 // Whether `name` (a file name) is a temporary of `target` by any process.
 bool is_temp_of(std::string_view name, const std::filesystem::path& target);
+
+// Check before any work that files can be written in `dir`: a writable
+// directory, or one that can be made (mkdir -p) under the nearest existing
+// one; AtomicFile makes it. Throws bad_input naming `key`.
+void check_output_directory(const std::filesystem::path& dir, const std::string& key);
 
 // The file system's limit on one name in `dir` (NAME_MAX, usually 255).
 std::size_t name_limit(const std::filesystem::path& dir);

@@ -33,11 +33,8 @@ void check_output_path(const fs::path& path) {
   image_format_for(path);
   if (path.filename().empty()) fail_input("output path names no file", path.string(), 0, "-o");
   const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  check_output_directory(dir, "-o");
   std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    fail_input("output directory does not exist", dir.string(), 0, "-o");
-  if (::access(dir.c_str(), W_OK) != 0)
-    fail_input("output directory is not writable", dir.string(), 0, "-o");
   if (fs::is_directory(path, ec)) fail_input("output path is a directory", path.string(), 0, "-o");
   const std::size_t name = path.filename().string().size(), limit = name_limit(dir);
   if (name > limit)

@@ -1,8 +1,11 @@
 #include "io/video.h"
 
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
+#include <cctype>
 
 #include <cerrno>
 #include <cstdio>
@@ -13,7 +16,6 @@
 #include "io/atomic_file.h"
 #include "core/error.h"
 
-extern char** environ;
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -21,7 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 
 [[noreturn]] void fail_video(Exit code, std::string what, std::string file, std::string hint = {}) {
-  throw Error(ErrorInfo{code, std::move(file), 0, "--video", std::move(what), std::move(hint)});
+  throw Error(ErrorInfo{code, std::move(file), 0, "--video", std::move(what), std::move(hint), {}});
 }
 
 }  // namespace
@@ -47,14 +49,30 @@ fs::path find_on_path(const std::string& program) {
 void check_video_path(const fs::path& out) {
   if (out.filename().empty() || out.extension().empty())
     fail_video(Exit::bad_input, "the video file needs a name with an extension", out.string(), "e.g. out.mp4");
-  const fs::path dir = out.parent_path().empty() ? fs::path(".") : out.parent_path();
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) fail_video(Exit::bad_input, "output directory does not exist", dir.string());
-  if (::access(dir.c_str(), W_OK) != 0) fail_video(Exit::bad_input, "output directory is not writable", dir.string());
+  check_output_directory(out.parent_path().empty() ? fs::path(".") : out.parent_path(), "--video");
 }
 
-void encode_video(const VideoJob& job) {
+namespace {
+
+// Ends ffmpeg: SIGTERM, two seconds to finish, then SIGKILL; reaped.
+void end_child(pid_t pid) {
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  for (int i = 0; i < 200; ++i) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) return;
+    ::usleep(10000);
+  }
+  ::kill(pid, SIGKILL);
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+}
+
+}  // namespace
+
+bool encode_video(const VideoJob& job) {
   const fs::path tmp = temp_path_for(job.output, ::getpid(), true);  // ffmpeg picks the container by the extension
+  std::error_code mk;
+  if (!job.output.parent_path().empty()) fs::create_directories(job.output.parent_path(), mk);
   char fps[64];
   std::snprintf(fps, sizeof fps, "%.17g", job.fps);
   // yuv420p: what players accept; it needs even sizes, hence the pad.
@@ -65,13 +83,32 @@ void encode_video(const VideoJob& job) {
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (const int err = posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ))
-    fail_video(Exit::system, std::string("cannot start ffmpeg: ") + std::strerror(err), job.ffmpeg.string());
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) fail_video(Exit::system, "lost track of ffmpeg", job.ffmpeg.string());
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid < 0) fail_video(Exit::system, std::string("cannot start ffmpeg: ") + std::strerror(errno), job.ffmpeg.string());
+  if (pid == 0) {
+    // Only async-signal-safe calls here. If marchstudio dies, even by
+    // SIGKILL, ffmpeg goes too instead of writing on as an orphan.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
   std::error_code ec;
+  int status = 0;
+  for (;;) {
+    const pid_t r = ::waitpid(pid, &status, WNOHANG);
+    if (r == pid) break;
+    if (r < 0 && errno != EINTR) fail_video(Exit::system, "lost track of ffmpeg", job.ffmpeg.string());
+    const bool stop = job.stop_signal && job.stop_signal() != 0;
+    if (stop || job.deadline.expired()) {
+      end_child(pid);
+      fs::remove(tmp, ec);
+      if (stop) return false;
+      job.deadline.check("encoding the video");
+    }
+    ::usleep(10000);
+  }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     fs::remove(tmp, ec);
     const std::string how = WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
@@ -84,6 +121,27 @@ void encode_video(const VideoJob& job) {
     fs::remove(tmp, ec);
     fail_video(Exit::system, "cannot rename the encoded video into place", job.output.string());
   }
+  return true;
+}
+
+std::vector<fs::path> remove_stale_video_temps(const fs::path& output) {
+  std::vector<fs::path> removed;
+  const fs::path dir = output.parent_path().empty() ? fs::path(".") : output.parent_path();
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (!is_temp_of(name, output)) continue;
+    // The pid is the digits before the extension; a live one is another encode.
+    const std::string ext = output.extension().string();
+    const bool ext_last = name.size() >= ext.size() && name.compare(name.size() - ext.size(), ext.size(), ext) == 0;
+    const size_t end = ext_last ? name.size() - ext.size() : name.size();
+    size_t start = end;
+    while (start > 0 && std::isdigit(static_cast<unsigned char>(name[start - 1]))) --start;
+    const long pid = std::atol(name.substr(start, end - start).c_str());
+    if (pid > 0 && pid != ::getpid() && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM)) continue;
+    if (fs::remove(e.path(), ec)) removed.push_back(e.path());
+  }
+  return removed;
 }
 
 }  // namespace ms

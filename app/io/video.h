@@ -3,7 +3,11 @@
 // patterns and paths need no quoting.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <vector>
+
+#include "core/deadline.h"
 
 namespace ms {
 
@@ -22,11 +26,20 @@ struct VideoJob {
   int first_frame = 0;
   double fps = 24.0;
   std::filesystem::path output;
+  Deadline deadline;                 // --timeout for the encoding (default: none)
+  std::function<int()> stop_signal;  // non-zero: a signal asked us to stop (may be empty)
 };
 
 // Run ffmpeg: H.264-compatible yuv420p (odd sizes padded to even), written
 // to a temporary beside `output` and renamed into place, as images are.
-// Throws system naming --video when ffmpeg cannot start or fails.
-void encode_video(const VideoJob& job);
+// ffmpeg dies with us (PR_SET_PDEATHSIG), and on a timeout or a stop
+// signal it is ended and its temporary removed. Returns false when stopped
+// by a signal; throws system naming --video when ffmpeg cannot start or
+// fails, and the --timeout error when the deadline passes.
+bool encode_video(const VideoJob& job);
+
+// Removes temporaries of `output` left by processes that no longer run
+// (a killed encode); returns them.
+std::vector<std::filesystem::path> remove_stale_video_temps(const std::filesystem::path& output);
 
 }  // namespace ms

@@ -25,6 +25,7 @@
 #include "live/watcher.h"
 #include "render/frame.h"
 #include "render/gpu_timer.h"
+#include "render/tiles.h"
 #include "scene/load.h"
 #include "scene/writeback.h"
 
@@ -213,8 +214,17 @@ int Viewer::run() {
     w = std::max(1, static_cast<int>(std::lround(first.render.width * fit)));
     h = std::max(1, static_cast<int>(std::lround(first.render.height * fit)));
   }
+  // As `render` checks its size: the memory budget and a window X11 can
+  // make before the window, the GL's limits once the context exists.
+  constexpr int kMaxWindowSide = 16384;
+  if (w > kMaxWindowSide || h > kMaxWindowSide)
+    fail_input("window size " + std::to_string(w) + "x" + std::to_string(h) + " exceeds " +
+                   std::to_string(kMaxWindowSide) + "x" + std::to_string(kMaxWindowSide),
+               {}, 0, "--size", "render large images with `marchstudio render --size`");
+  check_frame_memory(frame_memory(w, h, 2, false), w, h);
   std::unique_ptr<Context> ctx =
       create_window_context(w, h, "marchstudio view - " + o_.input.filename().string(), window_);
+  check_frame_size(ctx->info(), w, h);
   // The session's programs must go before the context, also on the way out
   // of an exception.
   struct ReleaseGl {
