@@ -31,10 +31,11 @@ void write_file(const fs::path& p, const std::string& text) {
 
 fs::path source_dir() { return MARCH_SOURCE_DIR; }
 
-RunResult run_marchstudio(const std::vector<std::string>& args, const fs::path& cwd) {
+RunResult run_marchstudio(const std::vector<std::string>& args, const fs::path& cwd, const std::string& shell_prefix) {
   TempDir io;
   std::string cmd;
   if (!cwd.empty()) cmd += "cd " + quote(cwd.string()) + " && ";
+  cmd += shell_prefix;
   cmd += quote(MARCH_BIN);
   for (const auto& a : args) cmd += " " + quote(a);
   cmd += " >" + quote((io / "out").string()) + " 2>" + quote((io / "err").string()) + " </dev/null";

@@ -14,7 +14,9 @@ struct RunResult {
 };
 
 // Arguments are shell-quoted; the working directory is `cwd` when given.
-RunResult run_marchstudio(const std::vector<std::string>& args, const std::filesystem::path& cwd = {});
+// `shell_prefix` runs in the same sh first, e.g. "ulimit -s 1024; ".
+RunResult run_marchstudio(const std::vector<std::string>& args, const std::filesystem::path& cwd = {},
+                          const std::string& shell_prefix = {});
 
 // A fresh empty directory under the system temp dir, removed by the destructor.
 class TempDir {

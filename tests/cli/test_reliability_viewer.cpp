@@ -234,5 +234,46 @@ TEST_F(ViewerAttack, AHundredSavesInOneSecondEndOnTheLast) {
             << " s (incl. settling): " << (k - 2) << " reloads\n";
 }
 
+// Issue 13: a macro bomb froze the viewer until the OOM killer took it, an
+// include diamond hung it (so --exit-after never fired), and a deep
+// expression crashed it. Each is now a failed reload within seconds, the
+// window keeps drawing, and the fix after them renders.
+TEST_F(ViewerAttack, BombsDiamondsAndDeepExpressionsFailTheReloadOnly) {
+  start();
+  std::string bomb = "#define A0 p.x\n";
+  for (int i = 1; i <= 29; ++i)
+    bomb += "#define A" + std::to_string(i) + " A" + std::to_string(i - 1) + ", A" + std::to_string(i - 1) + "\n";
+  for (int i = 0; i <= 40; ++i)
+    write_file(dir / ("f" + std::to_string(i) + ".glsl"),
+               i < 40 ? "#include \"f" + std::to_string(i + 1) + ".glsl\"\n#include \"f" + std::to_string(i + 1) +
+                            ".glsl\"\n"
+                      : "float leaf() { return 1.0; }\n");
+  std::string sum = "float deep(vec3 p) { return p.x";
+  for (int i = 0; i < 60000; ++i) sum += " + p.x";
+  sum += "; }\n";
+  const struct {
+    std::string prefix, says;
+  } attacks[] = {{bomb + "float bomb(vec3 p) { return vec4(A29).x; }\n", "macro expansion makes more than"},
+                 {"#include \"f0.glsl\"\n", "the shader is larger than 8 MiB"},
+                 {sum, "expression nested more than 50000 levels deep"}};
+  int k = 1;
+  for (const auto& a : attacks) {
+    const auto t0 = std::chrono::steady_clock::now();
+    save_by_rename(dir / "seed.glsl", map_glsl("MAT_BALL", "1.0", a.prefix));
+    const std::string line = wait_reload(k++, 60);
+    EXPECT_EQ(line.rfind("reload failed", 0), 0u) << line;
+    EXPECT_NE(line.find(a.says), std::string::npos) << line;
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 30.0) << a.says;
+    expect_still_drawing();
+  }
+  save_by_rename(dir / "seed.glsl", map_glsl("MAT_BALL", "1.3"));
+  const int last = settled_reload(1.5, 20);
+  ASSERT_GE(last, k);
+  ASSERT_EQ(wait_reload(last).rfind("reload ok", 0), 0u) << read_file(log());
+  ASSERT_FALSE(wait_for_line(log(), "^capture " + std::to_string(last) + " ", 10).empty());
+  EXPECT_GT(redness(capture(last)), redness(capture(0)) + 0.02);
+  expect_alive();
+}
+
 }  // namespace
 }  // namespace ms::test

@@ -186,7 +186,7 @@ TEST(ViewerStart, ExitCodesWithoutAWindow) {
   TempDir dir;
   RunResult r = run_marchstudio({"view", (dir / "missing.toml").string()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("missing.toml: input file not found"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("missing.toml: scene file not found"), std::string::npos) << r.err;
   BackgroundProcess proc({"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", MARCH_BIN, "view",
                           (source_dir() / "scenes/seed.toml").string()},
                          dir / "out.txt", dir / "err.txt");

@@ -49,13 +49,16 @@ TEST(RenderWatch, RerendersOnSaveAndStopsOnSigint) {
 }
 
 TEST(RenderWatch, ABadFlagStillExitsAtOnce) {
-  // No save can fix a missing output directory: exit 2 at once, not wait.
+  // No save can fix an output directory that cannot be made (a file is in
+  // the way): exit 2 at once, not wait.
   TempDir dir;
+  write_file(dir / "afile", "x");
   BackgroundProcess proc({MARCH_BIN, "render", "--watch", (source_dir() / "scenes/seed.toml").string(), "-o",
-                          (dir / "nodir/out.png").string()},
+                          (dir / "afile/sub/out.png").string()},
                          dir / "out.txt", dir / "err.txt");
   EXPECT_EQ(proc.wait_exit(20), 2) << read_file(dir / "err.txt");
-  EXPECT_NE(read_file(dir / "err.txt").find("output directory does not exist"), std::string::npos);
+  EXPECT_NE(read_file(dir / "err.txt").find("output directory cannot be made"), std::string::npos)
+      << read_file(dir / "err.txt");
 }
 
 }  // namespace

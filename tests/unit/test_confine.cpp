@@ -206,7 +206,8 @@ TEST_F(ConfineScene, MapOutsideTheSceneIsRefusedAtScenemap) {
     EXPECT_NE(std::string(e.what()).find("secret/secret.glsl"), std::string::npos) << e.what();
     EXPECT_EQ(std::string(e.what()).find(kSecret), std::string::npos) << e.what();
   }
-  // Widened: the same scene assembles and reads the file.
+  // Widened: the same scene assembles and reads the file (given a map()).
+  put(secret(), std::string("// ") + kSecret + "\nvec2 map(vec3 p) { return vec2(1.0, 0.0); }\n");
   opts.allow_include = {secret().parent_path()};
   EXPECT_NE(assemble_scene(s, opts).text.find(kSecret), std::string::npos);
 }
