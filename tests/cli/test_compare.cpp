@@ -230,5 +230,39 @@ TEST_F(Compare, DiffIntoAMissingDirectoryFailsBeforeReading) {
   EXPECT_NE(r.err.find("no/such/dir"), std::string::npos) << r.err;
 }
 
+// --warn and --exit-codes idiff: OpenImageIO idiff's codes (0 pass, 1 warn,
+// 2 fail, 4 could not run) for scripts written around it. PSNR of b is 59.99 dB.
+TEST_F(Compare, IdiffExitCodesAndAWarnLevel) {
+  const std::vector<std::string> idiff = {"--exit-codes", "idiff"};
+  auto with = [&](std::vector<std::string> x) {
+    x.insert(x.end(), idiff.begin(), idiff.end());
+    return compare(x);
+  };
+  EXPECT_EQ(with({"--threshold", "55"}).exit_code, 0);
+  const RunResult warn = with({"--threshold", "55", "--warn", "62"});
+  EXPECT_EQ(warn.exit_code, 1) << warn.err;
+  EXPECT_NE(warn.out.find("WARN: psnr 59.99 dB >= 55.00 dB, past the warn level 62.00 dB"), std::string::npos)
+      << warn.out;
+  EXPECT_NE(warn.err.find("warning"), std::string::npos) << warn.err;
+  EXPECT_EQ(with({"--threshold", "65"}).exit_code, 2);
+  EXPECT_EQ(with({"--metric", "max", "--threshold", "0.05", "--warn", "0.03"}).exit_code, 1);
+  EXPECT_EQ(with({"--metric", "max", "--threshold", "0.05", "--warn", "0.04"}).exit_code, 0);
+  // Could not run: a missing file, bad flags after parsing, a warn level past the threshold.
+  const RunResult missing = compare({"--exit-codes", "idiff"}, a, (dir / "nope.png").string());
+  EXPECT_EQ(missing.exit_code, 4);
+  EXPECT_NE(missing.err.find("nope.png"), std::string::npos) << missing.err;
+  EXPECT_EQ(with({"--threshold", "55", "--warn", "50"}).exit_code, 4);
+  // The default codes: a warning still passes, a bad warn level is bad input.
+  const RunResult plain = compare({"--threshold", "55", "--warn", "62"});
+  EXPECT_EQ(plain.exit_code, 0);
+  EXPECT_NE(plain.out.find("WARN"), std::string::npos);
+  expect_bad_input(compare({"--threshold", "55", "--warn", "50"}), "--warn");
+  expect_bad_input(compare({"--exit-codes", "oiio"}), "--exit-codes");
+  const RunResult j = compare({"--threshold", "55", "--warn", "62", "--json"});
+  EXPECT_EQ(json_field(j.out, "outcome"), "\"warn\"");
+  EXPECT_EQ(json_field(j.out, "warn"), "62.0");
+  EXPECT_EQ(json_field(j.out, "pass"), "true");
+}
+
 }  // namespace
 }  // namespace ms::test
