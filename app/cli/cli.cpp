@@ -10,6 +10,7 @@
 #include "cli/bench_cmd.h"
 #include "cli/compare_cmd.h"
 #include "cli/sweep_cmd.h"
+#include "cli/test_cmd.h"
 #include "core/error.h"
 
 namespace ms {
@@ -28,6 +29,8 @@ int run_cli(int argc, char** argv) {
   CLI::App* compare = add_compare_command(app, compare_args);
   SweepArgs sweep_args;
   CLI::App* sweep = add_sweep_command(app, sweep_args);
+  TestArgs test_args;
+  CLI::App* test = add_test_command(app, test_args);
 
   try {
     app.parse(argc, argv);
@@ -48,6 +51,7 @@ int run_cli(int argc, char** argv) {
     if (bench->parsed()) return run_bench_command(bench_args);
     if (compare->parsed()) return run_compare(compare_args);
     if (sweep->parsed()) return run_sweep_command(sweep_args);
+    if (test->parsed()) return run_test(test_args);
   } catch (const Error& e) {
     std::fprintf(stderr, "marchstudio: %s\n", e.what());
     return static_cast<int>(e.code());
