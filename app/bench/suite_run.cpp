@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -157,8 +158,13 @@ void check_time(Gl& gl, const Suite& suite, const PreparedCase& pc, const Prepar
   }
   FrameTime ft{summarize(case_all).median, summarize(cal_all).median, summarize(ratios).median, cpu ? "cpu" : "wall"};
   r.frame_time = ft;
-  const std::string what = "frame time " + format_value(ft.ratio) + "x " + suite.calibration + " (" +
-                           format_value(ft.case_ms) + " ms vs " + format_value(ft.calibration_ms) + " ms " + ft.clock + ")";
+  auto two = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2f", v);
+    return std::string(buf);
+  };
+  const std::string what = "frame time " + two(ft.ratio) + "x " + suite.calibration + "'s (" + two(ft.case_ms) +
+                           " ms vs " + two(ft.calibration_ms) + " ms of " + ft.clock + " time)";
   if (ft.ratio > b.max_ratio)
     budget(r, "frame_time_ratio", ft.ratio, b.max_ratio, Outcome::fail, what + " > " + format_value(b.max_ratio));
   else if (b.warn_ratio && ft.ratio > *b.warn_ratio)
@@ -308,6 +314,7 @@ void conclude(CaseResult& r) {
   if (fails.empty() && !r.updated.empty()) {
     r.message = "updated " + std::to_string(r.updated.size()) + " reference" + (r.updated.size() > 1 ? "s" : "") +
                 " (" + r.updated.front().why + ")";
+    for (const std::string& w : warns) r.message += "; " + w;
     return;
   }
   r.message_sums_up = true;

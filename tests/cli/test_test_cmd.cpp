@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <regex>
+#include <set>
 
 #include "io/image_io.h"
 #include "run.h"
@@ -336,6 +338,45 @@ TEST(TestCommand, ARendererItCannotHaveIsASystemFailure) {
   EXPECT_EQ(r.exit_code, 3) << r.out;
   EXPECT_NE(r.out.find("NoSuchGPU"), std::string::npos) << r.out;
   EXPECT_EQ(test_cmd(suite, {"--exit-codes", "idiff"}).exit_code, 4);
+}
+
+// docs/testing.md's table of JSON fields and the output agree both ways:
+// every leaf the output has (nulls included, array indices as N) is in the
+// table, and every field in the table appears in a run that has them all.
+void leaves(const json& j, const std::string& at, std::set<std::string>& out) {
+  if (j.is_object() && !j.empty()) {
+    for (auto it = j.begin(); it != j.end(); ++it) leaves(it.value(), at + "/" + it.key(), out);
+  } else if (j.is_array() && !j.empty()) {
+    for (const json& e : j) leaves(e, at + "/N", out);
+  } else if (!(j.is_array() || j.is_object())) {
+    out.insert(at);
+  }
+}
+
+TEST(TestCommand, TheJsonFieldsAreThoseDocsTestingMdLists) {
+  ScopedEnv no_ci("CI", std::nullopt);
+  SuiteDir d;
+  const fs::path suite = d.suite(
+      "[suite]\ncalibration = \"a\"\n"
+      "[[case]]\nname = \"a\"\nscene = \"scenes/seed.toml\"\nsize = [32, 18]\nreference = \"refs/a.png\"\n"
+      "threshold = 30\nwarn = 40\ndeterministic = true\n[case.cost]\nmean_primary_steps = 1000\n"
+      "[[case]]\nname = \"b\"\nscene = \"scenes/seed.toml\"\nsize = [32, 18]\n"
+      "[case.frame_time]\nmax_ratio = 100\nframes = 1\nrounds = 1\n");
+  const RunResult r = test_cmd(suite, {"--update", "--json", "--report", (d.dir / "report").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::set<std::string> out;
+  leaves(json_of(r), "", out);
+
+  const std::string doc = read_file(source_dir() / "docs/testing.md");
+  const size_t from = doc.find("| field | meaning |", doc.find("**`--json`.**"));
+  ASSERT_NE(from, std::string::npos);
+  const std::string table = doc.substr(from, doc.find("\n\n", from) - from);
+  std::set<std::string> documented;
+  static const std::regex field("`(/[^`]+)`");
+  for (auto it = std::sregex_iterator(table.begin(), table.end(), field); it != std::sregex_iterator(); ++it)
+    documented.insert((*it)[1].str());
+  for (const std::string& f : out) EXPECT_TRUE(documented.count(f)) << f << " is in the output, not in docs/testing.md";
+  for (const std::string& f : documented) EXPECT_TRUE(out.count(f)) << f << " is in docs/testing.md, not in the output";
 }
 
 }  // namespace
