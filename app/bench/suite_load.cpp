@@ -10,6 +10,7 @@
 
 #include "bench/outcome.h"
 #include "bench/suite.h"
+#include "bench/suite_toml.h"
 #include "core/error.h"
 #include "io/image_io.h"
 #include "io/sequence.h"
@@ -22,8 +23,6 @@ namespace ms {
 namespace fs = std::filesystem;
 
 namespace {
-
-using Views = std::vector<std::string_view>;
 
 const Views kTop = {"suite", "defaults", "case"};
 const Views kSuiteKeys = {"name", "calibration", "clock"};
@@ -58,91 +57,6 @@ void check_keys(const Reader& r, const toml::table& t, std::string_view path, co
                 std::string_view section) {
   r.check_keys(t, path, known, [&](std::string_view key) { return elsewhere(section, key); });
 }
-
-// A number as a double (thresholds are compared with doubles, and a value
-// that compare --json printed must read back exactly).
-bool read_double(const Reader& r, const toml::table& t, std::string_view path, std::string_view key, Range range,
-                 double& out, bool allow_inf = false) {
-  const toml::node* n = t.get(key);
-  if (!n) return false;
-  const std::string full = join_key(path, key);
-  double v = 0;
-  if (const auto* i = n->as_integer()) v = static_cast<double>(i->get());
-  else if (const auto* f = n->as_floating_point()) v = f->get();
-  else r.fail(*n, full, quote(full) + " must be a number");
-  if (std::isnan(v) || (std::isinf(v) && !allow_inf)) r.fail(*n, full, quote(full) + " must be a finite number");
-  if (!std::isinf(v) && !range.contains(v))
-    r.fail(*n, full, quote(full) + " must be " + range.describe() + ", got " + format_number(v));
-  out = v;
-  return true;
-}
-
-// A string or an array of strings, each one of `allowed` when given.
-std::vector<std::string> read_strings(const Reader& r, const toml::table& t, std::string_view path,
-                                      std::string_view key, const Views& allowed = {}) {
-  std::vector<std::string> out;
-  const toml::node* n = t.get(key);
-  if (!n) return out;
-  const std::string full = join_key(path, key);
-  std::vector<const toml::node*> items;
-  if (n->is_string()) items.push_back(n);
-  else if (const toml::array* a = n->as_array()) for (const toml::node& e : *a) items.push_back(&e);
-  else r.fail(*n, full, quote(full) + " must be a string or an array of strings");
-  for (const toml::node* e : items) {
-    if (!e->is_string()) r.fail(*e, full, quote(full) + " must hold strings only");
-    std::string s = e->as_string()->get();
-    if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), s) == allowed.end()) {
-      std::string hint = did_you_mean(s, allowed);
-      if (hint.empty())
-        for (std::string_view a : allowed) hint.append(hint.empty() ? "use " : ", ").append(a);
-      r.fail(*e, full, "unknown value " + quote(s) + " for " + quote(full), hint);
-    }
-    out.push_back(std::move(s));
-  }
-  return out;
-}
-
-// [A, B] of integers in `range`.
-bool read_int_pair(const Reader& r, const toml::table& t, std::string_view path, std::string_view key, Range range,
-                   std::pair<int, int>& out) {
-  const toml::node* n = t.get(key);
-  if (!n) return false;
-  const std::string full = join_key(path, key);
-  const toml::array* a = n->as_array();
-  if (!a || a->size() != 2 || !(*a)[0].is_integer() || !(*a)[1].is_integer())
-    r.fail(*n, full, quote(full) + " must be an array of 2 integers", key == "size" ? "e.g. size = [160, 90]" : "");
-  const auto x = (*a)[0].as_integer()->get(), y = (*a)[1].as_integer()->get();
-  if (!range.contains(static_cast<double>(x)) || !range.contains(static_cast<double>(y)))
-    r.fail(*n, full, quote(full) + " values must be " + range.describe());
-  out = {static_cast<int>(x), static_cast<int>(y)};
-  return true;
-}
-
-// Keys of a table, from it or else from its [defaults] counterpart: a
-// case's keys, or those of its [case.cost] / [case.frame_time] (one key at
-// a time, so a case can set one bound and inherit the rest).
-struct CaseTables {
-  const toml::table* own;
-  const toml::table* defaults;
-  std::string path;                      // "case[2]", "case[2].cost"
-  std::string defaults_path = "defaults";  // "defaults", "defaults.cost"
-  std::pair<const toml::table*, std::string> at(std::string_view key) const {
-    if (own && own->contains(key)) return {own, path};
-    if (defaults && defaults->contains(key)) return {defaults, defaults_path};
-    return {nullptr, path};
-  }
-  int line(std::string_view key) const {
-    const auto [t, p] = at(key);
-    if (t) return Reader::line_of(*t, key);
-    return own ? Reader::line_of(*own) : defaults ? Reader::line_of(*defaults) : 0;
-  }
-  // The [name] sub-tables of both, layered the same way.
-  CaseTables sub(const Reader& r, std::string_view name) const {
-    return {own ? r.table(*own, path, name) : nullptr, defaults ? r.table(*defaults, defaults_path, name) : nullptr,
-            join_key(path, name), join_key(defaults_path, name)};
-  }
-  bool any() const { return own || defaults; }
-};
 
 Metric read_metric(const Reader& r, const toml::table& t, std::string_view path) {
   std::size_t i = 0;
