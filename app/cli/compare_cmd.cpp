@@ -14,6 +14,7 @@
 
 #include "bench/compare.h"
 #include "bench/outcome.h"
+#include "cli/exit_codes.h"
 #include "core/error.h"
 #include "io/image_io.h"
 
@@ -279,14 +280,7 @@ int compare(const CompareArgs& a, ExitCodes codes) {
 
 int run_compare(const CompareArgs& a) {
   const ExitCodes codes = parse_exit_codes(a.exit_codes);
-  try {
-    return compare(a, codes);
-  } catch (const Error& e) {
-    if (codes != ExitCodes::idiff) throw;
-    // idiff's convention: whatever kept the comparison from happening is 4.
-    std::fprintf(stderr, "marchstudio: %s\n", e.what());
-    return exit_code_for(codes, Outcome::error);
-  }
+  return run_with_exit_codes(codes, [&] { return compare(a, codes); });
 }
 
 }  // namespace ms

@@ -16,6 +16,7 @@
 #include "bench/suite_html.h"
 #include "bench/suite_report.h"
 #include "bench/suite_run.h"
+#include "cli/exit_codes.h"
 #include "cli/input.h"
 #include "cli/progress.h"
 #include "cli/shader_dir.h"
@@ -202,14 +203,7 @@ int run(const TestArgs& a, ExitCodes codes) {
 
 int run_test(const TestArgs& a) {
   const ExitCodes codes = parse_exit_codes(a.exit_codes);
-  try {
-    return run(a, codes);
-  } catch (const Error& e) {
-    if (codes != ExitCodes::idiff) throw;
-    // idiff's convention: whatever kept the run from happening is 4.
-    std::fprintf(stderr, "marchstudio: %s\n", e.what());
-    return exit_code_for(codes, Outcome::error);
-  }
+  return run_with_exit_codes(codes, [&] { return run(a, codes); });
 }
 
 }  // namespace ms
