@@ -155,8 +155,7 @@ int run_render(const RenderArgs& a) {
     fp.height = s.height;
   }
   fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
-  fp.fused_post = fuse_post(in, fp.spp, aovs, display, opts);
-  assemble_input(in, opts);
+  const ShaderSource post_src = assemble_still(in, opts, fp.spp, aovs, display, fp.fused_post);
   if (a.print_shader) {
     std::fputs(in.main.text.c_str(), stdout);
     return 0;
@@ -170,8 +169,6 @@ int run_render(const RenderArgs& a) {
   const float time = a.time_set ? static_cast<float>(a.time) : scene.render.time;
   const Scene posed = animated(scene, time);  // [[animation]] keyframes at this time
   fp.exposure = posed.render.exposure;
-  // Shadertoy output is display-referred already: never encoded again.
-  const ShaderSource post_src = assemble_post(scene.render.tonemap, display && !in.shadertoy, opts);
 
   Stopwatch clock;
   std::unique_ptr<Context> ctx = create_headless_context(backend);

@@ -68,7 +68,7 @@ bool reference_size(const SuiteCase& c, int& w, int& h) {
 }
 
 // Loads and assembles a case exactly as `render -o <reference>` would:
-// the same input loading, fusing and post pass (cli/render_cmd.cpp).
+// load_input_scene() and assemble_still(), as cli/render_cmd.cpp calls them.
 PreparedCase prepare(const Suite& suite, const SuiteCase& c, const fs::path& shader_dir) {
   PreparedCase pc;
   pc.spec = &c;
@@ -92,10 +92,8 @@ PreparedCase prepare(const Suite& suite, const SuiteCase& c, const fs::path& sha
     fp.exposure = in.scene.render.exposure;
     AssembleOptions count_opts = opts;
     for (const auto& d : aov_defines()) count_opts.defines.push_back(d);
-    fp.fused_post = fuse_post(in, fp.spp, false, display, opts);
-    assemble_input(in, opts);
+    pc.post = assemble_still(in, opts, fp.spp, false, display, fp.fused_post);
     pc.main = in.main;
-    pc.post = assemble_post(in.scene.render.tonemap, display && !in.shadertoy, opts);
     if (c.cost) pc.counting = assemble_scene(in.scene, count_opts);
     pc.time = c.time ? *c.time : in.scene.render.time;
     check_frame_memory(frame_memory(fp.width, fp.height, c.cost ? 6 : 2, c.cost.has_value()), fp.width, fp.height);
@@ -150,6 +148,7 @@ int run(const TestArgs& a, ExitCodes codes) {
     const fs::path dir = fs::path(a.junit).parent_path().empty() ? "." : fs::path(a.junit).parent_path();
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) fail_input("output directory does not exist", dir.string(), 0, "--junit");
+    if (::access(dir.c_str(), W_OK) != 0) fail_input("output directory is not writable", dir.string(), 0, "--junit");
     if (fs::is_directory(a.junit, ec)) fail_input("is a directory", a.junit, 0, "--junit");
   }
   if (!a.report.empty()) {
