@@ -39,7 +39,7 @@ const Views kCostKeys = {"mean_primary_steps", "p99_primary_steps", "mean_map_ca
 const Views kTimeKeys = {"max_ratio", "warn_ratio", "frames", "rounds", "warmup"};
 const Views kBackends = {"auto", "egl", "osmesa"};
 const Views kEffects = {"shadows", "reflections", "ao", "checker-filter"};
-const Views kMetrics = {"psnr", "mae", "max", "fraction"};  // Metric's order
+const Views kMetrics = {"psnr", "mae", "max", "fraction", "flip"};  // Metric's order
 const Views kClocks = {"auto", "cpu", "wall"};               // SuiteClock's order
 
 // "'max_ratio' belongs in [case.frame_time]" for a key valid elsewhere.
@@ -304,6 +304,12 @@ void read_case(const Reader& r, const toml::table& own, const toml::table* defau
         }
         if (!e.animated() && has_frame_field(e.reference.filename().string()))
           r.fail(line, key, "the reference has a frame field but the case has no 'frames'");
+        const bool flip = std::any_of(e.checks.begin(), e.checks.end(), [](const ImageCheck& k) {
+          return k.metric == Metric::flip;
+        });
+        if (flip && !is_display_format(image_format_for(e.reference)))
+          r.fail(line, key, "flip compares display images, and an EXR reference holds linear values",
+                 "use a .png reference for flip (HDR-FLIP is not implemented)");
       }
       out.push_back(std::move(e));
     }

@@ -24,7 +24,7 @@ std::string metric_text(Metric m, double v) {
     if (std::isinf(v)) return v > 0 ? "inf dB" : "-inf dB";
     return printf_text("%.2f dB", v);
   }
-  if (m == Metric::fraction) return format_value(v);
+  if (m == Metric::fraction || m == Metric::flip) return format_value(v);
   return format_value(v) + " (" + printf_text("%.2f", v * 255.0) + "/255)";
 }
 
@@ -74,6 +74,7 @@ Json case_json(const CaseResult& r) {
     e["mae"] = k.metrics.mean_abs;
     e["max"] = k.metrics.max_abs;
     e["fraction"] = k.metrics.fraction_over;
+    e["flip"] = k.metrics.flip_mean;  // null unless the check is flip
     e["nonfinite"] = k.metrics.nonfinite_b;
     checks.push_back(std::move(e));
   }

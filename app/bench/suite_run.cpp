@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "bench/clock.h"
+#include "bench/flip.h"
 #include "bench/stats.h"
 #include "bench/suite_html.h"
 #include "bench/suite_report.h"
@@ -77,6 +78,7 @@ bool worse(const CheckResult& r, double v, Outcome o) {
 Outcome measure(CheckResult& cr, const Image& ref, const Image& got, int frame, bool first, bool& kept) {
   CompareOptions co;
   co.pixel_threshold = cr.check.pixel_threshold;
+  if (cr.check.metric == Metric::flip) co.flip_ppd = flip_default_ppd();
   const CompareMetrics m = compare_images(ref, got, co);
   const double v = metric_value(m, cr.check.metric);
   const Outcome o = classify(m, cr.check.metric, cr.check.threshold, cr.check.warn);

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/compare.h"
+#include "bench/flip.h"
 #include "bench/outcome.h"
 #include "cli/exit_codes.h"
 #include "core/error.h"
@@ -25,7 +26,8 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& a) {
       "compare", "Compare image B against reference A; exit 0 within the threshold, 1 over it");
   cmd->add_option("a", a.a, "Reference image (e.g. a golden)")->required();
   cmd->add_option("b", a.b, "Image to check")->required();
-  cmd->add_option("--metric", a.metric, "Metric the threshold applies to: psnr, mae, max, fraction (default psnr)");
+  cmd->add_option("--metric", a.metric,
+                  "Metric the threshold applies to: psnr, mae, max, fraction, flip (default psnr)");
   cmd->add_option("--threshold", a.threshold,
                   "psnr: fail when PSNR (dB) < X; mae, max, fraction: fail when value > X "
                   "(default: the images must match exactly)")
@@ -148,6 +150,8 @@ void print_json(const CompareArgs& a, const Image& ia, const CompareMetrics& m, 
   j["pixels_over"] = m.pixels_over;
   j["pixels"] = m.pixels;
   j["fraction"] = m.fraction_over;
+  j["flip"] = m.flip_mean;
+  j["flip_max"] = m.flip_max;
   j["nonfinite_a"] = m.nonfinite_a;
   j["nonfinite_b"] = m.nonfinite_b;
   j["metric"] = metric_name(v.metric);
@@ -193,6 +197,9 @@ void print_text(const CompareArgs& a, const Image& ia, const CompareMetrics& m, 
               channel_name(ia, m.max_channel).c_str());
   std::printf("  fraction  %.6g (%lld of %lld pixels differ by more than %.4g)\n", m.fraction_over,
               static_cast<long long>(m.pixels_over), static_cast<long long>(m.pixels), m.pixel_threshold);
+  if (!std::isnan(m.flip_mean))
+    std::printf("  flip      %.6g mean, %.6g max (LDR-FLIP at %.1f pixels per degree)\n", m.flip_mean, m.flip_max,
+                flip_default_ppd());
   if (m.nonfinite_a + m.nonfinite_b > 0)
     std::printf("  nonfinite A %lld, B %lld NaN/Inf values (always a failure)\n",
                 static_cast<long long>(m.nonfinite_a), static_cast<long long>(m.nonfinite_b));
@@ -235,6 +242,8 @@ int compare(const CompareArgs& a, ExitCodes codes) {
 
   CompareOptions opts;
   opts.pixel_threshold = static_cast<float>(a.pixel_threshold);
+  // Every metric every time; FLIP, which compares display values, for images of three channels or more.
+  if (ia.nchannels() >= 3) opts.flip_ppd = flip_default_ppd();
   const CompareMetrics m = compare_images(ia, ib, opts);
   Verdict v;
   v.metric = metric;

@@ -229,6 +229,8 @@ INSTANTIATE_TEST_SUITE_P(
             "need a 'reference'", ""},
         Bad{"ReferenceExtension", "[[case]]\nscene = \"a.toml\"\nreference = \"a.gif\"\n", 3, "case[0].reference",
             "unknown image extension", ""},
+        Bad{"FlipOnExr", "[[case]]\nscene = \"a.toml\"\nreference = \"a.exr\"\nmetric = \"flip\"\n", 3,
+            "case[0].reference", "flip compares display images", ".png"},
         Bad{"FramesWithoutPattern", "[[case]]\nshader = \"a.glsl\"\nreference = \"a.png\"\nframes = [0, 3]\n", 3,
             "case[0].reference", "frame field", ""},
         Bad{"PatternWithoutFrames", "[[case]]\nshader = \"a.glsl\"\nreference = \"a_%02d.png\"\n", 3,
