@@ -6,6 +6,8 @@
   replaces the rest of the block: in order, from the repository root, with
   `marchstudio` on PATH being --bin, renders pinned to Mesa llvmpipe, and CI
   unset (a developer's shell; the examples include --update into out/).
+- A ```toml (or other) block after <!-- file: PATH --> is PATH's text, less
+  its leading comment lines.
 - The golden-tolerance table between <!-- tolerances: begin --> and
   <!-- tolerances: end --> is measured with `marchstudio test --json`: each
   scene on EGL and OSMesa, on llvmpipe without SSE and with 128-bit vectors
@@ -68,6 +70,26 @@ def normalised(text):
     text = re.sub(r'\d+\.\d+x (\w+)\'s \(\d+\.\d+ ms vs \d+\.\d+ ms', r"Rx \1's (T ms vs T ms", text)
     text = re.sub(r'(time|timestamp)="[^"]*"', r'\1="T"', text)
     return text
+
+
+FILE_BLOCK = re.compile(r'<!-- file: (\S+) -->\n```(\w+)\n(.*?)^```\n', re.S | re.M)
+
+
+def files(doc, check):
+    """Blocks after <!-- file: PATH --> show PATH, less its leading comment lines."""
+    failures = []
+
+    def fill(m):
+        with open(os.path.join(ROOT, m.group(1))) as f:
+            lines = f.read().split('\n')
+        while lines and lines[0].startswith('#'):
+            lines.pop(0)
+        body = '\n'.join(lines).strip('\n') + '\n'
+        if check and body != m.group(3):
+            failures.append(f'the block showing {m.group(1)} differs from the file')
+        return f'<!-- file: {m.group(1)} -->\n```{m.group(2)}\n{body}```\n'
+
+    return FILE_BLOCK.sub(fill, doc), failures
 
 
 def examples(doc, env, check):
@@ -170,7 +192,9 @@ def main():
     try:
         with open(DOC) as f:
             doc = f.read()
-        page, failures = examples(doc, env, a.check)
+        doc, failures = files(doc, a.check)
+        page, more = examples(doc, env, a.check)
+        failures += more
         if failures:
             sys.exit('testing-doc: ' + '\n\n'.join(failures))
         if a.check:
