@@ -14,6 +14,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   glslang-tools                     # glslangValidator: shader tests and docs/specialization.md (skipped without)
   xvfb xauth                        # viewer tests get a real X window
+  chromium                          # tests/cli/test_test_report.cpp: the test --report page in a real browser
   slurm-wlm munge                   # tests/slurm: a real job array on a localhost cluster
   clang-14 libclang-rt-14-dev       # tests/fuzz: libFuzzer targets (CMakePresets.json "fuzz")
 )

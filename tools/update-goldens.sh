@@ -2,7 +2,9 @@
 # Re-render every golden image, tests/golden/<scene>.png, for every
 # scenes/<scene>.toml, and refresh the gallery copies in
 # docs/images/gallery/. Then measure each backend against the new goldens,
-# so tests/golden/tolerances.toml can be checked (and edited by hand).
+# so the tolerances in tests/golden/suite.toml can be checked (and edited
+# by hand). `marchstudio test tests/golden/suite.toml --update` would write
+# only missing and failing goldens; this script re-renders them all.
 #
 # Explicit only: a person runs it, looks at docs/gallery.md, and commits the
 # result. It refuses to run in CI, where it would turn every regression into
@@ -85,5 +87,6 @@ for scene in "${scenes[@]}"; do
   done
 done
 echo
-echo "Now: check tests/golden/tolerances.toml has [<scene>.egl] and [<scene>.osmesa] for every scene,"
-echo "look at docs/gallery.md (one entry per scene), and commit tests/golden and docs/images/gallery."
+echo "Now: check the tolerances in tests/golden/suite.toml still hold with margin (it covers every scene),"
+echo "add a cost case for a new scene to tests/cost/suite.toml, look at docs/gallery.md (one entry per"
+echo "scene), and commit tests/golden, tests/cost and docs/images/gallery."

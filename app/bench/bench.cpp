@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "bench/clock.h"
 #include "core/error.h"
 #include "render/frame.h"
 #include "render/gpu_timer.h"
@@ -16,9 +17,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 std::vector<double> channel(const Image& img, const std::string& name) {
   const auto it = std::find(img.channels.begin(), img.channels.end(), name);
@@ -65,6 +63,19 @@ BenchCost measure_cost(const Image& aovs) {
   c.sdf_evals = count_stats(channel(aovs, "sdf_evals"));
   c.step_cap_fraction = fraction_over_half(channel(aovs, "step_cap"));
   c.hit_fraction = fraction_over_half(channel(aovs, "hit"));
+  return c;
+}
+
+BenchCost count_frame_cost(FrameRenderer& renderer, const Program& counting, const Program& post,
+                           const Scene& posed, float time, FrameParams fp) {
+  fp.spp = 1;
+  fp.aovs = true;
+  fp.fused_post = false;
+  renderer.draw(counting, [&](const Program& p) { set_scene_uniforms(p, posed, fp.width, fp.height, time, 0); },
+                post, fp);
+  const Image aovs = renderer.read_aovs(), colour = renderer.read_color();
+  BenchCost c = measure_cost(aovs);
+  c.nonfinite_pixels = count_nonfinite_pixels(colour, &aovs);
   return c;
 }
 
@@ -125,17 +136,8 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const ShaderSource
   r.gpu_ms = summarize(gpu);
   r.wall_ms = summarize(wall);
 
-  // The counting pass: one sample per pixel at the pixel centre, so the
-  // counts are those of the image's primary rays and nothing random.
   const Program count_prog(vs, counting);
-  FrameParams cp = fp;
-  cp.spp = 1;
-  cp.aovs = true;
-  cp.fused_post = false;
-  renderer.draw(count_prog, uniforms_at(s.width, s.height), post_prog, cp);
-  const Image aovs = renderer.read_aovs(), colour = renderer.read_color();
-  r.cost = measure_cost(aovs);
-  r.cost.nonfinite_pixels = count_nonfinite_pixels(colour, &aovs);
+  r.cost = count_frame_cost(renderer, count_prog, post_prog, scene, s.time, fp);
   return r;
 }
 

@@ -9,6 +9,7 @@
 #include "bench/stats.h"
 #include "gl/context.h"
 #include "io/image.h"
+#include "render/frame.h"
 #include "scene/scene.h"
 #include "shader/preprocess.h"
 
@@ -50,6 +51,14 @@ long long count_nonfinite_pixels(const Image& a, const Image* b = nullptr);
 // Cost from FrameRenderer::read_aovs() of a spp-1 AOV frame (channels
 // steps, shadow_steps, reflection_steps, sdf_evals, step_cap, hit).
 BenchCost measure_cost(const Image& aovs);
+
+// The counting pass: one frame of `counting` (the scene assembled with
+// AOV_OUTPUTS 1) at one sample per pixel centre, so the counts are those of
+// the image's primary rays and nothing random; `fp` gives the size and
+// exposure (spp, AOVs and fusing are set here). bench and test both count
+// with it.
+BenchCost count_frame_cost(FrameRenderer& renderer, const Program& counting, const Program& post,
+                           const Scene& posed, float time, FrameParams fp);
 
 struct BenchResult {
   std::string backend, gl_renderer, gl_vendor, gl_version;

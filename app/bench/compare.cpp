@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "bench/flip.h"
 #include "core/error.h"
 
 namespace ms {
@@ -16,7 +17,8 @@ Metric parse_metric(const std::string& name) {
   if (name == "mae") return Metric::mae;
   if (name == "max") return Metric::max;
   if (name == "fraction") return Metric::fraction;
-  fail_input("unknown metric '" + name + "'", {}, 0, "--metric", "use psnr, mae, max or fraction");
+  if (name == "flip") return Metric::flip;
+  fail_input("unknown metric '" + name + "'", {}, 0, "--metric", "use psnr, mae, max, fraction or flip");
 }
 
 const char* metric_name(Metric m) {
@@ -25,6 +27,7 @@ const char* metric_name(Metric m) {
     case Metric::mae: return "mae";
     case Metric::max: return "max";
     case Metric::fraction: return "fraction";
+    case Metric::flip: return "flip";
   }
   return "?";
 }
@@ -137,7 +140,14 @@ CompareMetrics compare_images(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, 
 }
 
 CompareMetrics compare_images(const Image& a, const Image& b, const CompareOptions& opts) {
-  return compare_images(view_image(a), view_image(b), opts);
+  CompareMetrics m = compare_images(view_image(a), view_image(b), opts);
+  if (opts.flip_ppd > 0.0 && m.nonfinite_a + m.nonfinite_b == 0) {
+    if (a.nchannels() < 3) fail_input("flip needs RGB images, not " + std::to_string(a.nchannels()) + " channels");
+    const FlipMap f = flip_ldr(a, b, opts.flip_ppd);
+    m.flip_mean = f.mean;
+    m.flip_max = f.max;
+  }
+  return m;
 }
 
 double metric_value(const CompareMetrics& m, Metric metric) {
@@ -146,6 +156,7 @@ double metric_value(const CompareMetrics& m, Metric metric) {
     case Metric::mae: return m.mean_abs;
     case Metric::max: return m.max_abs;
     case Metric::fraction: return m.fraction_over;
+    case Metric::flip: return m.flip_mean;
   }
   return 0.0;
 }

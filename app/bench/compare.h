@@ -1,9 +1,11 @@
-// Image comparison metrics for `marchstudio compare` and the golden suite.
-// Pure: images in, numbers out; no files, no printing. All arithmetic over
-// pixels is OpenImageIO's ImageBufAlgo (compare, absdiff, maxchan,
-// color_range_check, computePixelStats, color_map), not loops of our own.
+// Image comparison metrics for `marchstudio compare` and `test`. Pure:
+// images in, numbers out; no files, no printing. All arithmetic over pixels
+// is OpenImageIO's ImageBufAlgo (compare, absdiff, maxchan,
+// color_range_check, computePixelStats, color_map), not loops of our own,
+// except LDR-FLIP, which OpenImageIO lacks (bench/flip.h).
 #pragma once
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include <OpenImageIO/imagebuf.h>
@@ -13,9 +15,9 @@
 namespace ms {
 
 // Which metric a threshold applies to.
-enum class Metric { psnr, mae, max, fraction };
+enum class Metric { psnr, mae, max, fraction, flip };
 
-// "psnr" | "mae" | "max" | "fraction"; throws bad_input (key --metric) otherwise.
+// "psnr" | "mae" | "max" | "fraction" | "flip"; throws bad_input (key --metric) otherwise.
 Metric parse_metric(const std::string& name);
 const char* metric_name(Metric m);
 
@@ -24,6 +26,9 @@ struct CompareOptions {
   // exceeds this. 1/255 lets through the one-level rounding differences that
   // two GL drivers produce in 8-bit output, and counts anything larger.
   float pixel_threshold = 1.0f / 255.0f;
+  // Also compute LDR-FLIP (bench/flip.h) at this many pixels per degree
+  // (0: not computed; its figures stay NaN). Image overload only.
+  double flip_ppd = 0.0;
 };
 
 struct CompareMetrics {
@@ -43,6 +48,9 @@ struct CompareMetrics {
   // NaN/Inf values in the compared channels of A and B. Any makes the
   // comparison fail whatever the threshold: a NaN would slip through every "<".
   std::int64_t nonfinite_a = 0, nonfinite_b = 0;
+  // Mean and largest per-pixel LDR-FLIP, in [0, 1]; NaN when not computed.
+  double flip_mean = std::numeric_limits<double>::quiet_NaN();
+  double flip_max = std::numeric_limits<double>::quiet_NaN();
 
   bool identical() const { return max_abs == 0.0 && nonfinite_a == 0 && nonfinite_b == 0; }
 };
@@ -59,8 +67,8 @@ double metric_value(const CompareMetrics& m, Metric metric);
 // others 0), so a forgotten --threshold never lets a change through.
 double default_threshold(Metric metric);
 
-// Within the threshold? For psnr: PSNR >= threshold. For mae, max, fraction:
-// value <= threshold. The boundary value itself passes. False whenever
+// Within the threshold? For psnr: PSNR >= threshold. For mae, max,
+// fraction, flip: value <= threshold. The boundary value itself passes. False whenever
 // either image had non-finite values.
 bool within_threshold(const CompareMetrics& m, Metric metric, double threshold);
 

@@ -8,6 +8,7 @@
 #include <memory>
 #include <utility>
 
+#include "bench/clock.h"
 #include "bench/compare.h"
 #include "bench/sweep_exact.h"
 #include "core/error.h"
@@ -21,14 +22,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-// CPU time of the whole process (every thread: llvmpipe's included), ms.
-double process_cpu_ms() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
-}
 
 // One rendered image with its AOVs (empty when not asked for).
 struct Frame {

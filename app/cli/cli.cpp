@@ -11,6 +11,7 @@
 #include "cli/compare_cmd.h"
 #include "cli/flag_checks.h"
 #include "cli/sweep_cmd.h"
+#include "cli/test_cmd.h"
 #include "core/error.h"
 
 namespace ms {
@@ -40,6 +41,8 @@ int run_cli(int argc, char** argv) {
   CLI::App* compare = add_compare_command(app, compare_args);
   SweepArgs sweep_args;
   CLI::App* sweep = add_sweep_command(app, sweep_args);
+  TestArgs test_args;
+  CLI::App* test = add_test_command(app, test_args);
 
   if (const std::string bad = unknown_subcommand(app, argc, argv); !bad.empty()) {
     std::fprintf(stderr, "marchstudio: %s (see 'marchstudio --help')\n", bad.c_str());
@@ -68,6 +71,7 @@ int run_cli(int argc, char** argv) {
     if (bench->parsed()) return run_bench_command(bench_args);
     if (compare->parsed()) return run_compare(compare_args);
     if (sweep->parsed()) return run_sweep_command(sweep_args);
+    if (test->parsed()) return run_test(test_args);
   } catch (const Error& e) {
     std::fprintf(stderr, "marchstudio: %s\n", e.what());
     if (!e.info().detail.empty() && verbose(app)) std::fprintf(stderr, "%s", e.info().detail.c_str());

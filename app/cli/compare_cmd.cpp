@@ -6,12 +6,16 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <filesystem>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "bench/compare.h"
+#include "bench/flip.h"
+#include "bench/outcome.h"
+#include "cli/exit_codes.h"
 #include "core/error.h"
 #include "io/image_io.h"
 
@@ -22,11 +26,17 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& a) {
       "compare", "Compare image B against reference A; exit 0 within the threshold, 1 over it");
   cmd->add_option("a", a.a, "Reference image (e.g. a golden)")->required();
   cmd->add_option("b", a.b, "Image to check")->required();
-  cmd->add_option("--metric", a.metric, "Metric the threshold applies to: psnr, mae, max, fraction (default psnr)");
+  cmd->add_option("--metric", a.metric,
+                  "Metric the threshold applies to: psnr, mae, max, fraction, flip (default psnr)");
   cmd->add_option("--threshold", a.threshold,
                   "psnr: fail when PSNR (dB) < X; mae, max, fraction: fail when value > X "
                   "(default: the images must match exactly)")
       ->each([&a](const std::string&) { a.threshold_set = true; });
+  cmd->add_option("--warn", a.warn,
+                  "Warn (pass, but report it; idiff exit code 1) when the metric is past X but within --threshold")
+      ->each([&a](const std::string&) { a.warn_set = true; });
+  cmd->add_option("--exit-codes", a.exit_codes,
+                  "default (0 pass, 1 fail, 2 bad input, 3 system) or idiff (0 pass, 1 warn, 2 fail, 4 could not run)");
   cmd->add_option("--pixel-threshold", a.pixel_threshold,
                   "A pixel is 'different' when a channel differs by more than T (default 1/255)");
   cmd->add_option("--diff", a.diff, "Write a heat map of |A-B| here (.png .jpg .tif .exr)");
@@ -100,11 +110,21 @@ void check_args(const CompareArgs& a, Metric metric) {
                metric == Metric::psnr ? "a PSNR in dB, e.g. 40" : "a finite number >= 0, e.g. 0.004");
 }
 
+void check_warn(const CompareArgs& a, Metric metric, double threshold) {
+  if (!a.warn_set) return;
+  if (!warn_level_valid(metric, threshold, a.warn))
+    fail_input("warn level is past the threshold", {}, 0, "--warn",
+               metric == Metric::psnr ? "for psnr, --warn >= --threshold (a warning comes before a failure)"
+                                      : "for this metric, --warn <= --threshold");
+}
+
 struct Verdict {
   Metric metric = Metric::psnr;
   double threshold = 0.0;
   double value = 0.0;
   bool pass = true;
+  Outcome outcome = Outcome::pass;
+  std::optional<double> warn;
 };
 
 std::string channel_name(const Image& img, int c) {
@@ -130,11 +150,15 @@ void print_json(const CompareArgs& a, const Image& ia, const CompareMetrics& m, 
   j["pixels_over"] = m.pixels_over;
   j["pixels"] = m.pixels;
   j["fraction"] = m.fraction_over;
+  j["flip"] = m.flip_mean;
+  j["flip_max"] = m.flip_max;
   j["nonfinite_a"] = m.nonfinite_a;
   j["nonfinite_b"] = m.nonfinite_b;
   j["metric"] = metric_name(v.metric);
   j["threshold"] = v.threshold;
+  j["warn"] = v.warn ? nlohmann::ordered_json(*v.warn) : nlohmann::ordered_json(nullptr);
   j["pass"] = v.pass;
+  j["outcome"] = outcome_name(v.outcome);
   j["diff"] = a.diff.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(a.diff);
   std::printf("%s\n", j.dump(2).c_str());
 }
@@ -173,20 +197,25 @@ void print_text(const CompareArgs& a, const Image& ia, const CompareMetrics& m, 
               channel_name(ia, m.max_channel).c_str());
   std::printf("  fraction  %.6g (%lld of %lld pixels differ by more than %.4g)\n", m.fraction_over,
               static_cast<long long>(m.pixels_over), static_cast<long long>(m.pixels), m.pixel_threshold);
+  if (!std::isnan(m.flip_mean))
+    std::printf("  flip      %.6g mean, %.6g max (LDR-FLIP at %.1f pixels per degree)\n", m.flip_mean, m.flip_max,
+                flip_default_ppd());
   if (m.nonfinite_a + m.nonfinite_b > 0)
     std::printf("  nonfinite A %lld, B %lld NaN/Inf values (always a failure)\n",
                 static_cast<long long>(m.nonfinite_a), static_cast<long long>(m.nonfinite_b));
   if (!a.diff.empty()) std::printf("  diff      %s\n", a.diff.c_str());
   const char* op = v.metric == Metric::psnr ? (v.pass ? ">=" : "<") : (v.pass ? "<=" : ">");
-  std::printf("%s: %s %s %s %s\n", v.pass ? "pass" : "FAIL", metric_name(v.metric),
-              value_text(v.metric, v.value).c_str(), op, value_text(v.metric, v.threshold).c_str());
+  std::printf("%s: %s %s %s %s", v.outcome == Outcome::warn ? "WARN" : v.pass ? "pass" : "FAIL",
+              metric_name(v.metric), value_text(v.metric, v.value).c_str(), op,
+              value_text(v.metric, v.threshold).c_str());
+  if (v.outcome == Outcome::warn) std::printf(", past the warn level %s", value_text(v.metric, *v.warn).c_str());
+  std::printf("\n");
 }
 
-}  // namespace
-
-int run_compare(const CompareArgs& a) {
+int compare(const CompareArgs& a, ExitCodes codes) {
   const Metric metric = parse_metric(a.metric);
   check_args(a, metric);
+  check_warn(a, metric, a.threshold_set ? a.threshold : default_threshold(metric));
   if (!a.diff.empty()) {
     try {
       check_output_path(a.diff);  // before any work, as render does
@@ -213,12 +242,16 @@ int run_compare(const CompareArgs& a) {
 
   CompareOptions opts;
   opts.pixel_threshold = static_cast<float>(a.pixel_threshold);
+  // Every metric every time; FLIP, which compares display values, for images of three channels or more.
+  if (ia.nchannels() >= 3) opts.flip_ppd = flip_default_ppd();
   const CompareMetrics m = compare_images(ia, ib, opts);
   Verdict v;
   v.metric = metric;
   v.threshold = a.threshold_set ? a.threshold : default_threshold(metric);
   v.value = metric_value(m, metric);
   v.pass = within_threshold(m, metric, v.threshold);
+  if (a.warn_set) v.warn = a.warn;
+  v.outcome = classify(m, metric, v.threshold, v.warn);
 
   // Written on failure too: that is when a person wants to look at it.
   if (!a.diff.empty()) {
@@ -237,16 +270,26 @@ int run_compare(const CompareArgs& a) {
   if (m.nonfinite_a + m.nonfinite_b > 0) {
     std::fprintf(stderr, "marchstudio: %s: NaN/Inf values (%lld in A, %lld in B) always fail a comparison\n",
                  a.b.c_str(), static_cast<long long>(m.nonfinite_a), static_cast<long long>(m.nonfinite_b));
-    return static_cast<int>(Exit::threshold);
+    return exit_code_for(codes, Outcome::fail);
   }
   if (!v.pass) {
     std::fprintf(stderr, "marchstudio: %s: %s %s is %s the threshold %s%s\n", a.b.c_str(), metric_name(metric),
                  value_text(metric, v.value).c_str(), metric == Metric::psnr ? "below" : "above",
                  value_text(metric, v.threshold).c_str(),
                  a.threshold_set ? "" : " (no --threshold: the images must be identical)");
-    return static_cast<int>(Exit::threshold);
+    return exit_code_for(codes, Outcome::fail);
   }
-  return static_cast<int>(Exit::ok);
+  if (v.outcome == Outcome::warn)
+    std::fprintf(stderr, "marchstudio: %s: warning: %s %s is past the warn level %s\n", a.b.c_str(),
+                 metric_name(metric), value_text(metric, v.value).c_str(), value_text(metric, *v.warn).c_str());
+  return exit_code_for(codes, v.outcome);
+}
+
+}  // namespace
+
+int run_compare(const CompareArgs& a) {
+  const ExitCodes codes = parse_exit_codes(a.exit_codes);
+  return run_with_exit_codes(codes, [&] { return compare(a, codes); });
 }
 
 }  // namespace ms

@@ -107,4 +107,11 @@ bool fuse_post(const LoadedInput& in, int spp, bool aovs, bool encode_srgb, Asse
   return true;
 }
 
+ShaderSource assemble_still(LoadedInput& in, AssembleOptions& opts, int spp, bool aovs, bool display, bool& fused) {
+  fused = fuse_post(in, spp, aovs, display, opts);
+  assemble_input(in, opts);
+  // Shadertoy output is display-referred already: never encoded again.
+  return assemble_post(in.scene.render.tonemap, display && !in.shadertoy, opts);
+}
+
 }  // namespace ms

@@ -53,4 +53,11 @@ void assemble_input(LoadedInput& in, const AssembleOptions& opts);
 // opts and returns true; the frames must then set FrameParams::fused_post.
 bool fuse_post(const LoadedInput& in, int spp, bool aovs, bool encode_srgb, AssembleOptions& opts);
 
+// The programs of a still (or of each frame of a sequence) as `render`
+// builds them for an output stored as 8-bit display values (`display`) or
+// as float: fuse_post(), then the main pass into in.main, and the post pass
+// returned. `fused` receives FrameParams::fused_post. `render` and `test`
+// both build their programs here.
+ShaderSource assemble_still(LoadedInput& in, AssembleOptions& opts, int spp, bool aovs, bool display, bool& fused);
+
 }  // namespace ms

@@ -20,8 +20,8 @@
 #include "render/aov.h"
 #include "core/deadline.h"
 #include "render/frame.h"
+#include "render/still.h"
 #include "render/tiles.h"
-#include "render/uniforms.h"
 #include "scene/animation.h"
 #include "cli/flag_checks.h"
 #include "cli/input.h"
@@ -162,8 +162,7 @@ int run_render(const RenderArgs& a) {
     fp.height = s.height;
   }
   fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
-  fp.fused_post = fuse_post(in, fp.spp, aovs, display, opts);
-  assemble_input(in, opts);
+  const ShaderSource post_src = assemble_still(in, opts, fp.spp, aovs, display, fp.fused_post);
   if (a.print_shader) {
     std::fputs(in.main.text.c_str(), stdout);
     return 0;
@@ -177,8 +176,6 @@ int run_render(const RenderArgs& a) {
   const float time = a.time_set ? static_cast<float>(a.time) : scene.render.time;
   const Scene posed = animated(scene, time);  // [[animation]] keyframes at this time
   fp.exposure = posed.render.exposure;
-  // Shadertoy output is display-referred already: never encoded again.
-  const ShaderSource post_src = assemble_post(scene.render.tonemap, display && !in.shadertoy, opts);
 
   Stopwatch clock;
   std::unique_ptr<Context> ctx = create_headless_context(backend);
@@ -196,30 +193,16 @@ int run_render(const RenderArgs& a) {
   const Program post_prog(fullscreen_vertex_source(), post_src);
   const double t_compile = clock.lap();
   FrameRenderer renderer(*ctx);
-  Image img;
-  long long nonfinite = 0;  // pixels with NaN/Inf in any channel read back (colour, AOVs)
-  if (!in.shadertoy) {
-    img = renderer.render(main_prog, [&](const Program& p) {
-      set_scene_uniforms(p, posed, fp.width, fp.height, time, a.frame);
-    }, post_prog, fp);
-    if (aovs) {
-      const Image all = renderer.read_aovs();
-      nonfinite = count_nonfinite_pixels(img, &all);
-      img = append_channels(img, select_channels(all, aov_names));
-    } else {
-      nonfinite = count_nonfinite_pixels(img);
-    }
-  } else {
-    BlackChannels channels;
-    ShadertoyInputs st;
-    st.time = time;
-    st.frame = a.frame;
-    img = renderer.render(main_prog, [&](const Program& p) {
-      channels.bind();
-      set_shadertoy_uniforms(p, fp.width, fp.height, st);
-    }, post_prog, fp);
-    nonfinite = count_nonfinite_pixels(img);
-  }
+  StillFrame still;
+  still.scene = &posed;
+  still.time = time;
+  still.frame = a.frame;
+  still.params = fp;
+  Still out = render_still(renderer, main_prog, post_prog, still);
+  Image img = std::move(out.color);
+  // Pixels with NaN/Inf in any channel read back (colour, AOVs).
+  const long long nonfinite = count_nonfinite_pixels(img, aovs ? &out.aovs : nullptr);
+  if (aovs) img = append_channels(img, select_channels(out.aovs, aov_names));
   // The NaN/Inf guard: counted over everything read back, before writing.
   if (nonfinite > 0) {
     const std::string what = std::to_string(nonfinite) + " of " +

@@ -118,7 +118,7 @@ TEST_F(Compare, IdenticalImagesPrintInfinitePsnrAndPass) {
 TEST_F(Compare, EachMetricPassesAtItsBoundaryAndFailsJustInside) {
   RunResult j = compare({"--json", "--threshold", "0"});
   ASSERT_EQ(j.exit_code, 0) << j.err;
-  for (const char* metric : {"psnr", "mae", "max", "fraction"}) {
+  for (const char* metric : {"psnr", "mae", "max", "fraction", "flip"}) {
     const std::string v = json_field(j.out, metric);
     ASSERT_FALSE(v.empty()) << metric << " in " << j.out;
     EXPECT_EQ(compare({"--metric", metric, "--threshold", v}).exit_code, 0) << metric << " at " << v;
@@ -129,7 +129,7 @@ TEST_F(Compare, EachMetricPassesAtItsBoundaryAndFailsJustInside) {
 }
 
 TEST_F(Compare, UnknownMetricAndBadThresholdsAreBadInput) {
-  expect_bad_input(compare({"--metric", "flip"}), "--metric");
+  expect_bad_input(compare({"--metric", "ssim"}), "--metric");
   expect_bad_input(compare({"--metric", "max", "--threshold", "-1"}), "--threshold");
   expect_bad_input(compare({"--threshold", "nan"}), "--threshold");
   expect_bad_input(compare({"--pixel-threshold", "-0.1"}), "--pixel-threshold");
@@ -228,6 +228,40 @@ TEST_F(Compare, DiffIntoAMissingDirectoryFailsBeforeReading) {
   RunResult r = compare({"--diff", "no/such/dir/d.png"}, a, "missing.png");
   expect_bad_input(r, "--diff");  // the output path is checked first
   EXPECT_NE(r.err.find("no/such/dir"), std::string::npos) << r.err;
+}
+
+// --warn and --exit-codes idiff: OpenImageIO idiff's codes (0 pass, 1 warn,
+// 2 fail, 4 could not run) for scripts written around it. PSNR of b is 59.99 dB.
+TEST_F(Compare, IdiffExitCodesAndAWarnLevel) {
+  const std::vector<std::string> idiff = {"--exit-codes", "idiff"};
+  auto with = [&](std::vector<std::string> x) {
+    x.insert(x.end(), idiff.begin(), idiff.end());
+    return compare(x);
+  };
+  EXPECT_EQ(with({"--threshold", "55"}).exit_code, 0);
+  const RunResult warn = with({"--threshold", "55", "--warn", "62"});
+  EXPECT_EQ(warn.exit_code, 1) << warn.err;
+  EXPECT_NE(warn.out.find("WARN: psnr 59.99 dB >= 55.00 dB, past the warn level 62.00 dB"), std::string::npos)
+      << warn.out;
+  EXPECT_NE(warn.err.find("warning"), std::string::npos) << warn.err;
+  EXPECT_EQ(with({"--threshold", "65"}).exit_code, 2);
+  EXPECT_EQ(with({"--metric", "max", "--threshold", "0.05", "--warn", "0.03"}).exit_code, 1);
+  EXPECT_EQ(with({"--metric", "max", "--threshold", "0.05", "--warn", "0.04"}).exit_code, 0);
+  // Could not run: a missing file, bad flags after parsing, a warn level past the threshold.
+  const RunResult missing = compare({"--exit-codes", "idiff"}, a, (dir / "nope.png").string());
+  EXPECT_EQ(missing.exit_code, 4);
+  EXPECT_NE(missing.err.find("nope.png"), std::string::npos) << missing.err;
+  EXPECT_EQ(with({"--threshold", "55", "--warn", "50"}).exit_code, 4);
+  // The default codes: a warning still passes, a bad warn level is bad input.
+  const RunResult plain = compare({"--threshold", "55", "--warn", "62"});
+  EXPECT_EQ(plain.exit_code, 0);
+  EXPECT_NE(plain.out.find("WARN"), std::string::npos);
+  expect_bad_input(compare({"--threshold", "55", "--warn", "50"}), "--warn");
+  expect_bad_input(compare({"--exit-codes", "oiio"}), "--exit-codes");
+  const RunResult j = compare({"--threshold", "55", "--warn", "62", "--json"});
+  EXPECT_EQ(json_field(j.out, "outcome"), "\"warn\"");
+  EXPECT_EQ(json_field(j.out, "warn"), "62.0");
+  EXPECT_EQ(json_field(j.out, "pass"), "true");
 }
 
 }  // namespace

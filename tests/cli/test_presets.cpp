@@ -1,11 +1,8 @@
 // Quality presets, [[planes]] and [bounds]: the scene keys and their
-// file:line:key errors; --preset through the real binary; deterministic
-// step-count bounds of every preset on every scene (tests/cost/bounds.toml).
-// The tracer itself: test_tracer.cpp.
+// file:line:key errors; --preset through the real binary. The step-count
+// bounds of every preset on every scene are cases of tests/cost/suite.toml
+// (ctest: cost_suite). The tracer itself: test_tracer.cpp.
 #include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
-#include <toml++/toml.h>
 
 #include "core/error.h"
 #include "run.h"
@@ -16,7 +13,6 @@ namespace ms::test {
 namespace {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
 
 std::string scene(const std::string& name) { return (source_dir() / "scenes" / (name + ".toml")).string(); }
 // Parsed as if it sat next to the shipped scenes (so map = "seed.glsl" resolves).
@@ -178,46 +174,6 @@ TEST(PresetFlag, RenderAndBenchAcceptItAndRejectNonsense) {
       {"bench", scene("seed"), "--preset", "fast", "--size", "16x9", "--frames", "1", "--warmup", "0", "--json"});
   EXPECT_EQ(b.exit_code, 0) << b.err;
 }
-
-// Step counts are deterministic (bench's counting pass): each preset on each
-// scene stays within its bound in tests/cost/bounds.toml, and the bound is
-// not far above the measurement (so an improvement gets its bound lowered).
-struct PresetScene {
-  std::string scene, preset;
-};
-
-class PresetCost : public ::testing::TestWithParam<PresetScene> {};
-
-TEST_P(PresetCost, StaysWithinItsBounds) {
-  const auto& [name, preset] = GetParam();
-  const toml::table bounds = toml::parse_file((source_dir() / "tests/cost/bounds.toml").string());
-  const std::string size = bounds["size"].value_or(std::string());
-  const auto max_steps = bounds[name]["presets"][preset]["mean_primary_steps"].value<double>();
-  const auto max_cap = bounds[name]["presets"][preset]["step_cap_fraction"].value<double>();
-  ASSERT_TRUE(max_steps && max_cap) << "tests/cost/bounds.toml has no [" << name << ".presets." << preset << "]";
-  const RunResult r = run_marchstudio({"bench", scene(name), "--preset", preset, "--size", size, "--frames", "1",
-                                       "--warmup", "0", "--json"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json cost = json::parse(r.out).at("cost");
-  const double steps = cost.at("primary_steps").at("mean").get<double>();
-  const double cap = cost.at("step_cap_fraction").get<double>();
-  RecordProperty("mean_primary_steps_x1000", static_cast<int>(1000 * steps));
-  EXPECT_LE(steps, *max_steps) << name << " " << preset << ": mean primary steps per pixel went up";
-  EXPECT_LE(cap, *max_cap) << name << " " << preset << ": more pixels hit the step cap";
-  EXPECT_GE(steps, *max_steps / 1.25) << name << " " << preset << ": cheaper now; lower the bound";
-}
-
-std::vector<PresetScene> all_preset_scenes() {
-  std::vector<PresetScene> out;
-  for (const char* s : {"seed", "stilllife", "columns"})
-    for (const char* p : {"fast", "balanced", "reference", "textbook"}) out.push_back({s, p});
-  return out;
-}
-
-INSTANTIATE_TEST_SUITE_P(Scenes, PresetCost, ::testing::ValuesIn(all_preset_scenes()),
-                         [](const ::testing::TestParamInfo<PresetScene>& i) {
-                           return i.param.scene + "_" + i.param.preset;
-                         });
 
 }  // namespace
 }  // namespace ms::test

@@ -154,10 +154,11 @@ TEST(Compare, ParseMetric) {
   EXPECT_EQ(parse_metric("mae"), Metric::mae);
   EXPECT_EQ(parse_metric("max"), Metric::max);
   EXPECT_EQ(parse_metric("fraction"), Metric::fraction);
-  for (Metric m : {Metric::psnr, Metric::mae, Metric::max, Metric::fraction})
+  EXPECT_EQ(parse_metric("flip"), Metric::flip);
+  for (Metric m : {Metric::psnr, Metric::mae, Metric::max, Metric::fraction, Metric::flip})
     EXPECT_EQ(parse_metric(metric_name(m)), m);
   try {
-    parse_metric("flip");
+    parse_metric("ssim");
     FAIL() << "no error";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), Exit::bad_input);

@@ -1,0 +1,208 @@
+#include "cli/test_cmd.h"
+
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <optional>
+
+#include "bench/outcome.h"
+#include "bench/suite.h"
+#include "bench/suite_html.h"
+#include "bench/suite_report.h"
+#include "bench/suite_run.h"
+#include "cli/exit_codes.h"
+#include "cli/input.h"
+#include "cli/progress.h"
+#include "cli/shader_dir.h"
+#include "core/error.h"
+#include "io/image_io.h"
+#include "io/sequence.h"
+#include "io/text_io.h"
+#include "render/aov.h"
+#include "render/tiles.h"
+#include "shader/assemble.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+CLI::App* add_test_command(CLI::App& app, TestArgs& a) {
+  CLI::App* cmd = app.add_subcommand(
+      "test", "Run a suite of image, cost and frame-time tests (docs/testing.md); exit 0 when all pass");
+  cmd->add_option("suite", a.suite, "Suite file (.toml)")->required();
+  cmd->add_option("--junit", a.junit, "Write JUnit XML here (GitLab, GitHub, Jenkins)");
+  cmd->add_option("--report", a.report, "Write an HTML report with every case's images into this directory");
+  cmd->add_flag("--json", a.json, "Print the results as JSON on stdout (the case lines go to stderr)");
+  cmd->add_flag("--update", a.update, "Write missing and failing references (refused when CI is set)");
+  cmd->add_flag("--force", a.force, "Let --update run although CI is set");
+  cmd->add_option("--exit-codes", a.exit_codes,
+                  "default (0 pass, 1 fail, 2 bad input, 3 system) or idiff (0 pass, 1 warn, 2 fail, 4 could not run)");
+  cmd->add_option("--only", a.only, "Run only the cases whose name matches this glob (repeatable)");
+  cmd->add_flag("--list", a.list, "Print the suite's cases, as expanded, and exit");
+  cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
+  return cmd;
+}
+
+namespace {
+
+bool ci_is_set() {
+  const char* ci = std::getenv("CI");
+  return ci && *ci && std::strcmp(ci, "0") != 0 && std::strcmp(ci, "false") != 0;
+}
+
+// Width and height of the case's reference (its first frame's), when it exists.
+bool reference_size(const SuiteCase& c, int& w, int& h) {
+  if (c.reference.empty()) return false;
+  const fs::path p = c.frames ? FramePattern(c.reference.string()).path(c.frames->first) : c.reference;
+  std::error_code ec;
+  if (!fs::is_regular_file(p, ec)) return false;
+  const Image img = read_image(p);
+  w = img.width;
+  h = img.height;
+  return true;
+}
+
+// Loads and assembles a case exactly as `render -o <reference>` would:
+// load_input_scene() and assemble_still(), as cli/render_cmd.cpp calls them.
+PreparedCase prepare(const Suite& suite, const SuiteCase& c, const fs::path& shader_dir) {
+  PreparedCase pc;
+  pc.spec = &c;
+  try {
+    AssembleOptions opts{shader_dir, c.defines, c.allow_include};
+    opts.specialize = c.specialize ? Specialization::folded : Specialization::generic;
+    LoadedInput in = load_input_scene(c.input, c.disable, c.preset);
+    if (c.cost && in.shadertoy)
+      fail_input("case '" + c.name + "': [case.cost] needs an SDF scene, and a Shadertoy shader has no step counters",
+                 suite.file.string(), c.line, "cost");
+    pc.format = c.reference.empty() ? ImageFormat::png : image_format_for(c.reference);
+    const bool display = is_display_format(pc.format);
+    FrameParams& fp = pc.params;
+    fp.width = c.width;
+    fp.height = c.height;
+    if (fp.width == 0 && !reference_size(c, fp.width, fp.height)) {
+      fp.width = in.scene.render.width;
+      fp.height = in.scene.render.height;
+    }
+    fp.spp = c.spp > 0 ? c.spp : in.scene.render.spp;
+    fp.exposure = in.scene.render.exposure;
+    AssembleOptions count_opts = opts;
+    for (const auto& d : aov_defines()) count_opts.defines.push_back(d);
+    pc.post = assemble_still(in, opts, fp.spp, false, display, fp.fused_post);
+    pc.main = in.main;
+    if (c.cost) pc.counting = assemble_scene(in.scene, count_opts);
+    pc.time = c.time ? *c.time : in.scene.render.time;
+    check_frame_memory(frame_memory(fp.width, fp.height, c.cost ? 6 : 2, c.cost.has_value()), fp.width, fp.height);
+    pc.scene = std::move(in.scene);
+  } catch (const Error& e) {
+    pc.error = e.info();
+  }
+  return pc;
+}
+
+// The terminal: a line per case; on a TTY also a status line redrawn in place.
+class Terminal {
+ public:
+  explicit Terminal(bool json) : out_(json ? stderr : stdout), tty_(::isatty(2) != 0) {}
+  void start(const SuiteCase& c, int index, int total) {
+    if (!tty_) return;
+    const double eta = index > 0 ? elapsed() / index * (total - index) : -1;
+    std::fprintf(stderr, "\r[%d/%d] %s ... ETA %s\x1b[K", index + 1, total, c.name.c_str(),
+                 format_duration(eta).c_str());
+    std::fflush(stderr);
+  }
+  void done(const CaseResult& r, int index, int total) {
+    if (tty_) std::fprintf(stderr, "\r\x1b[K");
+    std::fprintf(out_, "[%*d/%d] %s\n", static_cast<int>(std::to_string(total).size()), index, total,
+                 case_line(r).c_str());
+    std::fflush(out_);
+  }
+  void line(const std::string& text) { std::fprintf(out_, "%s\n", text.c_str()); }
+
+ private:
+  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
+  std::FILE* out_;
+  bool tty_;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
+
+int run(const TestArgs& a, ExitCodes codes) {
+  if (a.force && !a.update) fail_input("--force only goes with --update", {}, 0, "--force");
+  if (a.update && ci_is_set() && !a.force)
+    fail_input("refusing to write references with CI set: a regression would become the new reference", {}, 0,
+               "--update", "update references by hand, look at them and commit them; --force overrides");
+  const Suite suite = load_suite(a.suite);
+  const std::vector<const SuiteCase*> selected = select_cases(suite, a.only);
+  if (a.list) {
+    for (const SuiteCase* c : selected)
+      std::printf("%s\t%s\t%s\t%s\n", c->name.c_str(), c->input.string().c_str(), c->backend.c_str(),
+                  c->reference.empty() ? "-" : c->reference.string().c_str());
+    return 0;
+  }
+  // Output paths before any work, as render checks -o.
+  if (!a.junit.empty()) {
+    const fs::path dir = fs::path(a.junit).parent_path().empty() ? "." : fs::path(a.junit).parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) fail_input("output directory does not exist", dir.string(), 0, "--junit");
+    if (::access(dir.c_str(), W_OK) != 0) fail_input("output directory is not writable", dir.string(), 0, "--junit");
+    if (fs::is_directory(a.junit, ec)) fail_input("is a directory", a.junit, 0, "--junit");
+  }
+  if (!a.report.empty()) {
+    std::error_code ec;
+    fs::create_directories(a.report, ec);
+    if (!fs::is_directory(a.report, ec) || ::access(a.report.c_str(), W_OK) != 0)
+      fail_input("cannot make a writable report directory", a.report, 0, "--report");
+  }
+  const fs::path shader_dir = resolve_shader_dir(a.shader_dir);
+  std::vector<PreparedCase> cases;
+  for (const SuiteCase* c : selected) cases.push_back(prepare(suite, *c, shader_dir));
+  std::optional<PreparedCase> calibration;
+  const bool timed = std::any_of(selected.begin(), selected.end(), [](const SuiteCase* c) { return c->time_budget; });
+  if (timed) {
+    calibration = prepare(suite, *suite.find(suite.calibration), shader_dir);
+    if (calibration->error) {
+      ErrorInfo e = *calibration->error;
+      e.what = "the calibration case '" + suite.calibration + "': " + e.what;
+      throw Error(e);
+    }
+  }
+
+  Terminal term(a.json);
+  RunOptions opts;
+  opts.update = a.update;
+  opts.report_dir = a.report;
+  opts.on_start = [&](const SuiteCase& c, int i, int n) { term.start(c, i, n); };
+  opts.on_done = [&](const CaseResult& r, int i, int n) { term.done(r, i, n); };
+  const SuiteResult result = run_suite(suite, cases, calibration ? &*calibration : nullptr, opts);
+
+  std::vector<std::string> updated;
+  for (const CaseResult& c : result.cases)
+    for (const Updated& u : c.updated) updated.push_back("  " + u.path.string() + " (" + u.why + ")");
+  if (a.update) {
+    term.line(updated.empty() ? "no reference needed updating"
+                              : "updated " + std::to_string(updated.size()) + " reference" +
+                                    (updated.size() > 1 ? "s" : "") + " (look at them before committing):");
+    for (const std::string& u : updated) term.line(u);
+  }
+  if (!a.junit.empty()) write_text_file(a.junit, suite_junit(suite, result), "--junit");
+  if (!a.report.empty()) write_html_report(a.report, suite, result);
+  if (a.json) std::fputs(suite_json(suite, result).c_str(), stdout);
+  term.line(summary_line(result));
+  if (!a.report.empty()) term.line("report: " + (fs::path(a.report) / "index.html").string());
+  if (!a.junit.empty()) term.line("junit: " + a.junit);
+  std::fflush(stdout);
+  return exit_code_for(codes, result.worst(), result.worst_error());
+}
+
+}  // namespace
+
+int run_test(const TestArgs& a) {
+  const ExitCodes codes = parse_exit_codes(a.exit_codes);
+  return run_with_exit_codes(codes, [&] { return run(a, codes); });
+}
+
+}  // namespace ms

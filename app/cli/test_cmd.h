@@ -1,0 +1,31 @@
+// `marchstudio test SUITE.toml`: image, cost and frame-time tests of a
+// user's own scenes and shaders, in one process (bench/suite*.h), with a
+// line per case on the terminal and JUnit XML, JSON and an HTML report for
+// CI. docs/testing.md.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace ms {
+
+struct TestArgs {
+  std::string suite;
+  std::string junit;                  // JUnit XML file; empty: none
+  std::string report;                 // HTML report directory; empty: none
+  bool json = false;                  // the results as JSON on stdout (the case lines go to stderr)
+  bool update = false;                // write missing and failing references
+  bool force = false;                 // --update even with CI set
+  std::string exit_codes = "default"; // default | idiff
+  std::vector<std::string> only;      // case-name globs
+  bool list = false;                  // print the cases and exit
+  std::string shader_dir;
+};
+
+CLI::App* add_test_command(CLI::App& app, TestArgs& args);
+int run_test(const TestArgs& args);
+
+}  // namespace ms
