@@ -7,7 +7,7 @@
 #include "bench/compare.h"
 #include "bench/suite_report.h"
 #include "io/image_io.h"
-#include "io/text_io.h"
+#include "io/atomic_file.h"
 
 namespace ms {
 namespace fs = std::filesystem;

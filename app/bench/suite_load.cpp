@@ -12,6 +12,7 @@
 #include "bench/suite.h"
 #include "bench/suite_toml.h"
 #include "core/error.h"
+#include "io/input_file.h"
 #include "io/image_io.h"
 #include "io/sequence.h"
 #include "scene/quality.h"
@@ -377,20 +378,7 @@ Suite parse_suite(std::string_view text, const fs::path& display_path) {
   return s;
 }
 
-Suite load_suite(const fs::path& path) {
-  const std::string file = path.string();
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) fail_input("cannot open suite file", file, 0, {}, "it is a directory");
-  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec))
-    fail_input("cannot open suite file", file, 0, {}, "it is not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    fail_input("cannot open suite file", file, 0, {},
-               fs::exists(path, ec) ? "it is not readable" : "no such file or directory");
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) fail_input("cannot read suite file", file);
-  return parse_suite(text, path);
-}
+Suite load_suite(const fs::path& path) { return parse_suite(read_input_file(path, "suite file"), path); }
 
 std::vector<const SuiteCase*> select_cases(const Suite& suite, const std::vector<std::string>& patterns) {
   std::vector<const SuiteCase*> out;

@@ -23,7 +23,7 @@
 #include "core/error.h"
 #include "io/image_io.h"
 #include "io/sequence.h"
-#include "io/text_io.h"
+#include "io/atomic_file.h"
 #include "render/aov.h"
 #include "render/tiles.h"
 #include "shader/assemble.h"
@@ -146,9 +146,8 @@ int run(const TestArgs& a, ExitCodes codes) {
   // Output paths before any work, as render checks -o.
   if (!a.junit.empty()) {
     const fs::path dir = fs::path(a.junit).parent_path().empty() ? "." : fs::path(a.junit).parent_path();
+    check_output_directory(dir, "--junit");
     std::error_code ec;
-    if (!fs::is_directory(dir, ec)) fail_input("output directory does not exist", dir.string(), 0, "--junit");
-    if (::access(dir.c_str(), W_OK) != 0) fail_input("output directory is not writable", dir.string(), 0, "--junit");
     if (fs::is_directory(a.junit, ec)) fail_input("is a directory", a.junit, 0, "--junit");
   }
   if (!a.report.empty()) {

@@ -159,6 +159,14 @@ void AtomicFile::set_mode(unsigned mode) {
   if (fd_ >= 0 && ::fchmod(fd_, static_cast<mode_t>(mode)) != 0 && !error_) error_ = errno;
 }
 
+void write_text_file(const fs::path& path, std::string_view text, const std::string& key) {
+  if (path.filename().empty()) fail_input("output path names no file", path.string(), 0, key);
+  check_output_directory(path.parent_path().empty() ? fs::path(".") : path.parent_path(), key);
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) fail_input("output path is a directory", path.string(), 0, key);
+  write_file_atomic(path, text);
+}
+
 void write_file_atomic(const fs::path& target, std::string_view bytes, int mode) {
   AtomicFile f(target);
   if (mode >= 0) f.set_mode(static_cast<unsigned>(mode));

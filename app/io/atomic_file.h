@@ -58,6 +58,11 @@ class AtomicFile {
 // A whole buffer; `mode` >= 0: the file's permissions (else 0666 less the umask).
 void write_file_atomic(const std::filesystem::path& target, std::string_view bytes, int mode = -1);
 
+// A report or list named by a flag (`key`): the path checked as an image
+// output is (a file name, a directory that is or can be made), then
+// write_file_atomic(). Throws bad_input for the path, system for the write.
+void write_text_file(const std::filesystem::path& path, std::string_view text, const std::string& key = "-o");
+
 // The temporary of `target` for process `pid`: ".<name>.tmp<pid>" beside
 // it, or with keep_extension ".<stem>.tmp<pid><ext>" (for ffmpeg, which
 // picks a container by the extension). Shortened, with a hash of the whole

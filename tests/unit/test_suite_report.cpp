@@ -13,7 +13,7 @@
 #include "core/error.h"
 #include "io/image_io.h"
 #include "io/stored_pixels.h"
-#include "io/text_io.h"
+#include "io/atomic_file.h"
 
 namespace ms {
 namespace {
@@ -131,13 +131,19 @@ TEST(TextIo, WritesAtomicallyAndLeavesNoTemporary) {
 
 TEST(TextIo, BadPathsAreBadInputAndLeaveNothing) {
   Tmp t;
+  // A missing directory is made; one under a file cannot be.
+  write_text_file(t.dir / "made/a.xml", "x", "--junit");
+  EXPECT_EQ(slurp(t.dir / "made/a.xml"), "x");
+  fs::remove_all(t.dir / "made");
+  write_text_file(t.dir / "f", "x");
   try {
-    write_text_file(t.dir / "no/such/dir/a.xml", "x", "--junit");
+    write_text_file(t.dir / "f/sub/a.xml", "x", "--junit");
     ADD_FAILURE() << "no error";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), Exit::bad_input);
     EXPECT_EQ(e.info().key, "--junit");
   }
+  fs::remove(t.dir / "f");
   fs::create_directory(t.dir / "d");
   EXPECT_THROW(write_text_file(t.dir / "d", "x"), Error);
   EXPECT_EQ(t.entries(), std::vector<std::string>{"d"});
