@@ -216,7 +216,7 @@ TEST(SpecializeSource, CheckerAndLibraryCodeOnlyWhenUsed) {
   EXPECT_TRUE(body_of(suns, "float sdBox(").empty());
   // The generic shader keeps all of it.
   const std::string gen = active(data("suns.toml"), Specialization::generic);
-  for (const char* f : {"float checkerFiltered(", "float sdTorus(", "float sdBox(", "opRepeatCell("})
+  for (const char* f : {"float checkerFiltered(", "float sdTorus(", "float sdBox(", "domRepeatCell("})
     EXPECT_FALSE(body_of(gen, f).empty()) << f;
   EXPECT_LT(matte.size(), active(data("matte.toml"), Specialization::generic).size());
 }
