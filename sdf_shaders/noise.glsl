@@ -23,17 +23,23 @@ uvec3 msHash3(ivec3 c) {
 }
 // A value in [-1, 1) per lattice point.
 float msHashValue(ivec3 c) { return float(msHash3(c).x >> 8u) * (2.0 / 16777216.0) - 1.0; }
-// A unit gradient per lattice point: one of 8 directions in 2D, of the 12
-// cube edge directions in 3D.
-vec2 msHashGradient(ivec2 c) {
-  float a = float(msHash3(ivec3(c, 0)).x >> 29u) * (PI / 4.0);
-  return vec2(cos(a), sin(a));
+// The ramp dot(g, d) of lattice point c's unit gradient g at offset d, g
+// picked by the hash's top bits with selects (no table: a dynamically
+// indexed constant array is slow on llvmpipe). 2D: one of the 8 directions
+// of the axes and diagonals. 3D: one of the 12 cube edge directions
+// (1, 1, 0) / sqrt 2 ..., 16 cases with 4 repeated, as in Perlin's
+// improved noise.
+float msRamp(ivec2 c, vec2 d) {
+  uint h = msHash3(ivec3(c, 0)).x >> 29u;
+  vec2 s = vec2((h & 1u) != 0u ? -1.0 : 1.0, (h & 2u) != 0u ? -1.0 : 1.0);
+  if ((h & 4u) != 0u) return dot(s, d) * 0.70710678;
+  return (h & 1u) != 0u ? s.y * d.x : s.y * d.y;
 }
-vec3 msHashGradient(ivec3 c) {
-  const vec3 g[12] = vec3[](vec3(1, 1, 0), vec3(-1, 1, 0), vec3(1, -1, 0), vec3(-1, -1, 0),
-                            vec3(1, 0, 1), vec3(-1, 0, 1), vec3(1, 0, -1), vec3(-1, 0, -1),
-                            vec3(0, 1, 1), vec3(0, -1, 1), vec3(0, 1, -1), vec3(0, -1, -1));
-  return g[msHash3(c).x % 12u] * 0.70710678;
+float msRamp(ivec3 c, vec3 d) {
+  uint h = msHash3(c).x >> 28u;
+  float u = h < 8u ? d.x : d.y;
+  float v = h < 4u ? d.y : (h == 12u || h == 14u ? d.x : d.z);
+  return (((h & 1u) == 0u ? u : -u) + ((h & 2u) == 0u ? v : -v)) * 0.70710678;
 }
 #endif
 
@@ -66,24 +72,19 @@ float noiseValue(vec3 p) {
 float noiseGradient(vec2 p) {
   ivec2 c = ivec2(floor(p));
   vec2 f = p - floor(p), u = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
-  float a = dot(msHashGradient(c), f);
-  float b = dot(msHashGradient(c + ivec2(1, 0)), f - vec2(1, 0));
-  float d = dot(msHashGradient(c + ivec2(0, 1)), f - vec2(0, 1));
-  float e = dot(msHashGradient(c + ivec2(1, 1)), f - vec2(1, 1));
+  float a = msRamp(c, f), b = msRamp(c + ivec2(1, 0), f - vec2(1, 0));
+  float d = msRamp(c + ivec2(0, 1), f - vec2(0, 1)), e = msRamp(c + ivec2(1, 1), f - vec2(1, 1));
   return 1.41421356 * mix(mix(a, b, u.x), mix(d, e, u.x), u.y);
 }
 float noiseGradient(vec3 p) {
   ivec3 c = ivec3(floor(p));
   vec3 f = p - floor(p), u = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
   const ivec2 o = ivec2(0, 1);
-  float n[8];
-  for (int i = 0; i < 8; ++i) {
-    ivec3 k = ivec3(i & 1, (i >> 1) & 1, i >> 2);
-    n[i] = dot(msHashGradient(c + k), f - vec3(k));
-  }
-  float a = mix(mix(n[0], n[1], u.x), mix(n[2], n[3], u.x), u.y);
-  float b = mix(mix(n[4], n[5], u.x), mix(n[6], n[7], u.x), u.y);
-  return 1.15470054 * mix(a, b, u.z);
+  float a = mix(msRamp(c + o.xxx, f - vec3(o.xxx)), msRamp(c + o.yxx, f - vec3(o.yxx)), u.x);
+  float b = mix(msRamp(c + o.xyx, f - vec3(o.xyx)), msRamp(c + o.yyx, f - vec3(o.yyx)), u.x);
+  float d = mix(msRamp(c + o.xxy, f - vec3(o.xxy)), msRamp(c + o.yxy, f - vec3(o.yxy)), u.x);
+  float e = mix(msRamp(c + o.xyy, f - vec3(o.xyy)), msRamp(c + o.yyy, f - vec3(o.yyy)), u.x);
+  return 1.15470054 * mix(mix(a, b, u.y), mix(d, e, u.y), u.z);
 }
 #endif
 
@@ -102,7 +103,7 @@ float noiseSimplex(vec2 p) {
   float n = 0.0;
   for (int j = 0; j < 3; ++j) {
     float a = max(0.5 - dot(d[j], d[j]), 0.0);
-    n += a * a * a * a * dot(msHashGradient(ivec2(i + k[j])), d[j]);
+    n += a * a * a * a * msRamp(ivec2(i + k[j]), d[j]);
   }
   return n * (1.0 / 0.0100802);
 }
@@ -117,7 +118,7 @@ float noiseSimplex(vec3 p) {
   float n = 0.0;
   for (int j = 0; j < 4; ++j) {
     float a = max(0.5 - dot(d[j], d[j]), 0.0);
-    n += a * a * a * a * dot(msHashGradient(ivec3(i + k[j])), d[j]);
+    n += a * a * a * a * msRamp(ivec3(i + k[j]), d[j]);
   }
   return n * (1.0 / 0.0092891);
 }
