@@ -100,6 +100,12 @@ TEST(LibraryClaims, EveryFunctionHasAClaimAndACase) {
   for (const Claim& c : claims()) prims += (c.function.rfind("sd", 0) == 0 || c.function.rfind("ud", 0) == 0) &&
                                            c.function.rfind("sd2", 0) != 0 && c.function.rfind("ud2", 0) != 0;
   EXPECT_GE(prims, 30) << "3D primitives";
+  if (const char* dir = std::getenv("MARCH_LIBRARY_RESULTS")) {  // for tools/library-table.sh
+    nlohmann::json out = nlohmann::json::array();
+    for (const Claim& c : claims())
+      out.push_back({{"function", c.function}, {"file", c.file}, {"claim", c.kind}, {"lipschitz", c.lipschitz}});
+    std::ofstream(fs::path(dir) / "claims.json") << out.dump(1) << "\n";
+  }
 }
 
 // docs/shader-library.md between the markers: one row per claim, in library
