@@ -28,6 +28,8 @@ TEST_P(Cost, StaysWithinItsBounds) {
   const RunResult r = run_marchstudio({"bench", (source_dir() / "scenes" / (name + ".toml")).string(), "--size",
                                        size, "--frames", "1", "--warmup", "0", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  // bench checks the bounds (render/bounds_check.h): a shipped scene's hold its map.
+  EXPECT_EQ(r.err.find("warning: map() is negative on the [bounds] surface"), std::string::npos) << r.err;
   const nlohmann::json cost = nlohmann::json::parse(r.out).at("cost");
   const double steps = cost.at("primary_steps").at("mean").get<double>();
   const double cap = cost.at("step_cap_fraction").get<double>();
