@@ -3,9 +3,6 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -206,15 +203,7 @@ std::vector<Case> load_cases(const std::string& path, const std::vector<Claim>& 
 }
 
 CaseResult verify_case(const Case& c, const std::string& shader_dir) {
-  auto t0 = std::chrono::steady_clock::now();
-  auto lap = [&](const char* what) {
-    if (!std::getenv("MARCH_LIBRARY_TIMES")) return;
-    auto t1 = std::chrono::steady_clock::now();
-    std::fprintf(stderr, "  %s %s: %.0f ms\n", c.function.c_str(), what, std::chrono::duration<double>(t1 - t0).count() * 1e3);
-    t0 = t1;
-  };
   const GpuCase gpu(shader_dir, c.src);
-  lap("compile");
   CaseResult r;
   std::mt19937 rng(static_cast<unsigned>(std::hash<std::string>{}(c.function + "|" + c.condition)));
   std::uniform_real_distribution<float> u01(0.0f, 1.0f);
@@ -244,7 +233,6 @@ CaseResult verify_case(const Case& c, const std::string& shader_dir) {
     pts.push_back(b);
   }
   const std::vector<Sample> s = gpu.eval(pts);
-  lap("eval");
 
   const double L = c.lipschitz;
   const bool is_noise = c.kind == "noise";
@@ -269,7 +257,6 @@ CaseResult verify_case(const Case& c, const std::string& shader_dir) {
     const int grid = c.dims == 2 ? 1024 : 96, steps = c.dims == 2 ? 512 : 160;
     const std::vector<glm::vec3> zs = c.kind == "unsigned" ? gpu.surface(400) : gpu.zeros(c.box, grid, steps, c.dims);
     r.surface_samples = static_cast<int>(zs.size());
-    lap("zeros");
     if (zs.empty()) fail("no surface found in the box");
     const float h = c.kind == "unsigned" ? scale / 200.0f : 2.0f * scale / grid;  // sample spacing
     const Nearest nearest(zs);
@@ -360,7 +347,6 @@ CaseResult verify_case(const Case& c, const std::string& shader_dir) {
              ", at " + fmt_point(q));
       }
     }
-    lap("distance");
   }
   for (int i = 0; i < static_cast<int>(pts.size()); ++i) {
     const Sample& x = s[i];
