@@ -26,9 +26,10 @@ TEST_P(Cost, StaysWithinItsBounds) {
   ASSERT_TRUE(max_steps && max_cap) << "tests/cost/bounds.toml has no complete [" << name << "]";
 
   const RunResult r = run_marchstudio({"bench", (source_dir() / "scenes" / (name + ".toml")).string(), "--size",
-                                       size, "--frames", "1", "--warmup", "0", "--json"});
+                                       size, "--frames", "1", "--warmup", "0", "--json", "--strict"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  // bench checks the bounds (render/bounds_check.h): a shipped scene's hold its map.
+  // --strict: no NaN/Inf pixel (exit 1). And bench checks the bounds
+  // (render/bounds_check.h): a shipped scene's hold its map.
   EXPECT_EQ(r.err.find("warning: map() is negative on the [bounds] surface"), std::string::npos) << r.err;
   const nlohmann::json cost = nlohmann::json::parse(r.out).at("cost");
   const double steps = cost.at("primary_steps").at("mean").get<double>();
