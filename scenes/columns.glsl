@@ -17,7 +17,7 @@ vec2 map(vec3 p) {
   // Fold z so both rows are one row at z = +2.5, then repeat along x.
   vec3 q = vec3(p.x, p.y, abs(p.z) - 2.5);
   vec3 c = q;
-  c.x = opRepeatLimited(q.x, 3.0, 4.0);
+  c.x = domRepeatLimited(q.x, 3.0, 4.0);
   vec2 cols = column(c);
 
   vec2 beam = vec2(sdBox(q - vec3(0.0, 4.6, 0.0), vec3(13.6, 0.3, 0.65)), MAT_STONE);

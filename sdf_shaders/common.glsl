@@ -33,3 +33,27 @@ vec3 perpTo(vec3 v, vec3 d) { return v - d * dot(v, d); }
 bool notFinite(vec3 v) {
   return any(notEqual(v, v)) || maxComp(abs(v)) > 3e38;
 }
+
+// ---- helpers of the distance functions (ms: internal, never guarded) ----
+
+// Squared length.
+float msDot2(vec2 v) { return dot(v, v); }
+float msDot2(vec3 v) { return dot(v, v); }
+
+// z of the 3D cross product of (a, 0) and (b, 0): > 0 when b lies counter-clockwise of a.
+float msCross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
+
+// Signed distance of a box from q = abs(p) - halfExtents: the outside part by
+// Euclid, the inside part by the nearest face. Exact.
+float msBoxQ(vec2 q) { return length(max(q, 0.0)) + min(max(q.x, q.y), 0.0); }
+float msBoxQ(vec3 q) { return length(max(q, 0.0)) + min(maxComp(q), 0.0); }
+
+// Squared distance from p to the segment a-b (a == b: to the point).
+float msSegment2(vec2 p, vec2 a, vec2 b) {
+  vec2 pa = p - a, ba = b - a;
+  return msDot2(pa - ba * clamp(dot(pa, ba) / max(dot(ba, ba), 1e-20), 0.0, 1.0));
+}
+float msSegment2(vec3 p, vec3 a, vec3 b) {
+  vec3 pa = p - a, ba = b - a;
+  return msDot2(pa - ba * clamp(dot(pa, ba) / max(dot(ba, ba), 1e-20), 0.0, 1.0));
+}

@@ -3,6 +3,17 @@
 // The root has already included prelude, primitives, operators and the
 // scene's map(); this file pulls in the rest of the library.
 #pragma once
+#ifndef BOUNDS_PROBE
+#define BOUNDS_PROBE 0
+#endif
+// Outside any #if: marchstudio's preprocessor expands an include whatever
+// the conditions around it, and #pragma once would then skip the active one.
+#include "bounds.glsl"
+#if BOUNDS_PROBE
+// Not an image: map() on the surface of the scene's [bounds], for the host's
+// bounds check (bounds_probe.glsl, app/render/bounds_check.h).
+#include "bounds_probe.glsl"
+#else
 #include "sky.glsl"
 #include "camera.glsl"
 #include "trace.glsl"
@@ -227,3 +238,4 @@ void main() {
   outColor = vec4(max(c, vec3(0.0)), nonFinite ? -1.0 : 0.0);  // post ignores alpha but its sign
 #endif
 }
+#endif  // BOUNDS_PROBE

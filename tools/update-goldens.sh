@@ -10,8 +10,10 @@
 # result. It refuses to run in CI, where it would turn every regression into
 # a new "correct".
 #
-# Usage: tools/update-goldens.sh [path/to/marchstudio]
-#   The binary defaults to $MARCHSTUDIO, else build/marchstudio.
+# Usage: tools/update-goldens.sh [path/to/marchstudio] [scene ...]
+#   The binary defaults to $MARCHSTUDIO, else build/marchstudio. With scene
+#   names (e.g. `menger city`) only those goldens are rendered, so adding a
+#   scene does not touch the others' goldens.
 set -euo pipefail
 
 if [[ "${CI:-}" == "true" ]]; then
@@ -21,6 +23,8 @@ fi
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bin=${1:-${MARCHSTUDIO:-$root/build/marchstudio}}
+shift $(( $# > 0 ? 1 : 0 ))
+only=("$@")
 if [[ ! -x "$bin" ]]; then
   echo "update-goldens.sh: no marchstudio binary at '$bin' (build it, or pass its path)" >&2
   exit 2
@@ -47,6 +51,16 @@ scenes=("$root"/scenes/*.toml)
 if (( ${#scenes[@]} == 0 )); then
   echo "update-goldens.sh: no scenes in $root/scenes" >&2
   exit 2
+fi
+if (( ${#only[@]} > 0 )); then
+  scenes=()
+  for name in "${only[@]}"; do
+    if [[ ! -f $root/scenes/$name.toml ]]; then
+      echo "update-goldens.sh: no scenes/$name.toml" >&2
+      exit 2
+    fi
+    scenes+=("$root/scenes/$name.toml")
+  done
 fi
 
 for scene in "${scenes[@]}"; do

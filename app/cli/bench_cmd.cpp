@@ -15,6 +15,8 @@
 #include "scene/quality.h"
 #include "render/aov.h"
 #include "scene/animation.h"
+#include "render/bounds_check.h"
+#include "render/uniforms.h"
 #include "shader/assemble.h"
 
 namespace ms {
@@ -100,6 +102,10 @@ int run_bench_command(const BenchArgs& a) {
   // Keyframed values at the benchmarked time, as render poses them.
   const Scene posed = animated(in.scene, s.time);
   const BenchResult r = run_bench(*ctx, posed, in.main, counting, post, s);
+  const std::string bw = bounds_warning(a.input, check_bounds(posed, opts, [&](const Program& p) {  // render/bounds_check.h
+    set_scene_uniforms(p, posed, s.width, s.height, s.time, 0);
+  }));
+  if (!bw.empty()) std::fprintf(stderr, "marchstudio: %s\n", bw.c_str());
   const BenchSubject subject{a.input, in.scene.name, a.disable, specialization_name(opts.specialize)};
   const std::string text = a.json ? bench_json(subject, s, r) : bench_table(subject, s, r);
   std::fputs(text.c_str(), stdout);

@@ -18,10 +18,12 @@
 #include "gl/context.h"
 #include "io/image_io.h"
 #include "render/aov.h"
+#include "render/bounds_check.h"
 #include "core/deadline.h"
 #include "render/frame.h"
 #include "render/still.h"
 #include "render/tiles.h"
+#include "render/uniforms.h"
 #include "scene/animation.h"
 #include "cli/flag_checks.h"
 #include "cli/input.h"
@@ -192,6 +194,12 @@ int run_render(const RenderArgs& a) {
   const Program main_prog(fullscreen_vertex_source(), in.main);
   const Program post_prog(fullscreen_vertex_source(), post_src);
   const double t_compile = clock.lap();
+  if (a.verbose && !in.shadertoy) {  // does [bounds] hold what map() draws? (render/bounds_check.h)
+    const std::string w = bounds_warning(input.string(), check_bounds(posed, opts, [&](const Program& p) {
+      set_scene_uniforms(p, posed, fp.width, fp.height, time, a.frame);
+    }));
+    if (!w.empty()) std::fprintf(stderr, "marchstudio: %s\n", w.c_str());
+  }
   FrameRenderer renderer(*ctx);
   StillFrame still;
   still.scene = &posed;

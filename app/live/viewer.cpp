@@ -84,6 +84,7 @@ class Viewer {
   void screenshot();
   void write_camera();
   void write_values();
+  void watch_bounds(double now);
 
   const ViewerOptions& o_;
   LiveLog log_;
@@ -95,7 +96,37 @@ class Viewer {
   long frames_ = 0, iterations_ = 0;
   int reloads_ = 0;
   PendingReload pending_;
+  // The bounds check (render/bounds_check.h): after each reload, when a
+  // slider moves, and once a second for animation; reported when it changes.
+  ProgramCache bounds_cache_{2};
+  int bounds_generation_ = -1;
+  std::vector<SceneParam> bounds_params_;
+  double t_bounds_ = 0.0;
+  std::string bounds_warning_;
 };
+
+void Viewer::watch_bounds(double now) {
+  if (!session_.main_program() || session_.shadertoy()) return;
+  const bool same_params = std::equal(bounds_params_.begin(), bounds_params_.end(), session_.params().begin(),
+                                      session_.params().end(),
+                                      [](const SceneParam& a, const SceneParam& b) { return a.value == b.value; });
+  if (session_.generation() == bounds_generation_ && same_params && now - t_bounds_ < 1.0) return;
+  bounds_generation_ = session_.generation();
+  bounds_params_ = session_.params();
+  t_bounds_ = now;
+  std::string w;
+  try {
+    w = bounds_warning(session_.scene().file.string(), drawer_->check_bounds(o_.assemble, bounds_cache_));
+  } catch (const Error&) {
+    return;  // the probe is the main pass's code: its reload reports the error
+  }
+  if (w == bounds_warning_) return;
+  bounds_warning_ = w;
+  log_.line(w.empty() ? "bounds ok" : "bounds " + w);
+  if (w.empty()) return;
+  std::fprintf(stderr, "marchstudio: %s\n", w.c_str());
+  s_.say("geometry crosses [bounds]: it is cut off (see the terminal)");
+}
 
 void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event) {
   pending_ = {true, reloads_++, t_event, frame_at_event, iteration_at_event, session_.reload(from_disk)};
@@ -229,8 +260,12 @@ int Viewer::run() {
   // of an exception.
   struct ReleaseGl {
     Session& s;
-    ~ReleaseGl() { s.release_gl(); }
-  } release_gl{session_};
+    ProgramCache& probe;
+    ~ReleaseGl() {
+      s.release_gl();
+      probe.clear();
+    }
+  } release_gl{session_, bounds_cache_};
   install_input_callbacks(window_, &s_);
   ImGuiScope imgui(window_);
   FrameDrawer drawer(window_, *ctx, session_, s_);
@@ -276,6 +311,7 @@ int Viewer::run() {
       t_swap = t1;
       drawer.poll_gpu_time(t1);
       after_frame();
+      watch_bounds(t1);
       if (frames_ == o_.shot_frame) s_.want_shot = true;
     }
     serve_requests();

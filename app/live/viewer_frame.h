@@ -11,6 +11,7 @@
 #include "live/live_log.h"
 #include "live/session.h"
 #include "live/view_state.h"
+#include "render/bounds_check.h"
 #include "render/frame.h"
 #include "render/gpu_timer.h"
 #include "render/uniforms.h"
@@ -39,6 +40,12 @@ class FrameDrawer {
   void screenshot(const std::filesystem::path& path, int w, int h);
   // The window's back buffer with the UI (call between draw() and the swap).
   void window_shot(const std::filesystem::path& path, LiveLog& log);
+
+  // map() on the scene's [bounds] surface as drawn now (time, sliders):
+  // render/bounds_check.h, the probe's program kept in `cache`.
+  BoundsCheck check_bounds(const AssembleOptions& opts, ProgramCache& cache) {
+    return ms::check_bounds(posed(static_cast<float>(s_.time)), opts, uniforms(rw_, rh_), &cache);
+  }
 
   int render_width() const { return rw_; }
   int render_height() const { return rh_; }

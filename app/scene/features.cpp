@@ -8,6 +8,11 @@ namespace {
 
 bool is_word(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
+// The kinds of guarded library functions (docs/shader-library.md): signed
+// and unsigned distances (sd, sd2, ud, ud2), operators (op), domain
+// operators (dom) and noises (noise).
+constexpr std::string_view kLibraryPrefixes[] = {"sd", "ud", "op", "dom", "noise"};
+
 // True when material i's reflectivity is keyed above 0 at some time.
 bool animated_reflective(const Scene& scene, size_t i) {
   const std::string target = "materials[" + std::to_string(i) + "].reflectivity";
@@ -50,10 +55,14 @@ std::vector<std::string> referenced_library_names(std::string_view glsl) {
     const size_t b = i;
     while (i < n && is_word(glsl[i])) ++i;
     const std::string_view w = glsl.substr(b, i - b);
-    // A number such as "1e5" never starts with "sd"/"op", so no digit check.
-    if (w.size() > 2 && (w.substr(0, 2) == "sd" || w.substr(0, 2) == "op") &&
-        (std::isupper(static_cast<unsigned char>(w[2])) || std::isdigit(static_cast<unsigned char>(w[2]))))
-      names.emplace_back(w);
+    // A number such as "1e5" never starts with a prefix, so no digit check.
+    for (std::string_view prefix : kLibraryPrefixes)
+      if (w.size() > prefix.size() && w.substr(0, prefix.size()) == prefix &&
+          (std::isupper(static_cast<unsigned char>(w[prefix.size()])) ||
+           std::isdigit(static_cast<unsigned char>(w[prefix.size()])))) {
+        names.emplace_back(w);
+        break;
+      }
   }
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());

@@ -19,7 +19,7 @@ struct FeatureSet {
   bool shadows = false;           // quality.shadows, shadow_steps > 0 and at least one light
   bool ao = false;                // quality.ao and ao_taps > 0
   bool checker = false;           // some material has pattern = "checker"
-  std::vector<std::string> library;  // sd*/op* names the map references, sorted, each once
+  std::vector<std::string> library;  // library names (sd*, op*, dom*, ...) the map references, sorted, each once
 
   int point_lights() const;
   int directional_lights() const;
@@ -34,8 +34,9 @@ FeatureSet derive_features(const Scene& scene, std::string_view map_glsl);
 // frame, after panel edits, without rescanning the GLSL).
 FeatureSet derive_features(const Scene& scene, std::vector<std::string> library);
 
-// Identifiers that look like library primitives or operators ("sd" or "op"
-// followed by an upper-case letter or digit) in `glsl`, comments skipped,
+// Identifiers that look like library functions (a kind prefix, "sd", "ud",
+// "op", "dom" or "noise", followed by an upper-case letter or digit) in
+// `glsl`, comments skipped,
 // sorted and unique. Lexical: a name in an inactive #if group counts too,
 // which only ever keeps more code than needed.
 std::vector<std::string> referenced_library_names(std::string_view glsl);

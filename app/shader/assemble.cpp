@@ -89,15 +89,15 @@ PreprocessOptions scene_options(const Scene& scene, const AssembleOptions& opts)
   return popts;
 }
 
-// The GLSL whose sd*/op* references decide which library functions a
-// specialized shader keeps: the map with everything it includes, the
-// pipeline (main.frag and its files) and the -D values. Only primitives.glsl
-// and operators.glsl themselves are left out: they are included first, so
+// The GLSL whose library references (sd*, op*, dom*, noise*) decide which
+// library functions a specialized shader keeps: the map with everything it
+// includes, the pipeline (main.frag and its files) and the -D values. Only
+// the library files themselves are left out: they are included first, so
 // #pragma once skips them afterwards.
 std::string library_users(const std::string& map_path, const AssembleOptions& opts, PreprocessOptions popts) {
   popts.model_driver = false;  // every include, whatever the #ifs: the scan over-approximates
   const std::string marker = "// marchstudio: library users start here\n";
-  const std::string root = "#include \"primitives.glsl\"\n#include \"operators.glsl\"\n" + marker +
+  const std::string root = "#include \"primitives.glsl\"\n#include \"operators.glsl\"\n#include \"noise.glsl\"\n" + marker +
                            "#include \"" + map_path + "\"\n#include \"main.frag\"\n";
   std::string text = preprocess(root, "library scan (generated)", opts.shader_dir, popts).text;
   text.erase(0, text.find(marker));
@@ -189,6 +189,7 @@ ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts) {
   root += sp.constants;
   root += "#include \"primitives.glsl\"\n";
   root += "#include \"operators.glsl\"\n";
+  root += "#include \"noise.glsl\"\n";
   root += "#include \"" + map_path + "\"\n";
   root += "#include \"main.frag\"\n";
   ShaderSource src = preprocess(root, scene_display_name(scene) + ".frag (generated)", opts.shader_dir, popts);

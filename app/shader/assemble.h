@@ -36,7 +36,7 @@ std::vector<std::filesystem::path> include_roots(const std::filesystem::path& sc
 
 // The scene's main-pass fragment shader: NUM_LIGHTS, NUM_MATERIALS,
 // MAT_<NAME> per material (ids in TOML order), the quality defines, then
-// prelude/primitives/operators, the scene's map file (absolute) and main.frag.
+// prelude/primitives/operators/noise, the scene's map file (absolute) and main.frag.
 // Source string 0 is shown as "<scene name>.frag (generated)".
 // opts.specialize picks the generic shader or a specialized one
 // (docs/specialization.md).

@@ -183,6 +183,7 @@ class ConfineScene : public Confine {
     put(lib() / "prelude.glsl", "// prelude\n");
     put(lib() / "primitives.glsl", "// primitives\n");
     put(lib() / "operators.glsl", "// operators\n");
+    put(lib() / "noise.glsl", "// noise\n");
     put(lib() / "main.frag", "void main() {}\n");
     put(lib() / "post.frag", "void main() {}\n");
     s.file = scene() / "scene.toml";

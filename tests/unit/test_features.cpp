@@ -94,6 +94,10 @@ TEST(Features, LibraryNamesAreScannedLexically) {
   EXPECT_EQ(names, (std::vector<std::string>{"opSmoothUnion", "opUnion", "sdBox", "sdSphere"}));
   EXPECT_TRUE(referenced_library_names("").empty());
   EXPECT_EQ(referenced_library_names("sd2Box(p) /* unterminated"), std::vector<std::string>{"sd2Box"});
+  // Every kind prefix: distances, unsigned distances, domain operators, noise.
+  EXPECT_EQ(referenced_library_names("udTriangle(domTwist(p, k), a, b, c) + noiseFbm(p.xz, 4, 0.5) + "
+                                     "ud2Segment(q, a, b) + domain + noisy + udder"),
+            (std::vector<std::string>{"domTwist", "noiseFbm", "ud2Segment", "udTriangle"}));
 }
 
 TEST(Features, EqualScenesGiveEqualSetsAndDescribeSaysWhat) {

@@ -97,10 +97,10 @@ TEST(ShaderAssemble, SceneDefinesFromTheSceneStruct) {
                         "#define ENABLE_CHECKER_FILTER 1"})
     EXPECT_TRUE(has_line(s.text, l)) << l;
   EXPECT_EQ(s.files[0], "test.frag (generated)");
-  // prelude, primitives (once, though map.glsl includes it too), operators, map, main.
-  ASSERT_EQ(s.files.size(), 6u);
-  EXPECT_EQ(s.files[4], display_path(shader_data("scene/map.glsl")));
-  EXPECT_EQ(s.dependencies.size(), 5u);
+  // prelude, primitives (once, though map.glsl includes it too), operators, noise, map, main.
+  ASSERT_EQ(s.files.size(), 7u);
+  EXPECT_EQ(s.files[5], display_path(shader_data("scene/map.glsl")));
+  EXPECT_EQ(s.dependencies.size(), 6u);
   // The defines come before any library code.
   EXPECT_LT(s.text.find("#define ENABLE_CHECKER_FILTER"), s.text.find("#line 100001 1"));
 }

@@ -5,10 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
 #include <functional>
+#include <map>
+#include <regex>
+#include <set>
 
 #include "core/error.h"
 #include "render/aov.h"
+#include "scene/features.h"
 #include "scene/load.h"
 #include "shader/assemble.h"
 #include "shader/specialize.h"
@@ -216,9 +221,71 @@ TEST(SpecializeSource, CheckerAndLibraryCodeOnlyWhenUsed) {
   EXPECT_TRUE(body_of(suns, "float sdBox(").empty());
   // The generic shader keeps all of it.
   const std::string gen = active(data("suns.toml"), Specialization::generic);
-  for (const char* f : {"float checkerFiltered(", "float sdTorus(", "float sdBox(", "opRepeatCell("})
+  for (const char* f : {"float checkerFiltered(", "float sdTorus(", "float sdBox(", "domRepeatCell("})
     EXPECT_FALSE(body_of(gen, f).empty()) << f;
   EXPECT_LT(matte.size(), active(data("matte.toml"), Specialization::generic).size());
+}
+
+// Every guarded library function (sdf_shaders/), with the library names
+// its own code calls.
+std::map<std::string, std::vector<std::string>> library_functions() {
+  const std::regex guard(R"(^#if !defined\(MS_LIBRARY_SUBSET\) \|\| defined\(USE_[A-Z0-9]+\)\s*$)");
+  const std::regex def(R"(^\s*(?:float|vec2|vec3|vec4)\s+(\w+)\s*\()");
+  std::map<std::string, std::vector<std::string>> out;
+  for (const auto& e : fs::directory_iterator(source("sdf_shaders"))) {
+    std::ifstream in(e.path());
+    std::string line, name, block;
+    bool inside = false;
+    std::smatch m;
+    while (std::getline(in, line)) {
+      if (std::regex_match(line, guard)) {
+        inside = true;
+        name.clear();
+        block.clear();
+      } else if (inside && line.rfind("#endif", 0) == 0) {
+        inside = false;
+        std::vector<std::string> calls = referenced_library_names(block);
+        std::erase(calls, name);
+        if (!name.empty()) out[name] = calls;
+      } else if (inside) {
+        if (name.empty() && std::regex_search(line, m, def)) name = m[1];
+        block += line + "\n";
+      }
+    }
+  }
+  return out;
+}
+
+// Specialization keeps exactly the library code a scene's map uses: the
+// functions its map (and what it includes) names and what those call, no
+// other, for every shipped and test scene.
+TEST(SpecializeSource, EachSceneKeepsOnlyTheLibraryFunctionsItUses) {
+  if (!test::have_glslang()) GTEST_SKIP() << "glslangValidator not on PATH";
+  const auto lib = library_functions();
+  ASSERT_GT(lib.size(), 80u);
+  for (const fs::path& scene : all_scenes()) {
+    const Scene s = load_scene(scene);
+    std::set<std::string> want;
+    std::vector<std::string> todo = scene_features(s, options(Specialization::folded)).library;
+    while (!todo.empty()) {
+      const std::string n = todo.back();
+      todo.pop_back();
+      const auto it = lib.find(n);
+      if (it == lib.end() || !want.insert(n).second) continue;
+      todo.insert(todo.end(), it->second.begin(), it->second.end());
+    }
+    const std::string spec = active(scene, Specialization::folded);
+    ASSERT_FALSE(spec.empty()) << scene;
+    std::set<std::string> defined_names;  // every function the compiler sees defined
+    const std::regex def(R"(\b(?:float|vec2|vec3|vec4)\s+(\w+)\s*\()");
+    for (auto it = std::sregex_iterator(spec.begin(), spec.end(), def); it != std::sregex_iterator(); ++it)
+      defined_names.insert((*it)[1]);
+    for (const auto& [name, calls] : lib) {
+      const bool defined = defined_names.count(name) > 0;
+      EXPECT_EQ(defined, want.count(name) > 0) << scene.filename() << ": " << name
+                                               << (defined ? " is compiled in but not used" : " is used but missing");
+    }
+  }
 }
 
 TEST(SpecializeSource, EveryVariantOfEverySceneCompiles) {
