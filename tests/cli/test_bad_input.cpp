@@ -130,8 +130,9 @@ TEST_F(BadInput, AbsurdSizes) {
 
 TEST_F(BadInput, UnwritableOutput) {
   write_file(dir / "s.toml", scene_text());
-  auto r = render_expecting_error({"render", "s.toml", "-o", "no/such/dir/out.png"});
-  EXPECT_NE(r.err.find("no/such/dir"), std::string::npos) << r.err;
+  // A missing directory is made (mkdir -p); one under a file cannot be.
+  auto r = render_expecting_error({"render", "s.toml", "-o", "m.glsl/sub/out.png"});
+  EXPECT_NE(r.err.find("output directory cannot be made: m.glsl is not a directory"), std::string::npos) << r.err;
   r = render_expecting_error({"render", "s.toml", "-o", "m.glsl/out.png"});  // parent is a file
   EXPECT_NE(r.err.find("m.glsl"), std::string::npos) << r.err;
   if (geteuid() != 0) {  // root writes through permission bits

@@ -224,10 +224,11 @@ TEST_F(Compare, DiffNeverOverwritesAnInput) {
   EXPECT_EQ(read_file(a), before);
 }
 
-TEST_F(Compare, DiffIntoAMissingDirectoryFailsBeforeReading) {
-  RunResult r = compare({"--diff", "no/such/dir/d.png"}, a, "missing.png");
+TEST_F(Compare, DiffIntoADirectoryThatCannotBeMadeFailsBeforeReading) {
+  write_file(dir / "afile", "x");
+  RunResult r = compare({"--diff", (dir / "afile/sub/d.png").string()}, a, "missing.png");
   expect_bad_input(r, "--diff");  // the output path is checked first
-  EXPECT_NE(r.err.find("no/such/dir"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("afile/sub"), std::string::npos) << r.err;
 }
 
 // --warn and --exit-codes idiff: OpenImageIO idiff's codes (0 pass, 1 warn,
