@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "io/input_file.h"
+#include "scene/load_passes.h"
 #include "core/error.h"
 #include "scene/animation.h"
 #include "scene/load_geometry.h"
@@ -88,8 +89,8 @@ struct Section {
 };
 
 struct Schema {
-  std::vector<std::string_view> top{"scene",     "camera", "render", "sky",   "quality",
-                                    "lights",    "materials", "planes", "bounds", "animation"};
+  std::vector<std::string_view> top{"scene",  "camera", "render", "sky",       "quality",   "lights",
+                                    "materials", "planes", "bounds", "animation", "shadertoy", "passes"};
   std::vector<Section> sections{
       {"scene", false, {"name", "map", "shadertoy"}},
       {"camera", false, keys_of(kCameraFields)},
@@ -295,6 +296,12 @@ void resolve_sources(const Reader& r, const toml::table* t, const fs::path& disp
   if (has_map && has_shadertoy)
     r.fail(Reader::line_of(*t, "shadertoy"), "scene.shadertoy", "'scene.map' and 'scene.shadertoy' exclude each other",
            "a scene is either an SDF map or a Shadertoy shader");
+  if (scene.passes) {
+    if (has_map || has_shadertoy)
+      r.fail(Reader::line_of(*t, has_map ? "map" : "shadertoy"), has_map ? "scene.map" : "scene.shadertoy",
+             "[[passes]] name the shader's files: drop " + std::string(has_map ? "'scene.map'" : "'scene.shadertoy'"));
+    return;
+  }
   if (has_shadertoy) {
     scene.shadertoy_file = resolve_glsl(r, *t, display_path, "shadertoy");
     return;
@@ -309,10 +316,11 @@ void resolve_sources(const Reader& r, const toml::table* t, const fs::path& disp
 // only [scene] and [render]'s size, samples, time and exposure. Anything
 // else would be silently dropped, so it is an error at its line.
 void check_shadertoy_wrapper(const Reader& r, const toml::table& root) {
-  const std::string hint = "a [scene] shadertoy wrapper takes [scene] and [render] width, height, spp, time, exposure";
+  const std::string hint =
+      "a Shadertoy wrapper takes [scene], [render] width, height, spp, time, exposure, [shadertoy] and [[passes]]";
   for (auto&& [k, v] : root) {
     const std::string key(k.str());
-    if (key == "scene" || key == "render") continue;
+    if (key == "scene" || key == "render" || key == "shadertoy" || key == "passes") continue;
     int line = static_cast<int>(v.source().begin.line);
     if (const toml::array* a = v.as_array(); a && !a->empty()) line = static_cast<int>((*a)[0].source().begin.line);
     r.fail(line, key, quote(key) + " has no effect on a Shadertoy shader", hint);
@@ -337,8 +345,14 @@ Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
   if (st) {
     schema.check(r, *st, "scene", "scene");
     r.read(*st, "scene", "name", scene.name);
-    if (st->contains("shadertoy")) check_shadertoy_wrapper(r, root);
   }
+  const bool wrapper = (st && st->contains("shadertoy")) || root.contains("passes");
+  if (wrapper) check_shadertoy_wrapper(r, root);
+  if (!wrapper && root.contains("shadertoy"))
+    r.fail(root["shadertoy"].as_table() ? Reader::line_of(*root["shadertoy"].as_table()) : 0, "shadertoy",
+           "[shadertoy] settings need a Shadertoy shader", "[scene] shadertoy = \"x.glsl\" (or .json), or [[passes]]");
+  read_shadertoy_settings(r, root, display_path, scene.shadertoy);
+  scene.passes = read_passes(r, root, display_path, scene.shadertoy);
   const toml::table* camera = read_section(r, schema, root, "camera", kCameraFields, scene.camera);
   check_camera(r, camera, scene.camera);
   if (const toml::table* t = read_section(r, schema, root, "render", kRenderFields, scene.render))
@@ -353,7 +367,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
   for (std::size_t i = 0; i < lights.size(); ++i)
     scene.lights.push_back(read_light(r, schema, *lights[i], "lights[" + std::to_string(i) + "]"));
   // A Shadertoy scene has no map() and so needs no materials.
-  if (!(st && st->contains("shadertoy")) || root.contains("materials")) read_materials(r, schema, root, scene);
+  if (!wrapper || root.contains("materials")) read_materials(r, schema, root, scene);
   const CheckKeys check = [&](const toml::table& t, std::string_view section, const std::string& path) {
     schema.check(r, t, section, path);
   };

@@ -3,10 +3,13 @@
 // No GL here.
 #pragma once
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
+
+#include "shader/project.h"
 
 namespace ms {
 
@@ -123,7 +126,10 @@ struct AnimationTrack {
 struct Scene {
   std::filesystem::path file;      // the .toml, as given
   std::filesystem::path map_file;  // the GLSL with vec2 map(vec3 p), resolved
-  std::filesystem::path shadertoy_file;  // instead of map_file: a Shadertoy shader, resolved
+  std::filesystem::path shadertoy_file;  // instead of map_file: a Shadertoy shader (.glsl or .json), resolved
+  // Instead of both: the passes of a [[passes]] wrapper (docs/scene-format.md).
+  std::shared_ptr<const ShaderProject> passes;
+  ShadertoySettings shadertoy;     // [shadertoy]: media, mouse, fps
   std::string name;
   Camera camera;
   std::vector<Light> lights;

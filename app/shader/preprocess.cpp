@@ -155,6 +155,10 @@ class Preprocessor {
   }
 
   void include(const Directive& d, int parent, int line_no, const fs::path& dir) {
+    if (const auto it = opts_.inline_files.find(d.target); it != opts_.inline_files.end()) {
+      include_inline(d.target, it->second, parent, line_no);
+      return;
+    }
     std::vector<fs::path> searched;
     fs::path outside;
     // Resolved once per directory and name: a file included a thousand
@@ -206,6 +210,28 @@ class Preprocessor {
     line_directive(line_no + 1, parent);
     check_size({parent, line_no});
   }
+  // An inline source: a file index of its own, expanded like a file (its
+  // key is not a path, so it cannot collide with one).
+  void include_inline(const std::string& key, const PreprocessOptions::InlineFile& f, int parent, int line_no) {
+    const fs::path id = "marchstudio-inline:" + key;
+    int file = 0;
+    if (const auto it = index_.find(id); it != index_.end()) {
+      file = it->second;
+    } else {
+      file = static_cast<int>(out_.files.size());
+      if (file >= kMaxFiles) fail_input("more than " + std::to_string(kMaxFiles - 1) + " files included", out_.files[0]);
+      out_.files.push_back(f.display);
+      paths_.push_back(id);
+      index_.emplace(id, file);
+    }
+    if (std::find(stack_.begin(), stack_.end(), file) != stack_.end())
+      fail_input("include cycle through " + f.display, out_.files[parent], line_no);
+    line_directive(1, file);
+    process(f.text, file, f.dir);
+    line_directive(line_no + 1, parent);
+    check_size({parent, line_no});
+  }
+
   // The first candidate that is a regular file, canonical. With roots, a
   // candidate outside them stops the search (in `outside`) whether or not
   // it exists, so errors do not tell which files exist out there either.

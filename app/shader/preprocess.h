@@ -6,6 +6,7 @@
 // its expression depth are bounded, and a live `#error` fails here. No GL.
 #pragma once
 #include <filesystem>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,6 +37,16 @@ struct PreprocessOptions {
   // and have the compiler echo it. assemble.h sets the scene's directory,
   // sdf_shaders/ and --allow-include; empty: unconfined (tests, tools).
   std::vector<std::filesystem::path> roots;
+  // Sources that are not files: `#include "NAME"` of a key here reads its
+  // text, shown in errors as `display`; its own includes resolve in `dir`.
+  // Shadertoy passes come this way (inline JSON code, or a file's text
+  // after shader/es_compat.h's renames). Not confined: the caller read them.
+  struct InlineFile {
+    std::string display;
+    std::string text;
+    std::filesystem::path dir;
+  };
+  std::map<std::string, InlineFile> inline_files;
   // The budgets (macro_engine.h). The text size holds in any case.
   PreprocessLimits limits;
   // Model the driver's preprocessor: conditionals (an #include in a dead

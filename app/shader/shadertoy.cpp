@@ -1,15 +1,14 @@
 #include "shader/shadertoy.h"
 
 #include <algorithm>
-#include <cctype>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <system_error>
 
-#include "io/input_file.h"
 #include "core/error.h"
+#include "io/input_file.h"
+#include "shader/es_compat.h"
 #include "shader/glsl_scan.h"
+#include "shader/project_json.h"
 
 namespace ms {
 
@@ -17,37 +16,78 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The part of the wrapper before the user's file. Shadertoy's uniform set,
-// spelled as on shadertoy.com so shaders paste in unchanged.
-const char* wrapper_head() {
-  return "#version 450 core\n"
-         "uniform vec3      iResolution;           // viewport, pixels (z = 1)\n"
-         "uniform float     iTime;                 // seconds\n"
-         "uniform float     iTimeDelta;\n"
-         "uniform float     iFrameRate;\n"
-         "uniform int       iFrame;\n"
-         "uniform vec4      iMouse;\n"
-         "uniform vec4      iDate;                 // year, month, day, seconds\n"
-         "uniform float     iSampleRate;\n"
-         "uniform float     iChannelTime[4];\n"
-         "uniform vec3      iChannelResolution[4];\n"
-         "uniform sampler2D iChannel0;\n"
-         "uniform sampler2D iChannel1;\n"
-         "uniform sampler2D iChannel2;\n"
-         "uniform sampler2D iChannel3;\n"
-         "uniform vec2      uJitter;               // marchstudio: sub-pixel sample position\n"
-         "layout(location = 0) out vec4 outColor;\n";
+// Shadertoy's uniform set, spelled as on shadertoy.com so shaders paste in
+// unchanged; each channel declared as what is bound to it.
+std::string wrapper_head(const ProjectPass& pass) {
+  std::string s =
+      "#version 450 core\n"
+      "#define HW_PERFORMANCE 1                 // as on a desktop browser\n"
+      "uniform vec3      iResolution;           // viewport, pixels (z = 1)\n"
+      "uniform float     iTime;                 // seconds\n"
+      "uniform float     iTimeDelta;\n"
+      "uniform float     iFrameRate;\n"
+      "uniform int       iFrame;\n"
+      "uniform vec4      iMouse;\n"
+      "uniform vec4      iDate;                 // year, month, day, seconds\n"
+      "uniform float     iSampleRate;\n"
+      "uniform float     iChannelTime[4];\n"
+      "uniform vec3      iChannelResolution[4];\n";
+  for (size_t c = 0; c < pass.inputs.size(); ++c)
+    s += "uniform sampler2D iChannel" + std::to_string(c) + ";\n";  // 2D: buffers, textures, the keyboard
+  s += "uniform vec2      uJitter;               // marchstudio: sub-pixel sample position\n"
+       "layout(location = 0) out vec4 outColor;\n";
+  return s;
 }
 
-const char* wrapper_tail() {
-  return "void main() {\n"
+// The Image pass: Shadertoy's canvas takes (rgb, 1), each channel converted
+// on its own as a float-to-unorm write does (NaN 0, +Inf 1, -Inf 0), so a
+// NaN in one channel leaves the others. A negative alpha marks the sample
+// for the host's NaN/Inf count (--strict); the post pass and the host
+// restore alpha 1.
+const char* image_main() {
+  return "float msUnorm(float v) { return isnan(v) ? 0.0 : isinf(v) ? (v > 0.0 ? 1.0 : 0.0) : v; }\n"
+         "void main() {\n"
          "  vec4 c = vec4(0.0, 0.0, 0.0, 1.0);\n"
          "  mainImage(c, floor(gl_FragCoord.xy) + uJitter);\n"
-         "  // marchstudio: a NaN/Inf sample is zeroed but flagged by a negative alpha\n"
-         "  // sum (spp <= 1024); the post pass turns the pixel NaN for the host's guard.\n"
          "  bool bad = any(isnan(c.rgb)) || any(isinf(c.rgb));\n"
-         "  outColor = bad ? vec4(0.0, 0.0, 0.0, -4096.0) : vec4(c.rgb, 1.0);\n"
+         "  outColor = vec4(msUnorm(c.r), msUnorm(c.g), msUnorm(c.b), bad ? -4096.0 : 1.0);\n"
          "}\n";
+}
+
+// A buffer pass: the whole vec4 into the RGBA32F buffer, as it is (a NaN
+// stays a NaN there, as on Shadertoy), at pixel centres.
+const char* buffer_main() {
+  return "void main() {\n"
+         "  vec4 c = vec4(0.0, 0.0, 0.0, 1.0);\n"
+         "  mainImage(c, gl_FragCoord.xy);\n"
+         "  outColor = c;\n"
+         "}\n";
+}
+
+fs::path absolute_normal(const fs::path& p) {
+  std::error_code ec;
+  return fs::absolute(p, ec).lexically_normal();
+}
+
+// A pass's (or Common's) file, read like an include: inside the roots, a
+// regular file. `key` names it in errors.
+std::string read_source(const fs::path& file, const std::vector<fs::path>& roots, const std::string& origin,
+                        const std::string& key) {
+  const fs::path abs = absolute_normal(file);
+  if (!within_roots(abs, roots))
+    fail_input("'" + display_path(abs) + "' is outside the directories includes may read", origin, 0, key,
+               "allowed: " + describe_roots(roots) + "; widen with --allow-include DIR");
+  return read_input_file(abs, "Shadertoy shader", key);
+}
+
+void refuse_main(const std::string& code, const std::string& where) {
+  const std::string stripped = strip_comments(code);
+  if (const size_t at = find_definition(stripped, "main"); at != std::string::npos) {
+    const int line =
+        1 + static_cast<int>(std::count(stripped.begin(), stripped.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+    fail_input("a Shadertoy shader must not define main()", where, line, {},
+               "define void mainImage(out vec4 fragColor, in vec2 fragCoord) instead");
+  }
 }
 
 }  // namespace
@@ -58,49 +98,105 @@ bool looks_like_shadertoy(std::string_view source) {
          find_definition(s, "main") == std::string_view::npos;
 }
 
-ShaderSource assemble_shadertoy(const fs::path& glsl_file, const AssembleOptions& opts, const fs::path& scene_file) {
-  std::error_code ec;
-  fs::path abs = fs::absolute(glsl_file, ec).lexically_normal();
-  PreprocessOptions popts;
-  popts.include_dirs = {opts.shader_dir};
+std::vector<fs::path> project_roots(const ShaderProject& p, const AssembleOptions& opts, const fs::path& scene_file) {
   // A bare shader was named on the command line: its real directory is the
   // root, even through a symlink. A wrapped one must lie in its scene's.
-  popts.roots = include_roots(scene_file.empty() ? fs::weakly_canonical(abs, ec) : scene_file, opts);
-  if (!within_roots(abs, popts.roots))
+  std::error_code ec;
+  return include_roots(scene_file.empty() ? fs::weakly_canonical(absolute_normal(p.origin), ec) : scene_file, opts);
+}
+
+ShaderProject load_shadertoy_file(const fs::path& file, const AssembleOptions& opts, const fs::path& scene_file) {
+  const fs::path abs = absolute_normal(file);
+  ShaderProject probe;
+  probe.origin = abs;
+  const std::vector<fs::path> roots = project_roots(probe, opts, scene_file);
+  const std::string key = scene_file.empty() ? "" : "scene.shadertoy";
+  if (!within_roots(abs, roots))
     fail_input("the Shadertoy shader '" + display_path(abs) + "' is outside the directories includes may read",
-               display_path(scene_file.empty() ? glsl_file : scene_file), 0, scene_file.empty() ? "" : "scene.shadertoy",
-               "allowed: " + describe_roots(popts.roots) + "; widen with --allow-include DIR");
-  // Regular files only: opening a FIFO would block.
-  const std::string user = read_input_file(abs, "Shadertoy shader", scene_file.empty() ? "" : "scene.shadertoy");
-
-  std::string code = strip_comments(user);
-  if (const size_t at = find_definition(code, "main"); at != std::string_view::npos) {
-    int line = 1 + static_cast<int>(std::count(code.begin(), code.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
-    fail_input("a Shadertoy shader must not define main()", display_path(abs), line, {},
-               "define void mainImage(out vec4 fragColor, in vec2 fragCoord) instead");
+               display_path(scene_file.empty() ? file : scene_file), 0, key,
+               "allowed: " + describe_roots(roots) + "; widen with --allow-include DIR");
+  const std::string text = read_input_file(abs, "Shadertoy shader", key);  // regular files only: a FIFO would block
+  ShaderProject p;
+  if (abs.extension() == ".json" || looks_like_json(text)) {
+    p = load_shadertoy_json(text, display_path(abs));
+  } else {
+    ProjectPass image;
+    image.kind = PassKind::image;
+    image.name = "Image";
+    image.file = abs;
+    image.where = display_path(abs);
+    p.passes.push_back(std::move(image));
   }
-  std::string path = abs.generic_string();
-  if (path.find_first_of("\"\n\r") != std::string::npos)
-    fail_input("the shader path contains a quote or newline", display_path(abs));
+  p.origin = abs;
+  if (p.name.empty()) p.name = abs.stem().string();
+  return p;
+}
 
-  std::string root = wrapper_head();
+ShaderSource assemble_shadertoy_pass(const ShaderProject& p, size_t index, const AssembleOptions& opts,
+                                     const fs::path& scene_file) {
+  const ProjectPass& pass = p.passes.at(index);
+  const std::vector<fs::path> roots = project_roots(p, opts, scene_file);
+  const std::string origin = display_path(scene_file.empty() ? p.origin : scene_file);
+  PreprocessOptions popts;
+  popts.include_dirs = {opts.shader_dir};
+  popts.roots = roots;
+  std::vector<fs::path> read;  // the files besides includes that this pass depends on
+  read.push_back(absolute_normal(p.origin));
+
+  std::string root = wrapper_head(pass);
   for (const auto& [name, value] : opts.defines) root += "#define " + name + " " + value + "\n";
-  root += "#include \"" + path + "\"\n";
-  root += wrapper_tail();
-  ShaderSource src = preprocess(root, display_path(abs) + " (shadertoy wrapper)", abs.parent_path(), popts);
-  // mainImage may come from a file the shader includes, so look after expansion.
+  if (!p.common.empty() || !p.common_file.empty()) {
+    std::string common = p.common;
+    std::string where = p.common_where.empty() ? origin + " (Common)" : p.common_where;
+    fs::path dir = absolute_normal(p.origin).parent_path();
+    if (!p.common_file.empty()) {
+      common = read_source(p.common_file, roots, origin, "shadertoy.common");
+      where = display_path(p.common_file);
+      dir = absolute_normal(p.common_file).parent_path();
+      read.push_back(absolute_normal(p.common_file));
+    }
+    refuse_main(common, where);
+    popts.inline_files["marchstudio:common"] = {where, rename_desktop_keywords(common), dir};
+    root += "#include \"marchstudio:common\"\n";
+  }
+  std::string code = pass.code;
+  std::string where = pass.where.empty() ? origin + " (" + pass.name + ")" : pass.where;
+  fs::path dir = absolute_normal(p.origin).parent_path();
+  if (!pass.file.empty()) {
+    code = read_source(pass.file, roots, origin, pass.name);
+    where = display_path(pass.file);
+    dir = absolute_normal(pass.file).parent_path();
+    read.push_back(absolute_normal(pass.file));
+  }
+  refuse_main(code, where);
+  popts.inline_files["marchstudio:pass"] = {where, rename_desktop_keywords(code), dir};
+  root += "#include \"marchstudio:pass\"\n";
+  root += pass.kind == PassKind::image ? image_main() : buffer_main();
+
+  ShaderSource src = preprocess(root, where + " (shadertoy wrapper)", dir, popts);
+  for (const fs::path& f : read)
+    if (std::find(src.dependencies.begin(), src.dependencies.end(), f) == src.dependencies.end())
+      src.dependencies.insert(src.dependencies.begin(), f);
+  // mainImage may come from a file the pass includes, so look after expansion.
   if (find_definition(strip_comments(src.text), "mainImage") == std::string_view::npos) {
-    // A scene's map file handed over by mistake: point at its scene.
-    fs::path toml = abs;
-    toml.replace_extension(".toml");
     std::string hint = "define void mainImage(out vec4 fragColor, in vec2 fragCoord)";
-    if (find_definition(code, "map", "vec2") != std::string_view::npos)
+    if (find_definition(strip_comments(code), "map", "vec2") != std::string_view::npos && !pass.file.empty()) {
+      // A scene's map file handed over by mistake: point at its scene.
+      fs::path toml = pass.file;
+      toml.replace_extension(".toml");
+      std::error_code ec;
       hint = fs::is_regular_file(toml, ec) ? "it defines map(): render its scene, " + display_path(toml)
                                            : "it defines map(): a map file is rendered through a scene .toml whose "
                                              "[scene] map names it (docs/scene-format.md)";
-    fail_input("no mainImage() found in the Shadertoy shader", display_path(abs), 0, {}, hint);
+    }
+    fail_input("no mainImage() found in the Shadertoy shader", where, 0, {}, hint);
   }
   return src;
+}
+
+ShaderSource assemble_shadertoy(const fs::path& glsl_file, const AssembleOptions& opts, const fs::path& scene_file) {
+  const ShaderProject p = load_shadertoy_file(glsl_file, opts, scene_file);
+  return assemble_shadertoy_pass(p, p.passes.size() - 1, opts, scene_file);
 }
 
 }  // namespace ms

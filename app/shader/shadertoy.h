@@ -1,29 +1,51 @@
-// Runs a Shadertoy single-pass shader (mainImage(out vec4, in vec2)) as a
-// #version 450 core fragment shader: a generated wrapper declares Shadertoy's
-// uniforms, includes the user's file and calls mainImage from main().
+// Shadertoy shaders as #version 450 core fragment shaders. A file (a .glsl
+// with mainImage, or Shadertoy's JSON) becomes a ShaderProject
+// (shader/project.h); each of its passes is assembled with a generated
+// wrapper that declares Shadertoy's uniforms and typed channels, defines
+// HW_PERFORMANCE, puts the Common source first, renames desktop-only
+// keywords (shader/es_compat.h) and calls mainImage from main().
+//
+//   ShaderProject p = load_shadertoy_file("x.json", opts);
+//   for (size_t i = 0; i < p.passes.size(); ++i) passes.push_back(assemble_shadertoy_pass(p, i, opts));
 #pragma once
 #include <filesystem>
 #include <string_view>
 
 #include "shader/assemble.h"
 #include "shader/preprocess.h"
+#include "shader/project.h"
 
 namespace ms {
 
-// The wrapper is source string 0 ("<file> (shadertoy wrapper)"); the user's
-// file is included by absolute path, so its errors map to its own lines, and
-// its own #includes resolve next to it, then in opts.shader_dir.
-// Uniforms, set by the host: iResolution, iTime, iTimeDelta, iFrameRate,
-// iFrame, iMouse, iDate, iSampleRate, iChannelTime[4], iChannelResolution[4],
-// iChannel0..3 (sampler2D), and uJitter (sub-pixel sample position, 0.5,0.5
-// = pixel centre). Throws ms::Error when the file is missing or defines main().
-// Includes may read scene_file's directory (the .toml that wraps the shader;
-// empty: the shader's own, symlinks resolved), opts.shader_dir and opts.allow_include, and the
-// shader itself must lie there.
+// Reads `file` (a regular file inside the include roots: `scene_file`'s
+// directory when it wraps the shader, else the file's own, plus
+// opts.shader_dir and opts.allow_include). JSON by its .json extension or
+// its first byte; otherwise GLSL, one Image pass. Throws ms::Error.
+ShaderProject load_shadertoy_file(const std::filesystem::path& file, const AssembleOptions& opts,
+                                  const std::filesystem::path& scene_file = {});
+
+// Pass `index` of `p`. Source string 0 is the wrapper; the Common source
+// and the pass's code are files of their own, so errors name "x.json
+// (Buffer A):12" or the pass file's line. Uniforms, set by the host:
+// iResolution, iTime, iTimeDelta, iFrameRate, iFrame, iMouse, iDate,
+// iSampleRate, iChannelTime[4], iChannelResolution[4], iChannel0..3, and
+// uJitter (the Image pass's sub-pixel sample position). The Image pass
+// writes (rgb, 1), a non-finite channel as a float-to-unorm write makes it
+// (NaN 0, +Inf 1, -Inf 0) and flagged in alpha; buffer passes write the
+// whole vec4 as it is. Throws ms::Error for main() defined, no mainImage,
+// or anything preprocess() refuses.
+ShaderSource assemble_shadertoy_pass(const ShaderProject& p, size_t index, const AssembleOptions& opts,
+                                     const std::filesystem::path& scene_file = {});
+
+// load_shadertoy_file() then its Image pass: a single-pass shader.
 ShaderSource assemble_shadertoy(const std::filesystem::path& glsl_file, const AssembleOptions& opts,
                                 const std::filesystem::path& scene_file = {});
 
 // True when `source` (comments ignored) defines mainImage and no main().
 bool looks_like_shadertoy(std::string_view source);
+
+// The include roots of a project's passes (see load_shadertoy_file).
+std::vector<std::filesystem::path> project_roots(const ShaderProject& p, const AssembleOptions& opts,
+                                                 const std::filesystem::path& scene_file);
 
 }  // namespace ms

@@ -1,0 +1,52 @@
+#include "shader/project.h"
+
+#include "core/error.h"
+
+namespace ms {
+
+const char* input_kind_name(InputKind k) {
+  switch (k) {
+    case InputKind::none: return "nothing";
+    case InputKind::buffer: return "buffer";
+    case InputKind::texture: return "texture";
+    case InputKind::keyboard: return "keyboard";
+    case InputKind::cubemap: return "cubemap";
+    case InputKind::volume: return "volume";
+    case InputKind::music: return "music";
+    case InputKind::musicstream: return "musicstream";
+    case InputKind::mic: return "mic";
+    case InputKind::video: return "video";
+    case InputKind::webcam: return "webcam";
+  }
+  return "?";
+}
+
+std::string buffer_letter(int buffer) { return std::string(1, static_cast<char>('A' + buffer)); }
+
+void check_project(const ShaderProject& p, const std::string& file) {
+  if (p.passes.empty() || p.passes.back().kind != PassKind::image)
+    fail_input("the shader has no Image pass", file, 0, {}, "a Shadertoy shader draws its picture in the Image pass");
+  bool writes[4] = {false, false, false, false};
+  for (size_t i = 0; i < p.passes.size(); ++i) {
+    const ProjectPass& pass = p.passes[i];
+    if (pass.kind == PassKind::image && i + 1 != p.passes.size())
+      fail_input("the shader has more than one Image pass", file, 0, pass.name);
+    if (pass.kind != PassKind::buffer) continue;
+    if (pass.output < 0 || pass.output > 3)
+      fail_input(pass.name + " writes no buffer A..D", file, 0, pass.name);
+    if (writes[pass.output])
+      fail_input("two passes write Buffer " + buffer_letter(pass.output), file, 0, pass.name,
+                 "each buffer has one pass that draws it");
+    writes[pass.output] = true;
+  }
+  for (const ProjectPass& pass : p.passes)
+    for (size_t c = 0; c < pass.inputs.size(); ++c) {
+      const ProjectInput& in = pass.inputs[c];
+      if (in.kind == InputKind::buffer && (in.buffer < 0 || in.buffer > 3 || !writes[in.buffer]))
+        fail_input(pass.name + " iChannel" + std::to_string(c) + " reads Buffer " +
+                       (in.buffer >= 0 && in.buffer <= 3 ? buffer_letter(in.buffer) : "?") + ", which no pass writes",
+                   file, 0, pass.name + ".iChannel" + std::to_string(c));
+    }
+}
+
+}  // namespace ms

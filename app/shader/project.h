@@ -1,0 +1,93 @@
+// A Shadertoy-style program as data: a Common source, buffer passes A..D
+// and the Image pass, each with up to four typed inputs. Loaded from
+// Shadertoy's JSON (shader/project_json.h), a scene's [[passes]]
+// (scene/load_passes.h) or a bare .glsl (one Image pass); run by
+// render/graph.h. No GL and no file reading here.
+//
+//   ShaderProject p = load_shadertoy_json(text, "x.json");
+//   for (const ProjectPass& pass : p.passes) ...   // in Shadertoy's order
+#pragma once
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ms {
+
+// Sampler state of one input, Shadertoy's names and defaults (a texture's:
+// mipmap, repeat, vflip; a buffer's: linear, clamp).
+enum class TexFilter { nearest, linear, mipmap };
+enum class TexWrap { clamp, repeat };
+struct Sampler {
+  TexFilter filter = TexFilter::linear;
+  TexWrap wrap = TexWrap::clamp;
+  bool vflip = false;  // textures only: row 0 of the file at the top of uv (Shadertoy's default true)
+  bool srgb = false;   // textures only: decode sRGB to linear when sampled
+};
+
+// What a channel reads. Shadertoy's ctypes; the ones marchstudio does not
+// run yet (cubemap, volume, audio, video, webcam, mic) are refused where the
+// project is loaded, never bound as black.
+enum class InputKind { none, buffer, texture, keyboard, cubemap, volume, music, musicstream, mic, video, webcam };
+
+const char* input_kind_name(InputKind k);
+
+struct ProjectInput {
+  InputKind kind = InputKind::none;
+  int buffer = -1;   // buffer: 0..3 for A..D
+  std::string src;   // texture: as given ("/media/a/<hash>.png", or a path from a scene file)
+  std::filesystem::path file;  // texture: the file found for src (load_media resolves it)
+  Sampler sampler;
+};
+
+enum class PassKind { buffer, image };
+
+struct ProjectPass {
+  PassKind kind = PassKind::image;
+  int output = -1;               // buffer passes: the buffer written, 0..3 for A..D
+  std::string name;              // "Buffer A", "Image"
+  std::string code;              // the GLSL, when it came inline (JSON)
+  std::filesystem::path file;    // or the file it is in (a scene's [[passes]], a bare .glsl)
+  std::string where;             // how errors name it: "x.json (Buffer A)" or the file's display path
+  std::array<ProjectInput, 4> inputs{};
+};
+
+struct ShaderProject {
+  std::string name;                  // info.name, or the file stem
+  std::filesystem::path origin;      // the file it was loaded from (JSON, TOML or GLSL)
+  std::string common;                // the Common tab, inline, or
+  std::filesystem::path common_file; // in a file
+  std::string common_where;          // its name in errors
+  // Buffer passes in the order Shadertoy runs them (A, B, C, D), then the
+  // Image pass, last.
+  std::vector<ProjectPass> passes;
+  bool has_sound = false;            // a Sound pass was present and is not run (it never changes the image)
+  std::vector<std::string> warnings; // for the caller to print: "x.json holds 2 shaders; rendering the first"
+
+  const ProjectPass& image() const { return passes.back(); }
+  bool stateful() const { return passes.size() > 1; }  // buffers carry state from frame to frame
+};
+
+// What stands in for a texture that is not in the media directory:
+// nothing (an error naming the pass, channel and src), generated noise or
+// black (each with a warning).
+enum class MissingMedia { error, noise, black };
+
+// Shadertoy settings of a scene file's [shadertoy] table or the flags.
+struct ShadertoySettings {
+  std::filesystem::path media_dir;        // where "/media/a/<hash>.png" is looked up by file name
+  MissingMedia missing_media = MissingMedia::error;
+  float mouse[4] = {0, 0, 0, 0};          // iMouse, Shadertoy's semantics
+  double fps = 60.0;                      // a still of a stateful shader runs round(time * fps) + 1 frames
+  std::filesystem::path common_file;      // [[passes]]: the Common source
+};
+
+// "A".."D" for 0..3.
+std::string buffer_letter(int buffer);
+
+// Checks what a loader built: exactly one Image pass and it is last, each
+// buffer written by at most one pass, buffer inputs naming a buffer some
+// pass writes. Throws bad_input naming `file` and the pass.
+void check_project(const ShaderProject& p, const std::string& file);
+
+}  // namespace ms
