@@ -12,7 +12,13 @@ void main() {
   vec4 acc = texelFetch(uAccum, ivec2(gl_FragCoord.xy), 0);
   // A negative alpha: main.frag zeroed a NaN/Inf sample here.
   if (acc.a < 0.0) {
+#if FLAG_IN_ALPHA
+    // A Shadertoy Image pass already converted each channel: keep them,
+    // and mark the pixel for the host's count (it restores alpha 1).
+    outColor = vec4(outputColor(acc.rgb * uInvSamples, uExposure), -1.0);
+#else
     outColor = nonFiniteOutput();
+#endif
     return;
   }
   outColor = vec4(outputColor(acc.rgb * uInvSamples, uExposure), 1.0);

@@ -79,8 +79,8 @@ BenchCost count_frame_cost(FrameRenderer& renderer, const Program& counting, con
   return c;
 }
 
-BenchResult run_bench(const Context& ctx, const Scene& scene, const ShaderSource& main,
-                      const ShaderSource& counting, const ShaderSource& post, const BenchSettings& s) {
+BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<PassSource>& passes,
+                      const ShaderSource* counting, const ShaderSource& post, const BenchSettings& s) {
   check_bench_settings(s);
   check_frame_size(ctx.info(), s.width, s.height, 6);  // the counting pass's AOV targets
   BenchResult r;
@@ -96,37 +96,53 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const ShaderSource
   fp.spp = s.spp;
   fp.exposure = scene.render.exposure;
   fp.fused_post = s.fused_post;
-  auto uniforms_at = [&](int w, int h) {
-    return [&scene, &s, w, h](const Program& p) { set_scene_uniforms(p, scene, w, h, s.time, 0); };
+  // A scene draws the same frame each time (uFrame 0); a stateful shader's
+  // frames follow on, at its fps.
+  int frame = 0;
+  const double fps = scene.shadertoy.fps;
+  auto next = [&]() {
+    FrameInputs in;
+    in.scene = &scene;
+    in.time = s.time;
+    std::copy(std::begin(scene.shadertoy.mouse), std::end(scene.shadertoy.mouse), in.mouse);
+    if (passes.size() > 1) {
+      in.frame = frame;
+      in.time = s.time + static_cast<float>(frame / fps);
+      in.time_delta = static_cast<float>(1.0 / fps);
+      ++frame;
+    }
+    return in;
   };
 
   // Startup: compile and link, then force the lazy code generation with a
   // 1x1 frame, then the first full-size frame.
   const Clock::time_point t0 = Clock::now();
   const std::string vs = fullscreen_vertex_source();
-  const Program main_prog(vs, main);
+  PassGraph graph(passes);
   const Program post_prog(vs, post);
   r.link_ms = ms_since(t0);
   FrameParams tiny = fp;
   tiny.width = tiny.height = 1;
   tiny.spp = 1;
-  renderer.draw(main_prog, uniforms_at(1, 1), post_prog, tiny);
+  graph.draw(renderer, post_prog, next(), tiny);
   glFinish();
   r.compile_link_ms = ms_since(t0);
-  renderer.draw(main_prog, uniforms_at(s.width, s.height), post_prog, fp);
+  frame = 0;
+  graph.draw(renderer, post_prog, next(), fp);
   glFinish();
   r.first_frame_ms = ms_since(t0);
 
   // Timed frames: the GPU timer brackets exactly the draw; wall time adds
   // the wait for completion (glFinish), which is what a user sees.
-  for (int i = 0; i < s.warmup; ++i) renderer.draw(main_prog, uniforms_at(s.width, s.height), post_prog, fp);
+  for (int i = 0; i < s.warmup; ++i) graph.draw(renderer, post_prog, next(), fp);
   glFinish();
   GpuTimer timer;
   std::vector<double> gpu, wall;
   for (int i = 0; i < s.frames; ++i) {
+    const FrameInputs in = next();
     const Clock::time_point w0 = Clock::now();
     timer.begin();
-    renderer.draw(main_prog, uniforms_at(s.width, s.height), post_prog, fp);
+    graph.draw(renderer, post_prog, in, fp);
     timer.end();
     glFinish();
     wall.push_back(ms_since(w0));
@@ -136,8 +152,22 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const ShaderSource
   r.gpu_ms = summarize(gpu);
   r.wall_ms = summarize(wall);
 
-  const Program count_prog(vs, counting);
-  r.cost = count_frame_cost(renderer, count_prog, post_prog, scene, s.time, fp);
+  // The same frames again, pass by pass: the sum of the passes against the
+  // frame shows what running them as one graph adds.
+  graph.set_timing(true);
+  std::vector<std::vector<double>> per(graph.size());
+  for (int i = 0; i < s.frames; ++i) {
+    graph.draw(renderer, post_prog, next(), fp);
+    for (size_t p = 0; p < graph.size(); ++p) per[p].push_back(graph.pass_ms()[p]);
+  }
+  graph.set_timing(false);
+  for (size_t p = 0; p < graph.size(); ++p) r.passes.push_back({graph.name(p), summarize(per[p])});
+
+  if (counting) {
+    const Program count_prog(vs, *counting);
+    r.cost = count_frame_cost(renderer, count_prog, post_prog, scene, s.time, fp);
+    r.has_cost = true;
+  }
   return r;
 }
 

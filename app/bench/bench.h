@@ -10,6 +10,7 @@
 #include "gl/context.h"
 #include "io/image.h"
 #include "render/frame.h"
+#include "render/graph.h"
 #include "scene/scene.h"
 #include "shader/preprocess.h"
 
@@ -60,6 +61,12 @@ BenchCost measure_cost(const Image& aovs);
 BenchCost count_frame_cost(FrameRenderer& renderer, const Program& counting, const Program& post,
                            const Scene& posed, float time, FrameParams fp);
 
+// One pass of the graph, timed on its own (glFinish before and after).
+struct PassTiming {
+  std::string name;
+  Summary wall_ms;
+};
+
 struct BenchResult {
   std::string backend, gl_renderer, gl_vendor, gl_version;
   // Startup, milliseconds of wall time. llvmpipe compiles a program's
@@ -72,6 +79,10 @@ struct BenchResult {
   bool gpu_timer = true;  // false: the driver reported no GL_TIME_ELAPSED results (all 0)
   Summary gpu_ms;         // GL_TIME_ELAPSED around each frame's draw (samples + post)
   Summary wall_ms;        // steady clock around draw + glFinish
+  // Each pass's wall time in frames timed pass by pass (a multi-pass
+  // Shadertoy shader: its buffers, then the Image pass with the post pass).
+  std::vector<PassTiming> passes;
+  bool has_cost = false;  // an SDF scene: its counting pass ran
   BenchCost cost;
 };
 
@@ -80,9 +91,11 @@ struct BenchResult {
 // context.
 void check_bench_settings(const BenchSettings& s);
 
-// Times `main` (a scene's plain main pass) and counts `counting` (the same
-// scene assembled with AOV_OUTPUTS 1) in the current context.
-BenchResult run_bench(const Context& ctx, const Scene& scene, const ShaderSource& main,
-                      const ShaderSource& counting, const ShaderSource& post, const BenchSettings& s);
+// Times the graph of `passes` (a scene's one pass, or a Shadertoy shader's
+// buffers and Image pass: frames follow on from one another, as a
+// sequence's), then each pass on its own, and, given `counting` (the scene
+// assembled with AOV_OUTPUTS 1), counts its steps; in the current context.
+BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<PassSource>& passes,
+                      const ShaderSource* counting, const ShaderSource& post, const BenchSettings& s);
 
 }  // namespace ms

@@ -40,6 +40,13 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
                      {"first_frame", r.first_frame_ms},
                      {"lazy_compile_forced_by", "1x1 frame"}};
   j["frame_ms"] = {{"gpu_timer", r.gpu_timer}, {"gpu", to_json(r.gpu_ms)}, {"wall", to_json(r.wall_ms)}};
+  ordered_json passes = ordered_json::array();
+  for (const PassTiming& p : r.passes) passes.push_back({{"name", p.name}, {"wall", to_json(p.wall_ms)}});
+  j["pass_ms"] = passes;
+  if (!r.has_cost) {
+    j["cost"] = nullptr;  // a Shadertoy shader has no step counters
+    return j.dump(2) + "\n";
+  }
   const BenchCost& c = r.cost;
   j["cost"] = {{"spp", 1},
                {"pixels", c.pixels},
@@ -75,6 +82,20 @@ std::string bench_table(const BenchSubject& subject, const BenchSettings& s, con
   else
     out += "  gpu   (no GL_TIME_ELAPSED results from this driver)\n";
   out += format("  wall  %9.2f %9.2f %9.2f %9.2f\n", r.wall_ms.min, r.wall_ms.median, r.wall_ms.p95, r.wall_ms.max);
+  if (r.passes.size() > 1) {
+    out += "\npass ms, each timed alone (wall)      min    median       p95       max\n";
+    double sum = 0;
+    for (const PassTiming& p : r.passes) {
+      std::snprintf(buf, sizeof buf, "  %-28s %9.2f %9.2f %9.2f %9.2f\n", p.name.c_str(), p.wall_ms.min,
+                    p.wall_ms.median, p.wall_ms.p95, p.wall_ms.max);
+      out += buf;
+      sum += p.wall_ms.median;
+    }
+    std::snprintf(buf, sizeof buf, "  sum of the medians %19.2f; the frame's median is %.2f (%.1f%% more)\n", sum,
+                  r.wall_ms.median, sum > 0 ? 100.0 * (r.wall_ms.median / sum - 1.0) : 0.0);
+    out += buf;
+  }
+  if (!r.has_cost) return out + "\ncost      none: a Shadertoy shader has no step counters\n";
   const BenchCost& c = r.cost;
   std::snprintf(buf, sizeof buf, "\ncost per pixel (spp 1, %lld pixels)  mean       p99       max\n", c.pixels);
   out += buf;

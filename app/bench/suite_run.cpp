@@ -34,8 +34,14 @@ struct Gl {
   const Context& ctx;
   ProgramCache cache;
   FrameRenderer renderer;
+  std::map<const PreparedCase*, std::unique_ptr<PassGraph>> graphs;  // programs shared through `cache`
   const std::string vs = fullscreen_vertex_source();
   std::shared_ptr<const Program> program(const ShaderSource& src) { return cache.get(vs, src); }
+  PassGraph& graph(const PreparedCase& pc) {
+    std::unique_ptr<PassGraph>& g = graphs[&pc];
+    if (!g) g = std::make_unique<PassGraph>(pc.passes, &cache);
+    return *g;
+  }
 };
 
 struct FrameSpec {
@@ -55,10 +61,12 @@ std::vector<FrameSpec> frames_of(const PreparedCase& pc) {
 
 StillFrame still_of(const PreparedCase& pc, const Scene& posed, const FrameSpec& f) {
   StillFrame s;
-  s.scene = &posed;
-  s.time = f.time;
-  s.time_delta = f.time_delta;
-  s.frame = f.frame;
+  s.in.scene = &posed;
+  s.in.time = f.time;
+  s.in.time_delta = f.time_delta;
+  s.in.frame = f.frame;
+  std::copy(std::begin(posed.shadertoy.mouse), std::end(posed.shadertoy.mouse), s.in.mouse);
+  s.fps = pc.spec->frames ? pc.spec->fps : pc.fps;  // a range's own fps, as `render --frames`
   s.params = pc.params;
   s.params.exposure = posed.render.exposure;  // keyframed exposure, as render poses it
   return s;
@@ -93,15 +101,15 @@ Outcome measure(CheckResult& cr, const Image& ref, const Image& got, int frame, 
 }
 
 // Median frame time of `frames` draws after `warmup`, on `cpu` or wall time.
-double time_frames(Gl& gl, const Program& main, const Program& post, const StillFrame& sf, int warmup, int frames,
+double time_frames(Gl& gl, PassGraph& graph, const Program& post, const StillFrame& sf, int warmup, int frames,
                    bool cpu, std::vector<double>& all) {
-  for (int i = 0; i < warmup; ++i) draw_still(gl.renderer, main, post, sf);
+  for (int i = 0; i < warmup; ++i) graph.draw(gl.renderer, post, sf.in, sf.params);
   glFinish();
   std::vector<double> t;
   for (int i = 0; i < frames; ++i) {
     const Clock::time_point w0 = Clock::now();
     const double u0 = process_cpu_ms();
-    draw_still(gl.renderer, main, post, sf);
+    graph.draw(gl.renderer, post, sf.in, sf.params);  // one frame, as a sequence draws it
     glFinish();
     t.push_back(cpu ? process_cpu_ms() - u0 : ms_since(w0));
   }
@@ -146,16 +154,17 @@ void check_cost(const CostBudget& b, const BenchCost& cost, CaseResult& r) {
 void check_time(Gl& gl, const Suite& suite, const PreparedCase& pc, const PreparedCase& cal, CaseResult& r) {
   const TimeBudget& b = *pc.spec->time_budget;
   const bool cpu = suite.clock == SuiteClock::cpu || (suite.clock == SuiteClock::automatic && gl.ctx.info().software());
-  const auto cal_main = gl.program(cal.main), cal_post = gl.program(cal.post);
-  const auto main = gl.program(pc.main), post = gl.program(pc.post);
+  PassGraph& cal_graph = gl.graph(cal);
+  PassGraph& graph = gl.graph(pc);
+  const auto cal_post = gl.program(cal.post), post = gl.program(pc.post);
   const Scene cal_posed = animated(cal.scene, frames_of(cal).front().time);
   const Scene posed = animated(pc.scene, frames_of(pc).front().time);
   const StillFrame cal_sf = still_of(cal, cal_posed, frames_of(cal).front());
   const StillFrame sf = still_of(pc, posed, frames_of(pc).front());
   std::vector<double> ratios, cal_all, case_all;
   for (int i = 0; i < b.rounds; ++i) {
-    const double c = time_frames(gl, *cal_main, *cal_post, cal_sf, b.warmup, b.frames, cpu, cal_all);
-    const double t = time_frames(gl, *main, *post, sf, b.warmup, b.frames, cpu, case_all);
+    const double c = time_frames(gl, cal_graph, *cal_post, cal_sf, b.warmup, b.frames, cpu, cal_all);
+    const double t = time_frames(gl, graph, *post, sf, b.warmup, b.frames, cpu, case_all);
     ratios.push_back(c > 0 ? t / c : 0.0);
   }
   FrameTime ft{summarize(case_all).median, summarize(cal_all).median, summarize(ratios).median, cpu ? "cpu" : "wall"};
@@ -186,7 +195,8 @@ long long differing_values(const Image& a, const Image& b) {
 // images (of the worst frame).
 void check_images(Gl& gl, const PreparedCase& pc, const RunOptions& opts, CaseResult& r) {
   const SuiteCase& c = *pc.spec;
-  const auto main = gl.program(pc.main), post = gl.program(pc.post);
+  PassGraph& graph = gl.graph(pc);
+  const auto post = gl.program(pc.post);
   for (const ImageCheck& ch : c.checks) r.checks.push_back({ch, 0.0, -1, Outcome::pass, {}});
   std::vector<std::string> problems;  // missing or mismatched references, one line each
   Image shown_ref, shown_got;
@@ -196,12 +206,17 @@ void check_images(Gl& gl, const PreparedCase& pc, const RunOptions& opts, CaseRe
   for (const FrameSpec& f : frames) {
     const Scene posed = animated(pc.scene, f.time);
     const StillFrame sf = still_of(pc, posed, f);
-    const Still still = render_still(gl.renderer, *main, *post, sf);
+    // A stateful shader's frames follow on: the first is a still (frames
+    // 0..first replayed), the rest each one frame more, as a sequence.
+    const Still still = &f == &frames.front() || !graph.stateful()
+                            ? render_still(gl.renderer, graph, *post, sf)
+                            : render_frame(gl.renderer, graph, *post, sf.in, sf.params);
     if (c.deterministic && &f == &frames.front()) {
       // From scratch: a fresh compile and fresh targets, as another run would.
-      const Program main2(gl.vs, pc.main), post2(gl.vs, pc.post);
+      PassGraph graph2(pc.passes);
+      const Program post2(gl.vs, pc.post);
       FrameRenderer again(gl.ctx);
-      r.nondeterministic_values = differing_values(still.color, render_still(again, main2, post2, sf).color);
+      r.nondeterministic_values = differing_values(still.color, render_still(again, graph2, post2, sf).color);
     }
     if (c.checks.empty()) continue;
     const Image got = stored_pixels(still.color, pc.format);
@@ -394,7 +409,7 @@ SuiteResult run_suite(const Suite& suite, const std::vector<PreparedCase>& cases
         } catch (const Error& e) {
           r = error_result(*pc.spec, e.info());
         } catch (const std::bad_alloc&) {
-          r = error_result(*pc.spec, {Exit::system, {}, 0, {}, "out of memory", {}});
+          r = error_result(*pc.spec, {Exit::system, {}, 0, {}, "out of memory", {}, {}});
         }
       }
       r.seconds = std::chrono::duration<double>(Clock::now() - c0).count();

@@ -18,6 +18,7 @@
 #include "io/image.h"
 #include "io/image_io.h"
 #include "render/frame.h"
+#include "render/graph.h"
 #include "scene/scene.h"
 #include "shader/preprocess.h"
 
@@ -27,7 +28,9 @@ namespace ms {
 struct PreparedCase {
   const SuiteCase* spec = nullptr;
   Scene scene;                // as loaded; posed per frame
-  ShaderSource main, post;    // main: as render builds it for the reference's format
+  std::vector<PassSource> passes;  // as render builds them for the reference's format
+  ShaderSource post;
+  double fps = 60.0;          // a stateful (multi-pass) shader's frame rate
   ShaderSource counting;      // the AOV build, when spec->cost
   FrameParams params;         // size, spp, exposure, fused_post
   ImageFormat format = ImageFormat::png;  // the reference's (what the render is stored as)

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <optional>
 #include <cstdlib>
 #include <regex>
 
@@ -23,7 +24,8 @@ namespace ms {
 
 CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
   CLI::App* cmd = app.add_subcommand("bench", "Time a scene and count its steps per pixel (docs/bench.md)");
-  cmd->add_option("scene", a.input, "Scene .toml")->required();
+  cmd->add_option("scene", a.input, "Scene .toml, or a Shadertoy shader (.glsl, .json): its passes are timed")->required();
+  add_shadertoy_flags(cmd, a.shadertoy);
   cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
   cmd->add_option("--frames", a.frames, "Timed frames (default 30)");
   cmd->add_option("--warmup", a.warmup, "Untimed frames before them (default 3)");
@@ -69,14 +71,14 @@ int run_bench_command(const BenchArgs& a) {
   AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}, parse_allow_include(a.allow_include)};
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
   LoadedInput in = load_input_scene(a.input, a.disable, a.preset);
-  if (in.shadertoy)
-    fail_input("bench needs an SDF scene: a Shadertoy shader has no step counters", a.input, 0, {},
-               "wrap the map in a scene .toml");
-  // The counting pass: the same scene with the AOV counters compiled in.
+  apply_shadertoy_flags(in.scene.shadertoy, a.shadertoy);
+  // The counting pass: the same scene with the AOV counters compiled in (a
+  // Shadertoy shader has no step counters: its passes are timed only).
   AssembleOptions count_opts = opts;
   count_opts.defines = aov_defines();
-  const ShaderSource counting = assemble_scene(in.scene, count_opts);
-  const ShaderSource post = assemble_post(in.scene.render.tonemap, true, opts);
+  const std::optional<ShaderSource> counting =
+      in.shadertoy ? std::nullopt : std::optional<ShaderSource>(assemble_scene(in.scene, count_opts));
+  const ShaderSource post = assemble_post(in.scene.render.tonemap, !in.shadertoy, opts, in.shadertoy);
 
   BenchSettings s;
   s.width = in.scene.render.width;
@@ -94,6 +96,7 @@ int run_bench_command(const BenchArgs& a) {
   // Timed frames as render draws them: one pass at spp 1 (PNG output).
   s.fused_post = fuse_post(in, s.spp, false, true, opts);
   assemble_input(in, opts);
+  report_input_warnings(in.warnings, a.input, a.strict);
 
   s.shader_cache = a.shader_cache;
   check_bench_settings(s);  // before the (slow) context
@@ -101,11 +104,13 @@ int run_bench_command(const BenchArgs& a) {
   std::unique_ptr<Context> ctx = create_headless_context(backend);
   // Keyframed values at the benchmarked time, as render poses them.
   const Scene posed = animated(in.scene, s.time);
-  const BenchResult r = run_bench(*ctx, posed, in.main, counting, post, s);
-  const std::string bw = bounds_warning(a.input, check_bounds(posed, opts, [&](const Program& p) {  // render/bounds_check.h
-    set_scene_uniforms(p, posed, s.width, s.height, s.time, 0);
-  }));
-  if (!bw.empty()) std::fprintf(stderr, "marchstudio: %s\n", bw.c_str());
+  const BenchResult r = run_bench(*ctx, posed, in.passes, counting ? &*counting : nullptr, post, s);
+  if (!in.shadertoy) {
+    const std::string bw = bounds_warning(a.input, check_bounds(posed, opts, [&](const Program& p) {  // render/bounds_check.h
+      set_scene_uniforms(p, posed, s.width, s.height, s.time, 0);
+    }));
+    if (!bw.empty()) std::fprintf(stderr, "marchstudio: %s\n", bw.c_str());
+  }
   const BenchSubject subject{a.input, in.scene.name, a.disable, specialization_name(opts.specialize)};
   const std::string text = a.json ? bench_json(subject, s, r) : bench_table(subject, s, r);
   std::fputs(text.c_str(), stdout);

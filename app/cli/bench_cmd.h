@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/input.h"
+
 namespace CLI {
 class App;
 }
@@ -11,7 +13,7 @@ class App;
 namespace ms {
 
 struct BenchArgs {
-  std::string input;       // a scene .toml with an SDF map
+  std::string input;       // a scene .toml, or a Shadertoy shader (its passes timed, no cost counted)
   std::string size;        // "WxH", empty: the scene's
   int frames = 30;
   int warmup = 3;
@@ -25,6 +27,7 @@ struct BenchArgs {
   bool no_specialize = false;  // time the generic shader (docs/specialization.md)
   bool strict = false;     // any NaN/Inf pixel in the counting pass is an error (exit 1)
   std::vector<std::string> allow_include;  // more directories #include may read
+  ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
 };
 
 CLI::App* add_bench_command(CLI::App& app, BenchArgs& args);

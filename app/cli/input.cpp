@@ -1,7 +1,14 @@
 #include "cli/input.h"
 
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <regex>
 
+#include "cli/flag_checks.h"
+#include "render/project_passes.h"
 #include "core/error.h"
 #include "io/input_file.h"
 #include "scene/load.h"
@@ -77,7 +84,12 @@ LoadedInput load_input_scene(const fs::path& input, const std::vector<std::strin
     in.scene.render.height = 360;
     in.scene.render.tonemap = Tonemap::none;
   }
-  in.shadertoy = !in.scene.shadertoy_file.empty();
+  in.shadertoy = !in.scene.shadertoy_file.empty() || in.scene.passes;
+  // Media next to the shader unless the scene or a flag says otherwise.
+  if (in.shadertoy && in.scene.shadertoy.media_dir.empty()) {
+    std::error_code ec;
+    in.scene.shadertoy.media_dir = fs::absolute(input, ec).parent_path();
+  }
   if (!preset.empty()) {
     if (in.shadertoy)
       fail_input("--preset needs an SDF scene: a Shadertoy shader has no quality settings", input.string(), 0,
@@ -89,9 +101,76 @@ LoadedInput load_input_scene(const fs::path& input, const std::vector<std::strin
 }
 
 void assemble_input(LoadedInput& in, const AssembleOptions& opts) {
-  const bool wrapped = in.path.extension() == ".toml";  // includes confined to the .toml's directory
-  in.main = in.shadertoy ? assemble_shadertoy(in.scene.shadertoy_file, opts, wrapped ? in.path : fs::path{})
-                         : assemble_scene(in.scene, opts);
+  in.passes.clear();
+  if (!in.shadertoy) {
+    PassSource scene_pass;
+    scene_pass.name = in.scene.name;
+    scene_pass.source = assemble_scene(in.scene, opts);
+    scene_pass.uniforms = PassUniforms::scene;
+    in.passes.push_back(std::move(scene_pass));
+    return;
+  }
+  const fs::path wrapper = in.path.extension() == ".toml" ? in.path : fs::path{};  // includes confined to its directory
+  in.project = in.scene.passes ? *in.scene.passes : load_shadertoy_file(in.scene.shadertoy_file, opts, wrapper);
+  in.passes = shadertoy_passes(in.project, in.scene.shadertoy, opts, wrapper, in.warnings);
+}
+
+void apply_shadertoy_flags(ShadertoySettings& s, const ShadertoyFlags& f) {
+  if (!f.media_dir.empty()) {
+    std::error_code ec;
+    if (!fs::is_directory(f.media_dir, ec))
+      fail_input("'" + f.media_dir + "' is not a directory", {}, 0, "--media-dir",
+                 "the directory that holds Shadertoy's media files by name");
+    s.media_dir = f.media_dir;
+  }
+  if (f.missing_media == "error") s.missing_media = MissingMedia::error;
+  if (f.missing_media == "noise") s.missing_media = MissingMedia::noise;
+  if (f.missing_media == "black") s.missing_media = MissingMedia::black;
+  if (f.mouse.size() == 4) std::copy(f.mouse.begin(), f.mouse.end(), s.mouse);
+  if (f.fps > 0) s.fps = f.fps;
+}
+
+void add_shadertoy_flags(CLI::App* cmd, ShadertoyFlags& f) {
+  cmd->add_option("--media-dir", f.media_dir,
+                  "Where a Shadertoy shader's media (/media/a/<name>) are found, by file name (default: the shader's "
+                  "directory, or the scene's [shadertoy] media_dir)")
+      ->check(not_empty());
+  cmd->add_option("--missing-media", f.missing_media,
+                  "For a texture not in the media directory: error (default), noise or black stand-ins, with a warning")
+      ->check(one_of({"error", "noise", "black"}));
+  cmd->add_option_function<std::string>(
+         "--mouse", [&f](const std::string& v) { f.mouse = parse_mouse_flag(v); },
+         "iMouse of a Shadertoy shader: X,Y,Z,W in pixels (default: the scene's, else 0,0,0,0)");
+}
+
+void report_input_warnings(const std::vector<std::string>& warnings, const std::string& input, bool strict) {
+  for (const std::string& w : warnings) {
+    if (strict) throw Error({Exit::threshold, input, 0, "--strict", w, {}, {}});
+    std::fprintf(stderr, "marchstudio: %s: warning: %s (--strict makes this an error)\n", input.c_str(), w.c_str());
+  }
+}
+
+std::vector<std::string> unbound_warnings(const PassGraph& graph) {
+  std::vector<std::string> out;
+  for (const std::string& c : graph.unbound_sampled()) out.push_back(c + " is sampled but nothing is bound to it: it reads black");
+  return out;
+}
+
+std::vector<float> parse_mouse_flag(const std::string& text) {
+  std::vector<float> v;
+  size_t at = 0;
+  while (at <= text.size() && v.size() < 5) {
+    const size_t comma = std::min(text.find(',', at), text.size());
+    const std::string part = text.substr(at, comma - at);
+    char* end = nullptr;
+    const double d = std::strtod(part.c_str(), &end);
+    if (part.empty() || *end != '\0' || !std::isfinite(d) || std::abs(d) > 1e9)
+      fail_input("invalid --mouse '" + text + "'", {}, 0, "--mouse", "four numbers X,Y,Z,W in pixels, as iMouse");
+    v.push_back(static_cast<float>(d));
+    at = comma + 1;
+  }
+  if (v.size() != 4) fail_input("invalid --mouse '" + text + "'", {}, 0, "--mouse", "four numbers X,Y,Z,W, as iMouse");
+  return v;
 }
 
 LoadedInput load_input(const fs::path& input, const std::vector<std::string>& disable, const AssembleOptions& opts,
@@ -111,7 +190,7 @@ ShaderSource assemble_still(LoadedInput& in, AssembleOptions& opts, int spp, boo
   fused = fuse_post(in, spp, aovs, display, opts);
   assemble_input(in, opts);
   // Shadertoy output is display-referred already: never encoded again.
-  return assemble_post(in.scene.render.tonemap, display && !in.shadertoy, opts);
+  return assemble_post(in.scene.render.tonemap, display && !in.shadertoy, opts, in.shadertoy);
 }
 
 }  // namespace ms

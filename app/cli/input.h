@@ -1,24 +1,56 @@
-// What every subcommand starts from: a scene .toml (an SDF map or a wrapped
-// Shadertoy shader) or a bare Shadertoy .glsl, loaded and assembled into
-// shader source. Everything that can fail on bad input happens here, before
-// any GL context exists.
+// What every subcommand starts from: a scene .toml (an SDF map, a wrapped
+// Shadertoy shader or [[passes]]), a bare Shadertoy .glsl or Shadertoy's
+// JSON, loaded and assembled into the passes of a graph (render/graph.h).
+// Everything that can fail on bad input happens here, before any GL
+// context exists: shaders, media, flags.
 #pragma once
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "render/graph.h"
 #include "scene/scene.h"
 #include "shader/assemble.h"
 #include "shader/preprocess.h"
+
+namespace CLI {
+class App;
+}
 
 namespace ms {
 
 struct LoadedInput {
   std::filesystem::path path;  // the input as given
-  Scene scene;           // a bare .glsl gets a default scene: 640x360, no tone map
-  ShaderSource main;     // the main pass (assemble_input)
+  Scene scene;           // a bare .glsl or .json gets a default scene: 640x360, no tone map
   bool shadertoy = false;
+  ShaderProject project;            // shadertoy: what its passes are (assemble_input)
+  std::vector<PassSource> passes;   // assembled: a scene's one pass, or the buffers then the Image
+  std::vector<std::string> warnings;  // for the subcommand to print (missing media stood in for, ...)
+
+  // The pass that draws the frame (the scene's, or the Image pass).
+  const ShaderSource& main() const { return passes.back().source; }
+  // Buffers carry state from frame to frame: a still replays frames 0..N.
+  bool stateful() const { return passes.size() > 1; }
 };
+
+// Shadertoy flags over a scene file's [shadertoy] (empty/negative: keep).
+struct ShadertoyFlags {
+  std::string media_dir;
+  std::string missing_media;  // error, noise, black
+  std::vector<float> mouse;   // 4 values
+  double fps = 0.0;
+};
+void apply_shadertoy_flags(ShadertoySettings& s, const ShadertoyFlags& f);
+// --media-dir, --missing-media and --mouse on a subcommand (--fps is its own).
+void add_shadertoy_flags(CLI::App* cmd, ShadertoyFlags& f);
+// Prints each of in.warnings as "marchstudio: <input>: warning: ..."; with
+// `strict` the first is an error (exit 1) instead. Also the channels a
+// pass samples with nothing bound, once the graph exists.
+void report_input_warnings(const std::vector<std::string>& warnings, const std::string& input, bool strict);
+// The warnings of a graph's channels sampled with nothing bound.
+std::vector<std::string> unbound_warnings(const PassGraph& graph);
+// "X,Y,Z,W" as iMouse. Throws bad_input naming --mouse.
+std::vector<float> parse_mouse_flag(const std::string& text);
 
 // A "WxH" flag value (render/bench --size, view --size/--shot-size); each
 // side at least 1. Whether the GL can make it is checked later, with a context.
@@ -43,7 +75,8 @@ LoadedInput load_input(const std::filesystem::path& input, const std::vector<std
                        const AssembleOptions& opts, const std::string& preset = {});
 
 // load_input() in two steps, for callers whose shader depends on the scene
-// (fuse_post): the scene alone (main left empty), then its main pass.
+// (fuse_post) or who apply flags to it: the scene alone (no passes), then
+// its passes (for a Shadertoy input: the project read, media found).
 LoadedInput load_input_scene(const std::filesystem::path& input, const std::vector<std::string>& disable,
                              const std::string& preset = {});
 void assemble_input(LoadedInput& in, const AssembleOptions& opts);

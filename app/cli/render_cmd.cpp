@@ -17,10 +17,12 @@
 #include "scene/quality.h"
 #include "gl/context.h"
 #include "io/image_io.h"
+#include "io/sequence.h"
 #include "render/aov.h"
 #include "render/bounds_check.h"
 #include "core/deadline.h"
 #include "render/frame.h"
+#include "render/graph.h"
 #include "render/still.h"
 #include "render/tiles.h"
 #include "render/uniforms.h"
@@ -57,7 +59,10 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
   cmd->add_option("--frames", a.frames, "Render frames A..B (both included) to -o PATTERN, e.g. out/f_%04d.png")
       ->check(not_empty());
-  cmd->add_option("--fps", a.fps, "Frames per second of --frames: frame f is at time f / fps (default 24)")
+  add_shadertoy_flags(cmd, a.shadertoy);
+  cmd->add_option("--fps", a.fps,
+                  "Frames per second: frame f of --frames is at time f / fps (default 24; a Shadertoy shader's 60), "
+                  "and a still of a shader with buffers replays round(time x fps) frames")
       ->each([&a](const std::string&) { a.fps_set = true; });
   cmd->add_option("--shard", a.shard, "Render only shard I of N (I/N, from 0) of --frames")->check(not_empty());
   cmd->add_option("--shard-mode", a.shard_mode, "How --shard splits the frames: stride (default) or chunk")
@@ -117,7 +122,8 @@ static int run_render_watch(const RenderArgs& a) {
     const AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
                                parse_allow_include(a.allow_include)};
     std::vector<fs::path> files = {a.input};
-    for (const fs::path& p : load_input(a.input, a.disable, opts, a.preset).main.dependencies) files.push_back(p);
+    for (const PassSource& pass : load_input(a.input, a.disable, opts, a.preset).passes)
+      for (const fs::path& p : pass.source.dependencies) files.push_back(p);
     return files;
   };
   return live::watch_and_render(w);
@@ -139,6 +145,9 @@ int run_render(const RenderArgs& a) {
   const Backend backend = parse_backend(a.backend);
   const fs::path input = a.input;
   const fs::path output = a.output.empty() ? fs::path(input.stem().string() + ".png") : fs::path(a.output);
+  if (has_frame_field(output.string()))
+    fail_input("the output '" + output.string() + "' has a frame field but there is no --frames", {}, 0, "--frames",
+               "e.g. --frames 0..59 -o " + output.string() + "; for one image name a file without %d");
   check_output_path(output);  // before any work: no file is ever half-made
   const bool display = is_display_format(image_format_for(output));
   const bool aovs = !a.aov.empty();
@@ -154,6 +163,11 @@ int run_render(const RenderArgs& a) {
   LoadedInput in = load_input_scene(input, a.disable, a.preset);
   if (aovs && in.shadertoy)
     fail_input("--aov needs a scene: a Shadertoy shader has no AOV outputs", input.string(), 0, "--aov");
+  apply_shadertoy_flags(in.scene.shadertoy, a.shadertoy);
+  if (a.fps_set) {
+    if (!std::isfinite(a.fps) || a.fps <= 0) fail_input("--fps must be a positive number", {}, 0, "--fps");
+    in.scene.shadertoy.fps = a.fps;
+  }
   const Scene& scene = in.scene;
   FrameParams fp;
   fp.width = scene.render.width;
@@ -166,15 +180,23 @@ int run_render(const RenderArgs& a) {
   fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
   const ShaderSource post_src = assemble_still(in, opts, fp.spp, aovs, display, fp.fused_post);
   if (a.print_shader) {
-    std::fputs(in.main.text.c_str(), stdout);
+    for (const PassSource& pass : in.passes) {
+      if (in.passes.size() > 1) std::printf("// ==== marchstudio: pass %s ====\n", pass.name.c_str());
+      std::fputs(pass.source.text.c_str(), stdout);
+    }
     return 0;
   }
+  if (in.stateful() && a.frame != 0)
+    fail_input("--frame conflicts with a shader that has buffers: its still replays frames 0..N, N = round(time x fps)",
+               {}, 0, "--frame", "give --time (and --fps) instead");
+  report_input_warnings(in.warnings, input.string(), a.strict);
   fp.exposure = scene.render.exposure;
   fp.aovs = aovs;
   fp.deadline = deadline.limited() ? &deadline : nullptr;
   fp.tile_size = a.tile_size;
   // Before the (slow) context: a frame over the memory budget is refused.
-  check_frame_memory(frame_memory(fp.width, fp.height, aovs ? 6 : 2, aovs), fp.width, fp.height);
+  const int buffer_targets = 2 * (static_cast<int>(in.passes.size()) - 1);  // each buffer's two textures
+  check_frame_memory(frame_memory(fp.width, fp.height, (aovs ? 6 : 2) + buffer_targets, aovs), fp.width, fp.height);
   const float time = a.time_set ? static_cast<float>(a.time) : scene.render.time;
   const Scene posed = animated(scene, time);  // [[animation]] keyframes at this time
   fp.exposure = posed.render.exposure;
@@ -191,9 +213,10 @@ int run_render(const RenderArgs& a) {
   }
   check_frame_size(ctx->info(), fp.width, fp.height, aovs ? 6 : 2);
 
-  const Program main_prog(fullscreen_vertex_source(), in.main);
+  PassGraph graph(in.passes);
   const Program post_prog(fullscreen_vertex_source(), post_src);
   const double t_compile = clock.lap();
+  report_input_warnings(unbound_warnings(graph), input.string(), a.strict);
   if (a.verbose && !in.shadertoy) {  // does [bounds] hold what map() draws? (render/bounds_check.h)
     const std::string w = bounds_warning(input.string(), check_bounds(posed, opts, [&](const Program& p) {
       set_scene_uniforms(p, posed, fp.width, fp.height, time, a.frame);
@@ -202,14 +225,17 @@ int run_render(const RenderArgs& a) {
   }
   FrameRenderer renderer(*ctx);
   StillFrame still;
-  still.scene = &posed;
-  still.time = time;
-  still.frame = a.frame;
+  still.in.scene = &posed;
+  still.in.time = time;
+  still.in.frame = a.frame;
+  std::copy(std::begin(scene.shadertoy.mouse), std::end(scene.shadertoy.mouse), still.in.mouse);
+  still.fps = scene.shadertoy.fps;
   still.params = fp;
-  Still out = render_still(renderer, main_prog, post_prog, still);
+  Still out = render_still(renderer, graph, post_prog, still);
   Image img = std::move(out.color);
-  // Pixels with NaN/Inf in any channel read back (colour, AOVs).
-  const long long nonfinite = count_nonfinite_pixels(img, aovs ? &out.aovs : nullptr);
+  // Pixels with NaN/Inf in any channel read back (colour, AOVs), and those
+  // a Shadertoy Image pass flagged.
+  const long long nonfinite = count_nonfinite_pixels(img, aovs ? &out.aovs : nullptr) + out.flagged;
   if (aovs) img = append_channels(img, select_channels(out.aovs, aov_names));
   // The NaN/Inf guard: counted over everything read back, before writing.
   if (nonfinite > 0) {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/input.h"
 #include "render/tiles.h"
 
 namespace CLI {
@@ -42,6 +43,7 @@ struct RenderArgs {
   std::vector<std::string> allow_include;  // more directories #include may read (shader/preprocess.h)
   double timeout = 0.0;      // seconds per image (each frame of --frames); 0: none (core/deadline.h)
   int tile_size = kTileSize; // hidden --tile-size: largest square per draw (render/tiles.h); 0: whole frame
+  ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
 };
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args);

@@ -26,7 +26,10 @@
 #include "core/deadline.h"
 #include "render/frame.h"
 #include "render/tiles.h"
+#include "render/graph.h"
+#include "render/still.h"
 #include "render/uniforms.h"
+#include "cli/sequence_state.h"
 #include "scene/animation.h"
 
 namespace ms {
@@ -92,7 +95,7 @@ struct Plan {
 
 Plan plan_from_flags(const RenderArgs& a) {
   if (a.frames.empty())
-    fail_input("--fps, --shard, --shard-mode, --video and --no-write need --frames", {}, 0, "--frames",
+    fail_input("--shard, --shard-mode, --video and --no-write need --frames", {}, 0, "--frames",
                "e.g. --frames 0..59 --fps 24 -o out/frame_%04d.png");
   if (a.time_set)
     fail_input("--time conflicts with --frames: each frame's time is frame / fps", {}, 0, "--time",
@@ -152,14 +155,13 @@ ResumeScan scan_existing(const FramePattern& pattern, const std::vector<int>& mi
 }  // namespace
 
 bool wants_sequence(const RenderArgs& a) {
-  return !a.frames.empty() || a.fps_set || !a.shard.empty() || !a.shard_mode.empty() || !a.video.empty() ||
-         a.no_write;
+  return !a.frames.empty() || !a.shard.empty() || !a.shard_mode.empty() || !a.video.empty() || a.no_write;
 }
 
 int run_sequence(const RenderArgs& a) {
   // Flags, output pattern, ffmpeg, scene, shaders and every frame's pose are
   // checked before the GL context exists: bad input never leaves a file.
-  const Plan plan = plan_from_flags(a);
+  Plan plan = plan_from_flags(a);
   const FramePattern pattern(plan.pattern);
   check_output_path(pattern.path(plan.range.first));
   const bool display = is_display_format(image_format_for(pattern.path(plan.range.first)));
@@ -187,6 +189,9 @@ int run_sequence(const RenderArgs& a) {
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
   LoadedInput in = load_input_scene(a.input, a.disable, a.preset);
   if (aovs && in.shadertoy) fail_input("--aov needs a scene, not a Shadertoy shader", a.input, 0, "--aov");
+  apply_shadertoy_flags(in.scene.shadertoy, a.shadertoy);
+  if (in.shadertoy && !a.fps_set) plan.fps = in.scene.shadertoy.fps;  // Shadertoy runs at 60
+  in.scene.shadertoy.fps = plan.fps;
   const Scene& scene = in.scene;
   FrameParams fp;
   fp.width = scene.render.width;
@@ -201,18 +206,45 @@ int run_sequence(const RenderArgs& a) {
   fp.tile_size = a.tile_size;
   fp.fused_post = fuse_post(in, fp.spp, aovs, display, opts);
   assemble_input(in, opts);
-  // The frame in flight and those waiting for the writers are alive at once.
-  check_frame_memory(frame_memory(fp.width, fp.height, aovs ? 6 : 2, aovs,
-                                  1 + static_cast<int>(kQueuedFrames) + writer_threads()),
+  report_input_warnings(in.warnings, a.input, a.strict);
+  const bool stateful = in.stateful();
+  if (stateful && plan.shard.count > 1 && plan.mode == ShardMode::stride)
+    fail_input("a shader with buffers carries its state from frame to frame: stride shards would each replay the "
+               "whole sequence",
+               a.input, 0, "--shard-mode", "use --shard-mode chunk: each shard replays only the frames before its chunk");
+  // One writer keeps a stateful sequence's frames and checkpoints in order.
+  const int writers = stateful ? 1 : writer_threads();
+  // The frame in flight and those waiting for the writers are alive at once,
+  // and each buffer's two textures.
+  check_frame_memory(frame_memory(fp.width, fp.height, (aovs ? 6 : 2) + 2 * (static_cast<int>(in.passes.size()) - 1),
+                                  aovs, 1 + static_cast<int>(kQueuedFrames) + writers),
                      fp.width, fp.height);
-  const ShaderSource post_src = assemble_post(scene.render.tonemap, display && !in.shadertoy, opts);
+  const ShaderSource post_src = assemble_post(scene.render.tonemap, display && !in.shadertoy, opts, in.shadertoy);
   // The frame's time exactly as the shader gets it (a float); the pose uses
   // the same value, so a sequence frame equals `render --time` of it.
   const auto frame_time = [&](int f) { return static_cast<float>(static_cast<double>(f) / plan.fps); };
   const std::vector<int> mine = shard_frames(plan.range, plan.shard, plan.mode);
   for (int f : mine) animated(scene, frame_time(f));  // throws on a pose that cannot render
 
-  const ResumeScan scan = a.no_write ? ResumeScan{mine, {}, {}} : scan_existing(pattern, mine, fp);
+  ResumeScan scan = a.no_write ? ResumeScan{mine, {}, {}} : scan_existing(pattern, mine, fp);
+  StatefulPlan sp;
+  if (stateful) {
+    // What made the state: the passes, the size, the frame rate, the mouse, the media.
+    std::string what = std::to_string(fp.width) + "x" + std::to_string(fp.height) + "@" + std::to_string(plan.fps);
+    for (float m : scene.shadertoy.mouse) what += "," + std::to_string(m);
+    for (const PassSource& pass : in.passes) {
+      what += "\n" + pass.source.text;
+      for (const GraphInput& g : pass.inputs)
+        if (g.image) what += "\n" + std::to_string(g.image->width) + "x" + std::to_string(g.image->height);
+    }
+    sp = plan_stateful(mine, pattern, fp.width, fp.height, state_key(what), a.no_write);
+    // Frames after the resume point render again even when present: they follow from it.
+    scan.todo = sp.todo;
+    scan.skipped.erase(std::remove_if(scan.skipped.begin(), scan.skipped.end(),
+                                      [&](const auto& s) { return s.first > sp.resume_from; }),
+                       scan.skipped.end());
+    scan.redone.clear();
+  }
   const std::vector<int>& todo = scan.todo;
   Progress progress(static_cast<int>(todo.size()), ::isatty(2) == 1);
   for (const auto& [f, p] : scan.skipped) progress.skipped(f, p);
@@ -233,10 +265,38 @@ int run_sequence(const RenderArgs& a) {
       std::fprintf(stderr, "marchstudio: backend %s, GL_RENDERER %s\n", ctx->backend().c_str(),
                    ctx->info().renderer.c_str());
     check_frame_size(ctx->info(), fp.width, fp.height, aovs ? 6 : 2);
-    const Program main_prog(fullscreen_vertex_source(), in.main);
+    PassGraph graph(in.passes);
+    report_input_warnings(unbound_warnings(graph), a.input, a.strict);
     const Program post_prog(fullscreen_vertex_source(), post_src);
     FrameRenderer renderer(*ctx);
-    BlackChannels channels;
+    const auto inputs_at = [&](int f, const Scene& posed) {
+      FrameInputs fi;
+      fi.scene = &posed;
+      fi.time = frame_time(f);
+      fi.time_delta = static_cast<float>(1.0 / plan.fps);
+      fi.frame = f;
+      std::copy(std::begin(scene.shadertoy.mouse), std::end(scene.shadertoy.mouse), fi.mouse);
+      return fi;
+    };
+    if (stateful) {
+      const std::vector<int> buffers = graph.buffers();
+      if (sp.resume_from >= 0) {
+        const BufferState state = read_checkpoint(checkpoint_path(pattern.path(sp.resume_from), sp.key), buffers,
+                                                  fp.width, fp.height);
+        if (state.size() != buffers.size())
+          fail_system("the checkpoint of frame " + std::to_string(sp.resume_from) + " cannot be read",
+                      checkpoint_path(pattern.path(sp.resume_from), sp.key).string());
+        graph.reset();
+        for (const auto& [b, img] : state) graph.write_buffer(b, img);
+        progress.line("resuming after frame " + std::to_string(sp.resume_from) + " from its checkpoint");
+      } else {
+        graph.reset();
+        if (sp.replay_until > 0)
+          progress.line("replaying frames 0.." + std::to_string(sp.replay_until - 1) +
+                        " first: the buffers carry state from frame to frame");
+        for (int n = 0; n < sp.replay_until; ++n) graph.step_buffers(inputs_at(n, scene), fp);
+      }
+    }
     // Paths on stdout as each frame lands, like `render` prints its one path.
     FrameWriter writer(
         kQueuedFrames,
@@ -244,7 +304,8 @@ int run_sequence(const RenderArgs& a) {
           std::printf("%s\n", job.path.string().c_str());
           std::fflush(stdout);
         },
-        {}, writer_threads());
+        {}, writers);
+    fs::path previous_state = sp.resume_from >= 0 ? checkpoint_path(pattern.path(sp.resume_from), sp.key) : fs::path{};
     progress.start();
     const auto loop_start = std::chrono::steady_clock::now();
     deadline.check("loading and compiling");
@@ -262,28 +323,10 @@ int run_sequence(const RenderArgs& a) {
       Image img;
       long long nonfinite = 0;  // the NaN/Inf guard, as in render_cmd.cpp
       try {
-        if (!in.shadertoy) {
-          img = renderer.render(main_prog, [&](const Program& p) {
-            set_scene_uniforms(p, posed, fp.width, fp.height, time, f);
-          }, post_prog, fp);
-          if (aovs) {
-            const Image all = renderer.read_aovs();
-            nonfinite = count_nonfinite_pixels(img, &all);
-            img = append_channels(img, select_channels(all, aov_names));
-          } else {
-            nonfinite = count_nonfinite_pixels(img);
-          }
-        } else {
-          ShadertoyInputs st;
-          st.time = time;
-          st.frame = f;
-          st.time_delta = static_cast<float>(1.0 / plan.fps);
-          img = renderer.render(main_prog, [&](const Program& p) {
-            channels.bind();
-            set_shadertoy_uniforms(p, fp.width, fp.height, st);
-          }, post_prog, fp);
-          nonfinite = count_nonfinite_pixels(img);
-        }
+        Still still = render_frame(renderer, graph, post_prog, inputs_at(f, posed), fp);
+        img = std::move(still.color);
+        nonfinite = count_nonfinite_pixels(img, aovs ? &still.aovs : nullptr) + still.flagged;
+        if (aovs) img = append_channels(img, select_channels(still.aovs, aov_names));
       } catch (const Error& e) {
         if (watchdog) watchdog->disarm();  // its hook names `writer`, which unwinding destroys
         if (e.info().key == "--timeout") fail_timeout("frame " + std::to_string(f), a.timeout);
@@ -312,7 +355,15 @@ int run_sequence(const RenderArgs& a) {
       ImageMetadata meta{{"Software", "marchstudio 0.1.0"},
                          {"ImageDescription", fs::path(a.input).filename().string() + " t=" + std::to_string(time) +
                                                   " spp=" + std::to_string(fp.spp) + " frame=" + std::to_string(f)}};
-      wait_s += writer.push(WriteJob{f, std::move(img), pattern.path(f), std::move(meta)});
+      WriteJob job{f, std::move(img), pattern.path(f), std::move(meta), {}, {}, {}};
+      if (stateful) {
+        for (int b : graph.buffers()) job.state.emplace_back(b, graph.read_buffer(b));
+        job.state_path = checkpoint_path(job.path, sp.key);
+        job.drop = previous_state;
+        previous_state = job.state_path;
+        remove_checkpoints(job.path, job.state_path);  // a stale key's, from another shader or size
+      }
+      wait_s += writer.push(std::move(job));
     }
     if (watchdog) watchdog->disarm();
     writer.finish();

@@ -93,7 +93,8 @@ PreparedCase prepare(const Suite& suite, const SuiteCase& c, const fs::path& sha
     AssembleOptions count_opts = opts;
     for (const auto& d : aov_defines()) count_opts.defines.push_back(d);
     pc.post = assemble_still(in, opts, fp.spp, false, display, fp.fused_post);
-    pc.main = in.main;
+    pc.passes = in.passes;
+    pc.fps = in.scene.shadertoy.fps;
     if (c.cost) pc.counting = assemble_scene(in.scene, count_opts);
     pc.time = c.time ? *c.time : in.scene.render.time;
     check_frame_memory(frame_memory(fp.width, fp.height, c.cost ? 6 : 2, c.cost.has_value()), fp.width, fp.height);

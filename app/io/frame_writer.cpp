@@ -14,7 +14,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 FrameWriter::FrameWriter(std::size_t capacity, DoneFn done, WriteFn write, int threads)
     : capacity_(capacity < 1 ? 1 : capacity),
       done_(std::move(done)),
-      write_(write ? std::move(write) : WriteFn([](const WriteJob& j) { write_image(j.image, j.path, j.meta); })) {
+      write_(write ? std::move(write) : WriteFn([](const WriteJob& j) {
+        write_image(j.image, j.path, j.meta);
+        if (j.state.empty()) return;
+        write_checkpoint(j.state_path, j.state);  // only after its frame: a checkpoint means the frame is there
+        std::error_code ec;
+        if (!j.drop.empty()) std::filesystem::remove(j.drop, ec);
+      })) {
   for (int i = 0; i < std::max(threads, 1); ++i) threads_.emplace_back([this] { run(); });
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "io/image.h"
+#include "io/checkpoint.h"
 #include "io/image_io.h"
 
 namespace ms {
@@ -24,6 +25,10 @@ struct WriteJob {
   Image image;
   std::filesystem::path path;
   ImageMetadata meta;
+  // A stateful sequence's checkpoint (io/checkpoint.h), written after the
+  // frame; then the one before it, `drop`, is removed.
+  BufferState state;
+  std::filesystem::path state_path, drop;
 };
 
 class FrameWriter {

@@ -1,4 +1,5 @@
 #include "live/input.h"
+#include "live/keyboard.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,8 +21,29 @@ bool imgui_wants_keys() { return ImGui::GetCurrentContext() && ImGui::GetIO().Wa
 bool imgui_wants_mouse() { return ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse; }
 
 void on_key(GLFWwindow* w, int key, int, int action, int mods) {
-  if (action == GLFW_RELEASE || imgui_wants_keys()) return;
+  if (imgui_wants_keys()) return;
   ViewState& s = state_of(w);
+  // A Shadertoy shader gets every key; of the viewer's own, only those
+  // outside the keys shaders read (Escape, Tab, Home, F-keys) still act.
+  if (s.shadertoy) {
+    keyboard_event(s.keys, key, action);
+    if (action != GLFW_PRESS) return;
+    switch (key) {
+      case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
+      case GLFW_KEY_HOME: s.want_rewind = true; break;
+      case GLFW_KEY_TAB:
+      case GLFW_KEY_F1: s.show_panel = !s.show_panel; break;
+      case GLFW_KEY_F2: s.paused = !s.paused; break;
+      case GLFW_KEY_F5: s.want_disk_reload = true; break;
+      case GLFW_KEY_F12:
+        if (mods & GLFW_MOD_SHIFT) s.want_window_shot = true;
+        else s.want_shot = true;
+        break;
+      default: break;
+    }
+    return;
+  }
+  if (action == GLFW_RELEASE) return;
   const bool shift = mods & GLFW_MOD_SHIFT, ctrl = mods & GLFW_MOD_CONTROL;
   const bool press = action == GLFW_PRESS;  // repeat only for stepping time
   switch (key) {
@@ -41,7 +63,7 @@ void on_key(GLFWwindow* w, int key, int, int action, int mods) {
   switch (key) {
     case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
     case GLFW_KEY_SPACE: s.paused = !s.paused; break;
-    case GLFW_KEY_HOME: s.time = s.start_time; break;
+    case GLFW_KEY_HOME: s.want_rewind = true; break;
     case GLFW_KEY_R: s.camera = s.scene_camera; break;
     case GLFW_KEY_C: s.want_write_camera = true; break;
     case GLFW_KEY_S:

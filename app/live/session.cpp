@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/error.h"
+#include "render/project_passes.h"
 #include "shader/shadertoy.h"
 
 namespace ms::live {
@@ -55,15 +56,33 @@ ReloadResult Session::reload(bool from_disk) {
     }
     const int view = shadertoy() ? 0 : debug_view;
     if (view > 0) opts.defines.emplace_back("DEBUG_VIEW", std::to_string(view));
-    const ShaderSource main_src =
-        shadertoy() ? assemble_shadertoy(scene_.shadertoy_file, opts, has_toml() ? scene_.file : fs::path{})
-                    : assemble_scene(scene_, opts);
-    deps_ = main_src.dependencies;  // preprocessing worked: these are the files now
-    const ShaderSource post_src = assemble_post(scene_.render.tonemap, !shadertoy(), opts_.assemble);
-    auto main = cache_.get(fullscreen_vertex_source(), main_src, &r.cached);
+    // The same passes `render` builds (cli/input.cpp): a scene's one pass,
+    // or a Shadertoy shader's buffers and Image pass, media found.
+    std::vector<PassSource> passes;
+    std::vector<std::string> warnings;
+    if (shadertoy()) {
+      const fs::path wrapper = has_toml() ? scene_.file : fs::path{};
+      const ShaderProject project =
+          scene_.passes ? *scene_.passes : load_shadertoy_file(scene_.shadertoy_file, opts, wrapper);
+      passes = shadertoy_passes(project, scene_.shadertoy, opts, wrapper, warnings);
+    } else {
+      PassSource pass;
+      pass.name = scene_.name;
+      pass.source = assemble_scene(scene_, opts);
+      passes.push_back(std::move(pass));
+    }
+    deps_.clear();  // preprocessing worked: these are the files now
+    for (const PassSource& p : passes) deps_.insert(deps_.end(), p.source.dependencies.begin(), p.source.dependencies.end());
+    const ShaderSource& main_src = passes.back().source;
+    const ShaderSource post_src = assemble_post(scene_.render.tonemap, !shadertoy(), opts_.assemble, shadertoy());
+    r.cached = cache_.contains(fullscreen_vertex_source(), main_src);
+    auto graph = std::make_shared<PassGraph>(passes, &cache_);
     auto post = cache_.get(fullscreen_vertex_source(), post_src);
-    main_ = std::move(main);
+    for (const std::string& u : graph->unbound_sampled()) warnings.push_back(u + " is sampled but nothing is bound to it");
+    if (graph_) graph->adopt_buffers(*graph_);  // buffers evolve on across a reload of a pass
+    graph_ = std::move(graph);
     post_ = std::move(post);
+    warnings_ = std::move(warnings);
     std::vector<SceneParam> params = parse_scene_params(main_src.text);
     carry_over_values(params, params_);
     params_ = std::move(params);
@@ -84,7 +103,7 @@ ReloadResult Session::reload(bool from_disk) {
 bool Session::features_changed() const {
   // Lights and patterns cannot change in the panel, and a GLSL edit reloads
   // anyway: the library names of the current program still hold.
-  return specialized_ && main_ && derive_features(scene_, features_.library) != features_;
+  return specialized_ && graph_ && derive_features(scene_, features_.library) != features_;
 }
 
 std::vector<fs::path> Session::watched_files() const {

@@ -1,7 +1,7 @@
 // What the viewer shows, and how it gets rebuilt: the scene (as last read
-// from disk and as edited in the panel), the compiled main and post programs
-// (the last GOOD ones: a failed reload keeps them), the scene's own
-// parameters, and the files to watch. Loading and assembly are the same as
+// from disk and as edited in the panel), the pass graph and post program
+// (the last GOOD ones: a failed reload keeps them; a good one keeps the
+// buffers' state), the scene's own parameters, and the files to watch. Loading and assembly are the same as
 // `render`'s (the caller passes cli/'s loader in); only the compiled
 // programs are kept here. Needs the GL context current for reload().
 #pragma once
@@ -13,6 +13,7 @@
 
 #include "live/presets.h"
 #include "live/scene_params.h"
+#include "render/graph.h"
 #include "render/program.h"
 #include "render/program_cache.h"
 #include "scene/features.h"
@@ -49,7 +50,7 @@ class Session {
   Scene& scene() { return scene_; }
   const Scene& scene() const { return scene_; }
   const Scene& file_scene() const { return file_scene_; }  // writeback diffs against it
-  bool shadertoy() const { return !scene_.shadertoy_file.empty(); }
+  bool shadertoy() const { return !scene_.shadertoy_file.empty() || scene_.passes != nullptr; }
   bool has_toml() const { return scene_.file.extension() == ".toml"; }
 
   // True when the scene as edited in the panel needs other shader code than
@@ -57,8 +58,12 @@ class Session {
   // drops the reflection loop of a specialized shader): reload(false) then.
   bool features_changed() const;
 
-  const Program* main_program() const { return main_.get(); }
+  // The graph to draw (null before the first good build) and its post pass.
+  PassGraph* graph() const { return graph_.get(); }
+  const Program* main_program() const { return graph_ ? &graph_->program(graph_->size() - 1) : nullptr; }
   const Program* post_program() const { return post_.get(); }
+  // Warnings of the last good build (missing media stood in for, unbound channels).
+  const std::vector<std::string>& warnings() const { return warnings_; }
   int generation() const { return generation_; }  // +1 per successful reload
   const std::string& error() const { return error_; }
 
@@ -72,7 +77,7 @@ class Session {
   // Delete the GL programs now, while the context is still current (the
   // viewer calls this before the window goes).
   void release_gl() {
-    main_.reset();
+    graph_.reset();
     post_.reset();
     cache_.clear();
   }
@@ -87,7 +92,9 @@ class Session {
   Scene scene_, file_scene_;
   bool disk_ok_ = false;
   QualityPreset preset_ = QualityPreset::balanced;
-  std::shared_ptr<const Program> main_, post_;
+  std::shared_ptr<PassGraph> graph_;
+  std::shared_ptr<const Program> post_;
+  std::vector<std::string> warnings_;
   ProgramCache cache_;     // every program built, by source hash: a toggle seen before is not recompiled
   bool specialized_ = false;
   FeatureSet features_;    // of the last program built or tried, when specialized

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "live/frame_stats.h"
+#include "render/graph.h"
 #include "scene/scene.h"
 
 namespace ms::live {
@@ -33,11 +34,13 @@ struct ViewState {
   Drag drag = Drag::none;
   double last_x = 0.0, last_y = 0.0;
   float mouse[4] = {0, 0, 0, 0};  // Shadertoy iMouse, pixels, origin bottom-left
+  KeyboardState keys{};           // Shadertoy's keyboard texture (live/keyboard.h)
   int fb_width = 1, fb_height = 1;
 
   // Requests, served and cleared by the loop.
   bool want_reassemble = false;   // a #define (toggle, preset, quality value) changed
   bool want_disk_reload = false;  // F5
+  bool want_rewind = false;       // Home: time and iFrame to the start, buffers to 0
   bool want_shot = false;         // P: the frame, through the render capture path
   bool want_window_shot = false;  // Shift+P: the window with the UI
   bool want_write_camera = false; // C

@@ -17,6 +17,7 @@
 #include "io/image_io.h"
 #include "live/capture.h"
 #include "live/input.h"
+#include "live/keyboard.h"
 #include "live/live_log.h"
 #include "live/overlay.h"
 #include "live/panel.h"
@@ -292,6 +293,11 @@ int Viewer::run() {
     const double dt = std::min(0.25, t0 - t_last);
     t_last = t0;
     apply_held_keys(window_, s_, dt);
+    if (s_.want_rewind) {  // Home
+      s_.want_rewind = false;
+      s_.time = s_.start_time;
+      drawer.rewind();
+    }
     if (!s_.paused) s_.time += dt * s_.speed;
 
     const bool window_shot = s_.want_window_shot || frames_ + 1 == o_.shot_frame;
@@ -301,6 +307,7 @@ int Viewer::run() {
       draw_overlay(s_, session_);
     });
     if (drawn && window_shot) drawer.window_shot(next_free_path(o_.shot_dir, o_.input.stem().string() + "_window"), log_);
+    keyboard_frame_done(s_.keys);  // "pressed this frame" lasted its frame
     const double t_cpu = seconds_now();
     glfwSwapBuffers(window_);
     const double t1 = seconds_now();

@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "io/image_io.h"
 #include "live/capture.h"
+#include "render/still.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
 
@@ -42,21 +43,22 @@ FrameDrawer::FrameDrawer(GLFWwindow* window, const Context& ctx, Session& sessio
     : window_(window), ctx_(ctx), session_(session), s_(state), renderer_(ctx) {}
 
 UniformFn FrameDrawer::uniforms(int w, int h) {
-  return [this, w, h](const Program& p) {
-    const float time = static_cast<float>(s_.time);
-    if (session_.shadertoy()) {
-      channels_.bind();
-      ShadertoyInputs in;
-      in.time = time;
-      in.time_delta = static_cast<float>(dt_);
-      in.frame = static_cast<int>(frame_);
-      std::copy(std::begin(s_.mouse), std::end(s_.mouse), in.mouse);
-      set_shadertoy_uniforms(p, w, h, in);
-    } else {
-      set_scene_uniforms(p, posed(time), w, h, time, static_cast<int>(frame_));
-    }
-    set_params(p, session_.params());
-  };
+  // The standard uniforms come from the graph; these are the panel's sliders.
+  (void)w;
+  (void)h;
+  return [this](const Program& p) { set_params(p, session_.params()); };
+}
+
+FrameInputs FrameDrawer::inputs(const Scene& posed, const UniformFn* extra) const {
+  FrameInputs in;
+  in.scene = &posed;
+  in.time = static_cast<float>(s_.time);
+  in.time_delta = static_cast<float>(dt_);
+  in.frame = session_.shadertoy() ? static_cast<int>(sim_frame_) : static_cast<int>(frame_);
+  std::copy(std::begin(s_.mouse), std::end(s_.mouse), in.mouse);
+  in.keyboard = &s_.keys;
+  in.extra = extra;
+  return in;
 }
 
 Scene FrameDrawer::posed(float time) const {
@@ -85,10 +87,10 @@ bool FrameDrawer::draw(long frame, double dt, const std::function<void()>& ui) {
   rw_ = std::max(1, static_cast<int>(std::lround(fbw_ * s_.render_scale)));
   rh_ = std::max(1, static_cast<int>(std::lround(fbh_ * s_.render_scale)));
 
-  const Program* main = session_.main_program();
+  PassGraph* graph = session_.graph();
   const Program* post = session_.post_program();
   bool rendered = false;
-  if (main && post) {
+  if (graph && post) {
     // FrameRenderer checks glGetError at its end: errors from before it
     // (none expected) must not be blamed on the scene.
     for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
@@ -100,7 +102,11 @@ bool FrameDrawer::draw(long frame, double dt, const std::function<void()>& ui) {
     fp.exposure = session_.scene().render.exposure;
     gpu_.begin();
     try {
-      renderer_.draw(*main, uniforms(rw_, rh_), *post, fp);
+      const Scene view = posed(static_cast<float>(s_.time));
+      const UniformFn extra = uniforms(rw_, rh_);
+      // Paused, a shader's buffers hold still: only the image is drawn.
+      graph->draw(renderer_, *post, inputs(view, &extra), fp, !s_.paused);
+      if (!s_.paused) ++sim_frame_;
       rendered = true;
       last_error_.clear();
     } catch (const Error& e) {
@@ -154,16 +160,22 @@ void FrameDrawer::capture(const fs::path& dir, int k, LiveLog& log) {
 }
 
 void FrameDrawer::screenshot(const fs::path& path, int w, int h) {
-  const Program* main = session_.main_program();
+  PassGraph* graph = session_.graph();
   const Program* post = session_.post_program();
-  if (!main || !post) fail_input("no program to render: the scene has not compiled yet");
+  if (!graph || !post) fail_input("no program to render: the scene has not compiled yet");
   check_output_path(path);
   FrameParams fp;
   fp.width = w;
   fp.height = h;
   fp.spp = std::max(1, session_.scene().render.spp);
   fp.exposure = session_.scene().render.exposure;
-  const Image img = renderer_.render(*main, uniforms(w, h), *post, fp);
+  // A screenshot draws the frame as it stands: the buffers are not stepped
+  // (they hold the window's size; a different size starts them afresh).
+  const Scene view = posed(static_cast<float>(s_.time));
+  const UniformFn extra = uniforms(w, h);
+  graph->draw(renderer_, *post, inputs(view, &extra), fp, false);
+  Image img = renderer_.read_color();
+  take_flagged(img);
   write_image(img, path,
               {{"Software", "marchstudio 0.1.0 view"},
                {"ImageDescription", session_.scene().name + " t=" + std::to_string(s_.time) +

@@ -47,11 +47,18 @@ class FrameDrawer {
     return ms::check_bounds(posed(static_cast<float>(s_.time)), opts, uniforms(rw_, rh_), &cache);
   }
 
+  // Home: time back to the start, iFrame to 0, every buffer to 0.
+  void rewind() {
+    sim_frame_ = 0;
+    if (PassGraph* g = session_.graph()) g->reset();
+  }
+
   int render_width() const { return rw_; }
   int render_height() const { return rh_; }
 
  private:
   UniformFn uniforms(int w, int h);
+  FrameInputs inputs(const Scene& posed, const UniformFn* extra) const;
   // The scene as drawn at `time`: animation applied, the interactive camera.
   Scene posed(float time) const;
 
@@ -61,7 +68,7 @@ class FrameDrawer {
   ViewState& s_;
   FrameRenderer renderer_;
   GpuTimer gpu_;
-  BlackChannels channels_;  // iChannel0..3 of a Shadertoy shader read black
+  long sim_frame_ = 0;       // a Shadertoy shader's iFrame: frames stepped since the last rewind
   int rw_ = 1, rh_ = 1, fbw_ = 1, fbh_ = 1;
   long frame_ = 0;
   double dt_ = 0.0;

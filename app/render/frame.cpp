@@ -163,6 +163,7 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
 
   // The post pass (not for a fused main pass, which wrote the result).
   if (!p.fused_post) {
+    glBindSampler(0, 0);  // a channel's sampler object must not filter the accumulation buffer
     glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);
     glUseProgram(post.id());
     glActiveTexture(GL_TEXTURE0);

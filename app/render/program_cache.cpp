@@ -21,4 +21,11 @@ std::shared_ptr<const Program> ProgramCache::get(const std::string& vertex, cons
   return program;
 }
 
+bool ProgramCache::contains(const std::string& vertex, const ShaderSource& fragment) const {
+  const std::uint64_t key = program_key(vertex, fragment.text);
+  for (const Entry& e : entries_)
+    if (e.key == key && e.vertex == vertex && e.fragment == fragment.text) return true;
+  return false;
+}
+
 }  // namespace ms

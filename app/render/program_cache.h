@@ -24,6 +24,8 @@ class ProgramCache {
   // programs are kept; the least recently used goes first.
   std::shared_ptr<const Program> get(const std::string& vertex, const ShaderSource& fragment, bool* hit = nullptr);
 
+  // Whether get() would find these sources without compiling.
+  bool contains(const std::string& vertex, const ShaderSource& fragment) const;
   std::size_t size() const { return entries_.size(); }
   long hits() const { return hits_; }
   long misses() const { return misses_; }

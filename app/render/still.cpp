@@ -1,36 +1,65 @@
 #include "render/still.h"
 
+#include <cmath>
+
 #include "core/error.h"
-#include "render/uniforms.h"
 
 namespace ms {
 
-void draw_still(FrameRenderer& renderer, const Program& main, const Program& post, const StillFrame& f) {
-  if (!f.scene) fail_system("internal: a still without a scene");
-  const FrameParams& fp = f.params;
-  if (f.scene->shadertoy_file.empty()) {
-    renderer.draw(main, [&](const Program& p) {
-      set_scene_uniforms(p, *f.scene, fp.width, fp.height, f.time, f.frame);
-    }, post, fp);
-  } else {
-    BlackChannels channels;
-    ShadertoyInputs st;
-    st.time = f.time;
-    st.time_delta = f.time_delta;
-    st.frame = f.frame;
-    renderer.draw(main, [&](const Program& p) {
-      channels.bind();
-      set_shadertoy_uniforms(p, fp.width, fp.height, st);
-    }, post, fp);
+int still_frame_number(double time, double fps) {
+  const double n = std::round(time * fps);
+  return n < 0 ? 0 : n > 1e8 ? 100000000 : static_cast<int>(n);
+}
+
+void draw_still(FrameRenderer& renderer, PassGraph& graph, const Program& post, const StillFrame& f) {
+  if (!graph.stateful()) {
+    graph.draw(renderer, post, f.in, f.params);
+    return;
+  }
+  const int last = still_frame_number(f.in.time, f.fps);
+  graph.reset();
+  FrameInputs in = f.in;
+  in.time_delta = static_cast<float>(1.0 / f.fps);
+  for (int n = 0; n <= last; ++n) {
+    in.frame = n;
+    in.time = static_cast<float>(static_cast<double>(n) / f.fps);
+    if (n < last) graph.step_buffers(in, f.params);  // what later frames read; no image
+    else graph.draw(renderer, post, in, f.params);
   }
 }
 
-Still render_still(FrameRenderer& renderer, const Program& main, const Program& post, const StillFrame& f) {
-  draw_still(renderer, main, post, f);
+long long take_flagged(Image& color) {
+  if (color.nchannels() != 4) return 0;
+  long long n = 0;
+  for (size_t p = 3; p < color.pixels.size(); p += 4)
+    if (color.pixels[p] < 0.0f) {
+      ++n;
+      color.pixels[p] = 1.0f;
+    }
+  return n;
+}
+
+namespace {
+
+Still read_still(const FrameRenderer& renderer, bool aovs) {
   Still out;
   out.color = renderer.read_color();
-  if (f.params.aovs) out.aovs = renderer.read_aovs();
+  out.flagged = take_flagged(out.color);
+  if (aovs) out.aovs = renderer.read_aovs();
   return out;
+}
+
+}  // namespace
+
+Still render_still(FrameRenderer& renderer, PassGraph& graph, const Program& post, const StillFrame& f) {
+  draw_still(renderer, graph, post, f);
+  return read_still(renderer, f.params.aovs);
+}
+
+Still render_frame(FrameRenderer& renderer, PassGraph& graph, const Program& post, const FrameInputs& in,
+                   const FrameParams& p) {
+  graph.draw(renderer, post, in, p);
+  return read_still(renderer, p.aovs);
 }
 
 }  // namespace ms

@@ -96,7 +96,7 @@ void set_shadertoy_uniforms(const Program& p, int width, int height, const Shade
     const std::string idx = std::to_string(i);
     glUniform1i(p.loc("iChannel" + idx), i);
     glUniform1f(p.loc("iChannelTime[" + idx + "]"), in.time);
-    glUniform3f(p.loc("iChannelResolution[" + idx + "]"), 1.0f, 1.0f, 1.0f);
+    glUniform3fv(p.loc("iChannelResolution[" + idx + "]"), 1, in.channel_resolution[i]);
   }
 }
 

@@ -14,6 +14,7 @@ struct ShadertoyInputs {
   float time_delta = 1.0f / 60.0f;
   int frame = 0;
   float mouse[4] = {0, 0, 0, 0};
+  float channel_resolution[4][3] = {};  // iChannelResolution: the bound input's size (0 when unbound)
 };
 
 // iChannel0..3 of a Shadertoy shader: a black 1x1 texture, as an unbound

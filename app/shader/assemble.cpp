@@ -205,10 +205,11 @@ static int tonemap_id(Tonemap tonemap) {
   return tonemap == Tonemap::none ? 0 : tonemap == Tonemap::reinhard ? 1 : 2;
 }
 
-ShaderSource assemble_post(Tonemap tonemap, bool encode_srgb, const AssembleOptions& opts) {
+ShaderSource assemble_post(Tonemap tonemap, bool encode_srgb, const AssembleOptions& opts, bool flag_in_alpha) {
   std::string root = "#version 450 core\n";
   define(root, "TONEMAP", tonemap_id(tonemap));
   define(root, "ENCODE_SRGB", encode_srgb ? 1 : 0);
+  define(root, "FLAG_IN_ALPHA", flag_in_alpha ? 1 : 0);
   root += "#include \"post.frag\"\n";
   return preprocess(root, "post pass (generated)", opts.shader_dir, library_options(opts));
 }

@@ -49,7 +49,10 @@ FeatureSet scene_features(const Scene& scene, const AssembleOptions& opts);
 
 // The post pass: TONEMAP (0 none, 1 Reinhard, 2 ACES) and ENCODE_SRGB, then
 // post.frag.
-ShaderSource assemble_post(Tonemap tonemap, bool encode_srgb, const AssembleOptions& opts);
+// `flag_in_alpha`: a sample flagged non-finite keeps its colour and marks
+// the pixel with a negative alpha (a Shadertoy Image pass, whose channels
+// were converted one by one); otherwise the pixel is NaN (a scene's).
+ShaderSource assemble_post(Tonemap tonemap, bool encode_srgb, const AssembleOptions& opts, bool flag_in_alpha = false);
 
 // The extra defines (AssembleOptions::defines) of a scene shader that writes
 // the output image itself, as assemble_post()'s pass would: FUSED_POST 1,

@@ -1,0 +1,96 @@
+#include "io/checkpoint.h"
+
+#include <cstdio>
+
+#include "core/error.h"
+#include "io/image_io.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kComponents[] = {"R", "G", "B", "A"};
+
+std::string letter(int buffer) { return std::string(1, static_cast<char>('A' + buffer)); }
+
+}  // namespace
+
+fs::path checkpoint_path(const fs::path& frame, const std::string& key) {
+  return frame.parent_path() / ("." + frame.filename().string() + "." + key + ".state.exr");
+}
+
+std::string state_key(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+void write_checkpoint(const fs::path& path, const BufferState& state) {
+  if (state.empty()) return;
+  Image all;
+  all.width = state.front().second.width;
+  all.height = state.front().second.height;
+  for (const auto& [b, img] : state)
+    for (const char* c : kComponents) all.channels.push_back(letter(b) + "." + c);
+  const size_t n = static_cast<size_t>(all.width) * all.height, nc = all.channels.size();
+  all.pixels.resize(n * nc);
+  for (size_t k = 0; k < state.size(); ++k)
+    for (size_t p = 0; p < n; ++p)
+      for (int c = 0; c < 4; ++c) all.pixels[p * nc + k * 4 + c] = state[k].second.pixels[p * 4 + c];
+  write_image(all, path, {{"Software", "marchstudio 0.1.0 sequence state"}});
+}
+
+BufferState read_checkpoint(const fs::path& path, const std::vector<int>& buffers, int width, int height) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return {};
+  Image all;
+  try {
+    all = read_image(path);
+  } catch (const Error&) {
+    return {};  // unreadable: not a state to resume from
+  }
+  if (all.width != width || all.height != height || all.nchannels() != 4 * static_cast<int>(buffers.size())) return {};
+  BufferState out;
+  const size_t n = static_cast<size_t>(width) * height, nc = all.channels.size();
+  for (size_t k = 0; k < buffers.size(); ++k) {
+    for (int c = 0; c < 4; ++c) {
+      // EXR sorts channels by name; look each one up.
+      const std::string name = letter(buffers[k]) + "." + kComponents[c];
+      bool found = false;
+      for (size_t i = 0; i < nc && !found; ++i) found = all.channels[i] == name;
+      if (!found) return {};
+    }
+    Image img;
+    img.width = width;
+    img.height = height;
+    img.channels = {"R", "G", "B", "A"};
+    img.pixels.resize(n * 4);
+    for (int c = 0; c < 4; ++c) {
+      const std::string name = letter(buffers[k]) + "." + kComponents[c];
+      size_t i = 0;
+      while (all.channels[i] != name) ++i;
+      for (size_t p = 0; p < n; ++p) img.pixels[p * 4 + c] = all.pixels[p * nc + i];
+    }
+    out.emplace_back(buffers[k], std::move(img));
+  }
+  return out;
+}
+
+void remove_checkpoints(const fs::path& frame, const fs::path& keep) {
+  const fs::path dir = frame.parent_path().empty() ? fs::path(".") : frame.parent_path();
+  const std::string prefix = "." + frame.filename().string() + ".";
+  std::error_code ec;
+  std::vector<fs::path> old;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(prefix, 0) == 0 && name.size() > prefix.size() + 10 &&
+        name.compare(name.size() - 10, 10, ".state.exr") == 0 && e.path().filename() != keep.filename())
+      old.push_back(e.path());
+  }
+  for (const fs::path& p : old) fs::remove(p, ec);
+}
+
+}  // namespace ms

@@ -1,0 +1,39 @@
+// The state of a sequence of a shader with buffers, saved beside each frame
+// it goes with, so a killed sequence resumes with bit-identical frames: the
+// buffers' float RGBA pixels in one lossless EXR (channels A.R .. D.A),
+// written atomically by the frame's writer after the frame itself.
+//
+//   write_checkpoint(checkpoint_path(frame_path, key), {{0, a}, {2, c}});
+//   auto state = read_checkpoint(path);   // empty when missing or unreadable
+//
+// `key` says what made the state (the passes' sources, size, fps, mouse): a
+// checkpoint of another shader or size has another name and is never read.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/image.h"
+
+namespace ms {
+
+using BufferState = std::vector<std::pair<int, Image>>;  // buffer index (0..3 for A..D), its RGBA pixels
+
+// ".<frame file name>.<key>.state.exr" beside the frame.
+std::filesystem::path checkpoint_path(const std::filesystem::path& frame, const std::string& key);
+
+// A short hex key of `text` (FNV-1a, 64 bits).
+std::string state_key(const std::string& text);
+
+void write_checkpoint(const std::filesystem::path& path, const BufferState& state);
+
+// The buffers of `path`, each width x height; empty when the file is
+// missing or does not hold exactly `buffers` at that size.
+BufferState read_checkpoint(const std::filesystem::path& path, const std::vector<int>& buffers, int width, int height);
+
+// Removes the checkpoints of `frame` whatever their key, but `keep`.
+void remove_checkpoints(const std::filesystem::path& frame, const std::filesystem::path& keep = {});
+
+}  // namespace ms

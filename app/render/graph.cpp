@@ -1,0 +1,378 @@
+#include "render/graph.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <map>
+
+#include "core/error.h"
+#include "render/tiles.h"
+#include "render/uniforms.h"
+#include "shader/assemble.h"
+
+namespace ms {
+
+// A buffer's two textures: `latest` holds the newest complete frame, the
+// other is what its pass draws next.
+struct PassGraph::Buffer {
+  GLuint tex[2] = {0, 0};
+  GLuint fbo[2] = {0, 0};
+  int latest = 0;
+  int levels = 1;  // > 1 when a pass samples it mipmapped
+};
+
+struct PassGraph::Gpu {
+  GLuint vao = 0;
+  GLuint black = 0, keyboard = 0;
+  std::map<const Image*, GLuint> textures;
+  std::map<int, GLuint> samplers;  // by filter * 2 + wrap
+  Buffer buffers[4];
+  bool used[4] = {false, false, false, false};
+  int width = 0, height = 0;
+};
+
+namespace {
+
+GLint min_filter(TexFilter f) {
+  return f == TexFilter::nearest ? GL_NEAREST : f == TexFilter::linear ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR;
+}
+
+int mip_levels(int w, int h) { return 1 + static_cast<int>(std::floor(std::log2(std::max({w, h, 1})))); }
+
+// An image as a texture: rows bottom first when vflip (Shadertoy's upright
+// picture, uv (0,0) at its lower left), as stored otherwise.
+GLuint upload(const GraphInput& in) {
+  const Image& img = *in.image;
+  const int w = img.width, h = img.height, nc = img.nchannels();
+  const bool mips = in.sampler.filter == TexFilter::mipmap;
+  GLenum internal = in.single_channel ? GL_R8 : in.sampler.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+  if (!in.eight_bit) internal = in.single_channel ? GL_R32F : GL_RGBA32F;
+  std::vector<float> rgba(static_cast<size_t>(w) * h * 4);
+  for (int y = 0; y < h; ++y) {
+    const int src_y = in.sampler.vflip ? h - 1 - y : y;
+    for (int x = 0; x < w; ++x) {
+      const float* s = img.pixels.data() + (static_cast<size_t>(src_y) * w + x) * nc;
+      float* d = rgba.data() + (static_cast<size_t>(y) * w + x) * 4;
+      d[0] = s[0];
+      d[1] = nc > 2 ? s[1] : s[0];
+      d[2] = nc > 2 ? s[2] : s[0];
+      d[3] = nc == 4 ? s[3] : nc == 2 ? s[1] : 1.0f;
+    }
+  }
+  GLuint tex = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glTexStorage2D(GL_TEXTURE_2D, mips ? mip_levels(w, h) : 1, internal, w, h);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
+  if (mips) glGenerateMipmap(GL_TEXTURE_2D);
+  return tex;
+}
+
+}  // namespace
+
+PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
+    : passes_(std::move(passes)), gpu_(std::make_unique<Gpu>()) {
+  if (passes_.empty() || passes_.back().output != -1) fail_system("internal: a pass graph must end in the frame's pass");
+  for (const PassSource& p : passes_) {
+    programs_.push_back(cache ? cache->get(fullscreen_vertex_source(), p.source)
+                              : std::make_shared<const Program>(fullscreen_vertex_source(), p.source));
+    if (p.output >= 0) gpu_->used[p.output] = true;
+  }
+  Gpu& g = *gpu_;
+  glGenVertexArrays(1, &g.vao);
+  const float black[4] = {0, 0, 0, 1};
+  glGenTextures(1, &g.black);
+  glBindTexture(GL_TEXTURE_2D, g.black);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, 1, 0, GL_RGBA, GL_FLOAT, black);
+  glGenTextures(1, &g.keyboard);
+  glBindTexture(GL_TEXTURE_2D, g.keyboard);
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_R8, 256, 3);
+  const KeyboardState none{};
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 256, 3, GL_RED, GL_UNSIGNED_BYTE, none.data());
+  for (int f = 0; f < 3; ++f)
+    for (int w = 0; w < 2; ++w) {
+      GLuint s = 0;
+      glGenSamplers(1, &s);
+      glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, min_filter(static_cast<TexFilter>(f)));
+      glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, f == 0 ? GL_NEAREST : GL_LINEAR);
+      const GLint wrap = w == 0 ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+      glSamplerParameteri(s, GL_TEXTURE_WRAP_S, wrap);
+      glSamplerParameteri(s, GL_TEXTURE_WRAP_T, wrap);
+      g.samplers[f * 2 + w] = s;
+    }
+  for (const PassSource& p : passes_)
+    for (const GraphInput& in : p.inputs)
+      if (in.kind == InputKind::texture && in.image && !g.textures.count(in.image.get()))
+        g.textures[in.image.get()] = upload(in);
+  pass_ms_.assign(passes_.size(), 0.0);
+}
+
+PassGraph::~PassGraph() {
+  Gpu& g = *gpu_;
+  for (Buffer& b : g.buffers) {
+    glDeleteFramebuffers(2, b.fbo);
+    glDeleteTextures(2, b.tex);
+  }
+  for (auto& [img, tex] : g.textures) glDeleteTextures(1, &tex);
+  for (auto& [key, s] : g.samplers) glDeleteSamplers(1, &s);
+  glDeleteTextures(1, &g.black);
+  glDeleteTextures(1, &g.keyboard);
+  glDeleteVertexArrays(1, &g.vao);
+}
+
+std::vector<int> PassGraph::buffers() const {
+  std::vector<int> out;
+  for (int b = 0; b < 4; ++b)
+    if (gpu_->used[b]) out.push_back(b);
+  return out;
+}
+
+void PassGraph::ensure_buffers(int w, int h) {
+  Gpu& g = *gpu_;
+  if (g.width == w && g.height == h) return;
+  for (int b = 0; b < 4; ++b) {
+    Buffer& buf = g.buffers[b];
+    glDeleteFramebuffers(2, buf.fbo);
+    glDeleteTextures(2, buf.tex);
+    buf = Buffer{};
+    if (!g.used[b]) continue;
+    for (const PassSource& p : passes_)
+      for (const GraphInput& in : p.inputs)
+        if (in.kind == InputKind::buffer && in.buffer == b && in.sampler.filter == TexFilter::mipmap)
+          buf.levels = mip_levels(w, h);
+    glGenTextures(2, buf.tex);
+    glGenFramebuffers(2, buf.fbo);
+    for (int i = 0; i < 2; ++i) {
+      glBindTexture(GL_TEXTURE_2D, buf.tex[i]);
+      glTexStorage2D(GL_TEXTURE_2D, buf.levels, GL_RGBA32F, w, h);
+      glBindFramebuffer(GL_FRAMEBUFFER, buf.fbo[i]);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, buf.tex[i], 0);
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        fail_system("GL: a float buffer's framebuffer is incomplete");
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  g.width = w;
+  g.height = h;
+  reset();
+}
+
+void PassGraph::reset() {
+  Gpu& g = *gpu_;
+  const float zero[4] = {0, 0, 0, 0};
+  for (int b = 0; b < 4; ++b) {
+    if (!g.used[b] || !g.buffers[b].fbo[0]) continue;
+    for (int i = 0; i < 2; ++i) {
+      glBindFramebuffer(GL_FRAMEBUFFER, g.buffers[b].fbo[i]);
+      glClearBufferfv(GL_COLOR, 0, zero);
+      if (g.buffers[b].levels > 1) {
+        glBindTexture(GL_TEXTURE_2D, g.buffers[b].tex[i]);
+        glGenerateMipmap(GL_TEXTURE_2D);
+      }
+    }
+    g.buffers[b].latest = 0;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
+  Gpu& g = *gpu_;
+  for (int c = 0; c < 4; ++c) {
+    const GraphInput& in = passes_[pass].inputs[c];
+    GLuint tex = g.black;
+    float rw = 0, rh = 0;
+    switch (in.kind) {
+      case InputKind::buffer:
+        tex = g.buffers[in.buffer].tex[g.buffers[in.buffer].latest];  // as it stands now
+        rw = static_cast<float>(w);
+        rh = static_cast<float>(h);
+        break;
+      case InputKind::texture:
+        tex = g.textures.at(in.image.get());
+        rw = static_cast<float>(in.image->width);
+        rh = static_cast<float>(in.image->height);
+        break;
+      case InputKind::keyboard:
+        tex = g.keyboard;
+        rw = 256;
+        rh = 3;
+        break;
+      default:
+        break;
+    }
+    glActiveTexture(GL_TEXTURE0 + c);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    const int filter = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.filter);
+    const int wrap = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.wrap);
+    glBindSampler(c, in.kind == InputKind::none ? 0 : g.samplers.at(filter * 2 + wrap));
+    res[c][0] = rw;
+    res[c][1] = rh;
+    res[c][2] = in.kind == InputKind::none ? 0.0f : 1.0f;
+  }
+  glActiveTexture(GL_TEXTURE0);
+}
+
+namespace {
+
+ShadertoyInputs shadertoy_inputs(const FrameInputs& in, float res[4][3]) {
+  ShadertoyInputs st;
+  st.time = in.time;
+  st.time_delta = in.time_delta;
+  st.frame = in.frame;
+  std::copy(std::begin(in.mouse), std::end(in.mouse), st.mouse);
+  std::memcpy(st.channel_resolution, res, sizeof st.channel_resolution);
+  return st;
+}
+
+// Wall milliseconds once the GL has finished what it was given: a pass
+// timed between two of these is that pass alone, on any driver.
+double finished_ms() {
+  glFinish();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+void unbind_samplers() {
+  for (int c = 0; c < 4; ++c) glBindSampler(c, 0);
+}
+
+}  // namespace
+
+void PassGraph::draw_buffer_pass(size_t pass, const FrameInputs& in, const FrameParams& p) {
+  Gpu& g = *gpu_;
+  Buffer& buf = g.buffers[passes_[pass].output];
+  const int target = 1 - buf.latest;
+  glBindFramebuffer(GL_FRAMEBUFFER, buf.fbo[target]);
+  glViewport(0, 0, p.width, p.height);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(g.vao);
+  const Program& prog = *programs_[pass];
+  glUseProgram(prog.id());
+  float res[4][3];
+  bind_inputs(pass, p.width, p.height, res);
+  set_shadertoy_uniforms(prog, p.width, p.height, shadertoy_inputs(in, res));
+  if (in.extra) (*in.extra)(prog);
+  glUniform2f(prog.loc("uJitter"), 0.5f, 0.5f);
+  // Tile by tile, as FrameRenderer draws: a bounded draw, a deadline check.
+  glEnable(GL_SCISSOR_TEST);
+  for (const Tile& t : split_tiles(p.width, p.height, p.tile_size)) {
+    glScissor(t.x, t.y, t.width, t.height);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (p.deadline) {
+      glFinish();
+      if (p.deadline->expired()) {
+        glDisable(GL_SCISSOR_TEST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        p.deadline->check("the render");
+      }
+    } else {
+      glFlush();
+    }
+  }
+  glDisable(GL_SCISSOR_TEST);
+  unbind_samplers();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (buf.levels > 1) {
+    glBindTexture(GL_TEXTURE_2D, buf.tex[target]);
+    glGenerateMipmap(GL_TEXTURE_2D);
+  }
+  buf.latest = target;  // later passes, and the next frame, read this
+}
+
+void PassGraph::step_buffers(const FrameInputs& in, const FrameParams& p) {
+  ensure_buffers(p.width, p.height);
+  Gpu& g = *gpu_;
+  if (in.keyboard) {
+    glBindTexture(GL_TEXTURE_2D, g.keyboard);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 256, 3, GL_RED, GL_UNSIGNED_BYTE, in.keyboard->data());
+  }
+  for (size_t i = 0; i + 1 < passes_.size(); ++i) {
+    const double t0 = timing_ ? finished_ms() : 0.0;
+    draw_buffer_pass(i, in, p);
+    if (timing_) pass_ms_[i] = finished_ms() - t0;
+  }
+}
+
+void PassGraph::draw(FrameRenderer& renderer, const Program& post, const FrameInputs& in, const FrameParams& p,
+                     bool step) {
+  if (step) step_buffers(in, p);
+  else ensure_buffers(p.width, p.height);
+  const size_t last = passes_.size() - 1;
+  const PassSource& frame_pass = passes_[last];
+  const double t0 = timing_ ? finished_ms() : 0.0;
+  renderer.draw(*programs_[last], [&](const Program& prog) {
+    float res[4][3];
+    bind_inputs(last, p.width, p.height, res);
+    if (frame_pass.uniforms == PassUniforms::shadertoy) {
+      set_shadertoy_uniforms(prog, p.width, p.height, shadertoy_inputs(in, res));
+    } else {
+      if (!in.scene) fail_system("internal: a scene pass without its scene");
+      set_scene_uniforms(prog, *in.scene, p.width, p.height, in.time, in.frame);
+    }
+    if (in.extra) (*in.extra)(prog);
+  }, post, p);
+  unbind_samplers();
+  if (timing_) pass_ms_[last] = finished_ms() - t0;
+}
+
+void PassGraph::adopt_buffers(const PassGraph& old) {
+  const Gpu& o = *old.gpu_;
+  if (o.width == 0 || o.height == 0) return;
+  ensure_buffers(o.width, o.height);
+  Gpu& g = *gpu_;
+  for (int b = 0; b < 4; ++b) {
+    if (!g.used[b] || !o.used[b] || !o.buffers[b].tex[0]) continue;
+    const Buffer& from = o.buffers[b];
+    Buffer& to = g.buffers[b];
+    for (int i = 0; i < 2; ++i)  // both: a pass may read the previous frame
+      glCopyImageSubData(from.tex[i], GL_TEXTURE_2D, 0, 0, 0, 0, to.tex[i], GL_TEXTURE_2D, 0, 0, 0, 0, o.width,
+                         o.height, 1);
+    to.latest = from.latest;
+    if (to.levels > 1)
+      for (int i = 0; i < 2; ++i) {
+        glBindTexture(GL_TEXTURE_2D, to.tex[i]);
+        glGenerateMipmap(GL_TEXTURE_2D);
+      }
+  }
+}
+
+Image PassGraph::read_buffer(int buffer) const {
+  const Gpu& g = *gpu_;
+  const Buffer& b = g.buffers[buffer];
+  Image img;
+  img.width = g.width;
+  img.height = g.height;
+  img.channels = {"R", "G", "B", "A"};
+  img.pixels.resize(static_cast<size_t>(g.width) * g.height * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, b.fbo[b.latest]);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, g.width, g.height, GL_RGBA, GL_FLOAT, img.pixels.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return img;
+}
+
+void PassGraph::write_buffer(int buffer, const Image& img) {
+  Gpu& g = *gpu_;
+  ensure_buffers(img.width, img.height);
+  Buffer& b = g.buffers[buffer];
+  if (img.nchannels() != 4 || !b.tex[0]) fail_system("internal: a checkpoint that fits no buffer");
+  glBindTexture(GL_TEXTURE_2D, b.tex[b.latest]);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, img.width, img.height, GL_RGBA, GL_FLOAT, img.pixels.data());
+  if (b.levels > 1) glGenerateMipmap(GL_TEXTURE_2D);
+}
+
+std::vector<std::string> PassGraph::unbound_sampled() const {
+  std::vector<std::string> out;
+  for (size_t i = 0; i < passes_.size(); ++i)
+    for (int c = 0; c < 4; ++c)
+      if (passes_[i].inputs[c].kind == InputKind::none && programs_[i]->loc("iChannel" + std::to_string(c)) >= 0)
+        out.push_back(passes_[i].name + " iChannel" + std::to_string(c));
+  return out;
+}
+
+}  // namespace ms

@@ -1,0 +1,119 @@
+#include "render/project_passes.h"
+
+#include <map>
+#include <memory>
+
+#include "core/error.h"
+#include "io/image_io.h"
+#include "io/input_file.h"
+#include "shader/shadertoy.h"
+#include "shader/shadertoy_media.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The file for a texture: a path a scene file gave (already resolved), or
+// the src's file name in the media directory.
+fs::path find_media(const ProjectInput& in, const ShadertoySettings& s) {
+  if (!in.file.empty()) return in.file;
+  const fs::path name = fs::path(in.src).filename();
+  if (name.empty() || s.media_dir.empty()) return {};
+  const fs::path f = s.media_dir / name;
+  return input_file_problem(f).empty() ? f : fs::path{};
+}
+
+bool is_hdr(const fs::path& f) {
+  std::string ext = f.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".exr" || ext == ".hdr";
+}
+
+// PCG32 (O'Neill): a fixed, documented sequence on every platform.
+struct Pcg {
+  std::uint64_t state = 0x853c49e6748fea9bull;
+  std::uint32_t next() {
+    const std::uint64_t old = state;
+    state = old * 6364136223846793005ull + 1442695040888963407ull;
+    const std::uint32_t x = static_cast<std::uint32_t>(((old >> 18u) ^ old) >> 27u);
+    const std::uint32_t r = static_cast<std::uint32_t>(old >> 59u);
+    return (x >> r) | (x << ((-r) & 31u));
+  }
+};
+
+}  // namespace
+
+Image media_standin(const std::string& src, MissingMedia kind) {
+  Image img;
+  img.channels = {"R", "G", "B", "A"};
+  if (kind == MissingMedia::black) {
+    img.width = img.height = 1;
+    img.pixels = {0, 0, 0, 1};
+    return img;
+  }
+  const ShadertoyMedia* m = find_shadertoy_media(src);
+  img.width = img.height = m && m->noise_size > 0 ? m->noise_size : 256;
+  Pcg rng;
+  img.pixels.resize(static_cast<size_t>(img.width) * img.height * 4);
+  for (float& v : img.pixels) v = static_cast<float>(rng.next() >> 24) / 255.0f;  // 8-bit levels, as a PNG's
+  return img;
+}
+
+std::vector<PassSource> shadertoy_passes(const ShaderProject& p, const ShadertoySettings& s, const AssembleOptions& opts,
+                                         const fs::path& scene_file, std::vector<std::string>& warnings) {
+  const std::string origin = display_path(scene_file.empty() ? p.origin : scene_file);
+  warnings.insert(warnings.end(), p.warnings.begin(), p.warnings.end());
+  std::map<fs::path, std::shared_ptr<const Image>> decoded;  // a file used twice is read once
+  std::vector<PassSource> out;
+  for (size_t i = 0; i < p.passes.size(); ++i) {
+    const ProjectPass& pass = p.passes[i];
+    PassSource ps;
+    ps.name = pass.name;
+    ps.uniforms = PassUniforms::shadertoy;
+    ps.output = pass.kind == PassKind::buffer ? pass.output : -1;
+    for (size_t c = 0; c < 4; ++c) {
+      const ProjectInput& in = pass.inputs[c];
+      const std::string where = pass.name + " iChannel" + std::to_string(c);
+      GraphInput& g = ps.inputs[c];
+      g.kind = in.kind;
+      g.buffer = in.buffer;
+      g.sampler = in.sampler;
+      switch (in.kind) {
+        case InputKind::none:
+        case InputKind::buffer:
+        case InputKind::keyboard:
+          break;
+        case InputKind::texture: {
+          const ShadertoyMedia* known = find_shadertoy_media(in.src);
+          g.single_channel = known && known->single_channel;
+          const fs::path f = find_media(in, s);
+          if (f.empty()) {
+            if (s.missing_media == MissingMedia::error)
+              fail_input(where + ": texture '" + in.src + "' is not in the media directory", origin, 0, where,
+                         (s.media_dir.empty() ? std::string("no media directory") : "looked in " + s.media_dir.string()) +
+                             "; give --media-dir DIR, or --missing-media noise|black to stand in for it");
+            const bool noise = s.missing_media == MissingMedia::noise;
+            warnings.push_back(where + ": texture '" + in.src + "' is missing; " +
+                               (noise ? "generated noise stands in (not Shadertoy's pixels)" : "black stands in"));
+            g.image = std::make_shared<const Image>(media_standin(in.src, s.missing_media));
+            break;
+          }
+          auto& img = decoded[f];
+          if (!img) img = std::make_shared<const Image>(read_image(f));
+          g.image = img;
+          g.eight_bit = !is_hdr(f);
+          break;
+        }
+        default:
+          fail_input(where + " reads a " + std::string(input_kind_name(in.kind)) + " input, which marchstudio does not run yet",
+                     origin, 0, where, "docs/shadertoy.md lists what is supported");
+      }
+    }
+    ps.source = assemble_shadertoy_pass(p, i, opts, scene_file);
+    out.push_back(std::move(ps));
+  }
+  return out;
+}
+
+}  // namespace ms
