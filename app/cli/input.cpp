@@ -10,6 +10,7 @@
 #include "cli/flag_checks.h"
 #include "render/project_passes.h"
 #include "core/error.h"
+#include "gl/context.h"
 #include "io/input_file.h"
 #include "scene/load.h"
 #include "scene/quality.h"
@@ -85,6 +86,7 @@ LoadedInput load_input_scene(const fs::path& input, const std::vector<std::strin
     in.scene.render.tonemap = Tonemap::none;
   }
   in.shadertoy = !in.scene.shadertoy_file.empty() || in.scene.passes;
+  if (in.shadertoy) request_zero_initialised_locals();  // as WebGL: before any context is made
   // Media next to the shader unless the scene or a flag says otherwise.
   if (in.shadertoy && in.scene.shadertoy.media_dir.empty()) {
     std::error_code ec;

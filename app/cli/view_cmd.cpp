@@ -9,6 +9,7 @@
 #include "cli/input.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
+#include "gl/context.h"
 #include "io/input_file.h"
 #include "live/viewer.h"
 #include "scene/load.h"
@@ -61,7 +62,11 @@ int run_view(const ViewArgs& a) {
   // goes through the same loader as `render`.
   o.load = [input, opts]() -> Scene {
     check_input_file(input, input.extension() == ".toml" ? "scene file" : "input file");
-    if (input.extension() == ".toml") return load_scene(input);
+    if (input.extension() == ".toml") {
+      Scene s = load_scene(input);
+      if (!s.shadertoy_file.empty() || s.passes) request_zero_initialised_locals();  // as WebGL
+      return s;
+    }
     return load_input(input, {}, opts).scene;
   };
   if (!a.size.empty()) {

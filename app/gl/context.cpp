@@ -1,5 +1,7 @@
 #include "gl/context.h"
 
+#include <cstdlib>
+
 #include "core/error.h"
 #include "gl/gl.h"
 
@@ -49,6 +51,13 @@ std::unique_ptr<Context> create_headless_context(Backend backend) {
   } catch (const Error& e) {
     fail_system("no GL context: EGL: " + why + "; OSMesa: " + e.info().what);
   }
+}
+
+void request_zero_initialised_locals() {
+  ::setenv("glsl_zero_init", "true", 0);
+  // Mesa announces every driconf value set from the environment on stderr
+  // ("ATTENTION: ... overridden by environment") unless told to be silent.
+  ::setenv("MESA_DEBUG", "silent", 0);
 }
 
 }  // namespace ms

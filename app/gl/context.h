@@ -50,6 +50,14 @@ class Context {
 // with every attempt's reason in the message.
 std::unique_ptr<Context> create_headless_context(Backend backend);
 
+// WebGL starts every local variable at zero and desktop GL does not, so a
+// Shadertoy shader that reads one before writing it renders differently.
+// Mesa's driconf option glsl_zero_init does what WebGL does; this turns it
+// on for contexts made from now on (unless the environment already says
+// otherwise). Mesa's EGL and GLFW contexts honour it; OSMesa reads no
+// driconf, other drivers have no such option (docs/shadertoy.md).
+void request_zero_initialised_locals();
+
 // Backend-specific constructors; each throws Exit::system on failure.
 std::unique_ptr<Context> create_egl_context();
 std::unique_ptr<Context> create_osmesa_context();

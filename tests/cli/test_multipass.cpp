@@ -186,6 +186,19 @@ TEST(Multipass, KeyboardMouseAndTheShadertoyEnvironment) {
   EXPECT_EQ(img.nchannels(), 4);  // alpha is 1 whatever the pass wrote
 }
 
+TEST(Multipass, LocalsStartAtZeroAsInWebGL) {
+  TempDir dir;
+  // `acc` is never initialised: WebGL starts it at 0, so it ends at 0.3.
+  // Without Mesa's glsl_zero_init llvmpipe folds it to 0 (checked).
+  write_file(dir / "u.glsl",
+             "void mainImage(out vec4 o, in vec2 f) {\n  vec4 acc;\n  for (int i = 0; i < 3; ++i) acc += vec4(0.1);\n"
+             "  o = vec4(acc.x, 0.0, 0.0, 1.0);\n}\n");
+  const RunResult r = run_marchstudio({"render", "u.glsl", "--size", "2x2", "--backend", "egl", "-o", "u.exr"},
+                                      dir.path(), "MESA_SHADER_CACHE_DIR='" + (dir / "cache").string() + "' ");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NEAR(read_image(dir / "u.exr").at(0, 0, 0), 0.3f, 1e-6f);
+}
+
 TEST(Multipass, NonFiniteImageChannelsConvertOneByOne) {
   TempDir dir;
   write_file(dir / "n.glsl",
