@@ -136,8 +136,12 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   // the wait for completion (glFinish), which is what a user sees.
   for (int i = 0; i < s.warmup; ++i) graph.draw(renderer, post_prog, next(), fp);
   glFinish();
+  // Each timed frame is followed by one timed pass by pass, so the sum of the
+  // passes and the frame see the same machine load: their ratio shows what
+  // running the passes as one graph adds, even on a busy machine.
   GpuTimer timer;
   std::vector<double> gpu, wall;
+  std::vector<std::vector<double>> per(graph.size());
   for (int i = 0; i < s.frames; ++i) {
     const FrameInputs in = next();
     const Clock::time_point w0 = Clock::now();
@@ -147,20 +151,14 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
     glFinish();
     wall.push_back(ms_since(w0));
     gpu.push_back(timer.wait_ms());
+    graph.set_timing(true);
+    graph.draw(renderer, post_prog, next(), fp);
+    graph.set_timing(false);
+    for (size_t p = 0; p < graph.size(); ++p) per[p].push_back(graph.pass_ms()[p]);
   }
   r.gpu_timer = std::any_of(gpu.begin(), gpu.end(), [](double x) { return x > 0.0; });
   r.gpu_ms = summarize(gpu);
   r.wall_ms = summarize(wall);
-
-  // The same frames again, pass by pass: the sum of the passes against the
-  // frame shows what running them as one graph adds.
-  graph.set_timing(true);
-  std::vector<std::vector<double>> per(graph.size());
-  for (int i = 0; i < s.frames; ++i) {
-    graph.draw(renderer, post_prog, next(), fp);
-    for (size_t p = 0; p < graph.size(); ++p) per[p].push_back(graph.pass_ms()[p]);
-  }
-  graph.set_timing(false);
   for (size_t p = 0; p < graph.size(); ++p) r.passes.push_back({graph.name(p), summarize(per[p])});
 
   if (counting) {
