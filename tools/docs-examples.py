@@ -2,25 +2,29 @@
 """Runs the example commands of README.md and docs/*.md, as a reader would.
 
 Every ```sh block is one bash script, run from a scratch directory that
-holds the repository's scenes/, tests/, sdf_shaders/ and tools/ (as
-symlinks), with `marchstudio` on PATH being --bin and `build/marchstudio`
-pointing at it too; renders are pinned to Mesa llvmpipe, and CI is unset
-(a developer's shell). A block fails when it exits non-zero or runs longer
-than --timeout seconds.
+holds copies of the repository's scenes/, tests/, sdf_shaders/, tools/ and
+docs/ (copies, so that an example that writes next to its inputs, or a
+tool that rewrites a page, never touches the tree), with `marchstudio` on
+PATH being --bin and `build/marchstudio` pointing at it too; renders are
+pinned to Mesa llvmpipe, and CI is unset (a developer's shell). A block
+fails when it exits non-zero or runs longer than --timeout seconds (then
+it is killed with everything it started).
 
 A block that cannot run here says why on the line before its fence:
     <!-- docs-test: skip (a Slurm cluster and /shared) -->
-docs/testing.md is left to tools/testing-doc.py, which also checks its
-outputs. The README's set-up commands install packages and build: they
-are what CI itself runs, so they are skipped here.
+A skip without a reason fails. docs/testing.md is left to
+tools/testing-doc.py, which also checks its outputs. The README's set-up
+commands install packages and build: they are what CI itself runs, so
+they are skipped here.
 
 Usage: /usr/bin/python3 tools/docs-examples.py --bin build/marchstudio [--list] [FILE...]
-ctest: docs_examples.
+ctest: docs_examples (label docs).
 """
 import argparse
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -40,13 +44,13 @@ def blocks(path):
         skip = SKIP.search(before)
         indent = m.group(1)
         body = '\n'.join(l[len(indent):] if l.startswith(indent) else l for l in m.group(2).split('\n'))
-        yield line, body, (skip.group(1).strip() or 'no reason given') if skip else None
+        yield line, body, skip.group(1).strip() if skip else None
 
 
 def scratch(bin_path):
     work = tempfile.mkdtemp(prefix='docs-examples-')
     for d in ('scenes', 'tests', 'sdf_shaders', 'tools', 'docs'):
-        os.symlink(os.path.join(ROOT, d), os.path.join(work, d))
+        shutil.copytree(os.path.join(ROOT, d), os.path.join(work, d), symlinks=True)
     os.mkdir(os.path.join(work, 'build'))
     os.symlink(os.path.abspath(bin_path), os.path.join(work, 'build', 'marchstudio'))
     tools = os.path.join(work, '.bin')
@@ -56,7 +60,7 @@ def scratch(bin_path):
     env['PATH'] = tools + os.pathsep + env.get('PATH', '')
     env.pop('CI', None)
     env['LIBGL_ALWAYS_SOFTWARE'] = '1'
-    env['MARCH_SHADER_DIR'] = os.path.join(ROOT, 'sdf_shaders')
+    env['MARCH_SHADER_DIR'] = os.path.join(work, 'sdf_shaders')
     mesa = '/usr/share/glvnd/egl_vendor.d/50_mesa.json'
     if os.path.exists(mesa):
         env['__EGL_VENDOR_LIBRARY_FILENAMES'] = mesa
@@ -79,23 +83,31 @@ def main():
             continue
         for line, body, skip in blocks(os.path.join(ROOT, rel)):
             where = '%s:%d' % (rel, line)
+            if skip == '' or skip == '()':
+                failed.append(where)  # a skip must say why
+                print('FAILED %s: a docs-test skip without a reason in parentheses' % where)
+                continue
             if skip or rel == 'README.md':
                 skipped += 1
-                if a.list:
-                    print('skip %s: %s' % (where, skip or 'set-up commands: CI runs them'))
+                print('skip   %s %s' % (where, skip or '(set-up commands: CI runs them)'), flush=True)
                 continue
             if a.list:
-                print('run  %s' % where)
+                print('run    %s' % where)
                 continue
             work, env = scratch(a.bin)
             t0 = time.monotonic()
+            # Its own session, so that a timeout ends the whole block (bash and
+            # every marchstudio it started), not only bash.
+            p = subprocess.Popen(['bash', '-e', '-o', 'pipefail', '-c', body], cwd=work, env=env,
+                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                 stdin=subprocess.DEVNULL, start_new_session=True)
             try:
-                p = subprocess.run(['bash', '-e', '-o', 'pipefail', '-c', body], cwd=work, env=env,
-                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                                   stdin=subprocess.DEVNULL, timeout=a.timeout)
-                rc, out = p.returncode, p.stdout
-            except subprocess.TimeoutExpired as e:
-                rc, out = 'timeout', (e.stdout or b'').decode(errors='replace') if isinstance(e.stdout, bytes) else (e.stdout or '')
+                out, _ = p.communicate(timeout=a.timeout)
+                rc = p.returncode
+            except subprocess.TimeoutExpired:
+                os.killpg(p.pid, signal.SIGKILL)
+                out, _ = p.communicate()
+                rc = 'timeout after %g s' % a.timeout
             dt = time.monotonic() - t0
             shutil.rmtree(work, ignore_errors=True)
             ran += 1
