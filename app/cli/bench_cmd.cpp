@@ -71,7 +71,7 @@ int run_bench_command(const BenchArgs& a) {
   AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}, parse_allow_include(a.allow_include)};
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
   LoadedInput in = load_input_scene(a.input, a.disable, a.preset);
-  apply_shadertoy_flags(in.scene.shadertoy, a.shadertoy);
+  apply_shadertoy_flags(in, a.shadertoy);
   // The counting pass: the same scene with the AOV counters compiled in (a
   // Shadertoy shader has no step counters: its passes are timed only).
   AssembleOptions count_opts = opts;

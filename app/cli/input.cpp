@@ -117,7 +117,15 @@ void assemble_input(LoadedInput& in, const AssembleOptions& opts) {
   in.passes = shadertoy_passes(in.project, in.scene.shadertoy, opts, wrapper, in.warnings);
 }
 
-void apply_shadertoy_flags(ShadertoySettings& s, const ShadertoyFlags& f) {
+void apply_shadertoy_flags(LoadedInput& in, const ShadertoyFlags& f) {
+  if (!in.shadertoy) {
+    const char* flag = !f.media_dir.empty() ? "--media-dir" : !f.missing_media.empty() ? "--missing-media"
+                       : !f.mouse.empty() ? "--mouse" : nullptr;
+    if (flag)
+      fail_input(std::string(flag) + " has no effect on an SDF scene", in.path.string(), 0, flag,
+                 "it sets a Shadertoy shader's inputs");
+  }
+  ShadertoySettings& s = in.scene.shadertoy;
   if (!f.media_dir.empty()) {
     std::error_code ec;
     if (!fs::is_directory(f.media_dir, ec))

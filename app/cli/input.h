@@ -40,7 +40,9 @@ struct ShadertoyFlags {
   std::vector<float> mouse;   // 4 values
   double fps = 0.0;
 };
-void apply_shadertoy_flags(ShadertoySettings& s, const ShadertoyFlags& f);
+// On an SDF scene, --media-dir, --missing-media and --mouse are errors: they
+// would do nothing.
+void apply_shadertoy_flags(LoadedInput& in, const ShadertoyFlags& f);
 // --media-dir, --missing-media and --mouse on a subcommand (--fps is its own).
 void add_shadertoy_flags(CLI::App* cmd, ShadertoyFlags& f);
 // Prints each of in.warnings as "marchstudio: <input>: warning: ..."; with

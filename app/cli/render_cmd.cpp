@@ -163,7 +163,7 @@ int run_render(const RenderArgs& a) {
   LoadedInput in = load_input_scene(input, a.disable, a.preset);
   if (aovs && in.shadertoy)
     fail_input("--aov needs a scene: a Shadertoy shader has no AOV outputs", input.string(), 0, "--aov");
-  apply_shadertoy_flags(in.scene.shadertoy, a.shadertoy);
+  apply_shadertoy_flags(in, a.shadertoy);
   if (a.fps_set) {
     if (!std::isfinite(a.fps) || a.fps <= 0) fail_input("--fps must be a positive number", {}, 0, "--fps");
     in.scene.shadertoy.fps = a.fps;

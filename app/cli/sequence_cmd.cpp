@@ -189,7 +189,7 @@ int run_sequence(const RenderArgs& a) {
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
   LoadedInput in = load_input_scene(a.input, a.disable, a.preset);
   if (aovs && in.shadertoy) fail_input("--aov needs a scene, not a Shadertoy shader", a.input, 0, "--aov");
-  apply_shadertoy_flags(in.scene.shadertoy, a.shadertoy);
+  apply_shadertoy_flags(in, a.shadertoy);
   if (in.shadertoy && !a.fps_set) plan.fps = in.scene.shadertoy.fps;  // Shadertoy runs at 60
   in.scene.shadertoy.fps = plan.fps;
   const Scene& scene = in.scene;

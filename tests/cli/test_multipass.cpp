@@ -255,6 +255,24 @@ TEST(Multipass, BadInputIsAOneLineErrorAndNoFile) {
   EXPECT_NE(r.err.find("Image iChannel2 is sampled but nothing is bound to it"), std::string::npos) << r.err;
 }
 
+TEST(Multipass, ShadertoyFlagsOnAnSdfSceneAreErrors) {
+  TempDir dir;
+  const std::string seed = (source_dir() / "scenes/seed.toml").string();
+  const std::vector<std::vector<std::string>> flags = {
+      {"--mouse", "1,2,3,4"}, {"--media-dir", dir.path().string()}, {"--missing-media", "noise"}};
+  for (const auto& f : flags)
+    for (const char* sub : {"render", "bench"}) {
+      std::vector<std::string> args = {sub, seed, "--size", "8x8"};
+      if (std::string(sub) == "render") args.insert(args.end(), {"-o", "x.png"});
+      else args.insert(args.end(), {"--frames", "1", "--warmup", "0"});
+      args.insert(args.end(), f.begin(), f.end());
+      const RunResult r = run_marchstudio(args, dir.path());
+      EXPECT_EQ(r.exit_code, 2) << sub << " " << f[0] << ": " << r.err;
+      EXPECT_NE(r.err.find(f[0] + " has no effect on an SDF scene"), std::string::npos) << r.err;
+      EXPECT_FALSE(fs::exists(dir / "x.png"));
+    }
+}
+
 TEST(Multipass, BenchTimesEachPassAndPrintShaderShowsThemAll) {
   TempDir dir;
   write_file(dir / "c.json", counter_json());
