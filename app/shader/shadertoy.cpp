@@ -145,32 +145,29 @@ ShaderSource assemble_shadertoy_pass(const ShaderProject& p, size_t index, const
 
   std::string root = wrapper_head(pass);
   for (const auto& [name, value] : opts.defines) root += "#define " + name + " " + value + "\n";
-  if (!p.common.empty() || !p.common_file.empty()) {
-    std::string common = p.common;
-    std::string where = p.common_where.empty() ? origin + " (Common)" : p.common_where;
+  // A tab's code, inline (JSON) or from its file, as one of the root's includes.
+  const auto add_tab = [&](const std::string& inline_code, const fs::path& file, std::string where,
+                           const std::string& what, const std::string& include, std::string& code) {
+    code = inline_code;
     fs::path dir = absolute_normal(p.origin).parent_path();
-    if (!p.common_file.empty()) {
-      common = read_source(p.common_file, roots, origin, "shadertoy.common");
-      where = display_path(p.common_file);
-      dir = absolute_normal(p.common_file).parent_path();
-      read.push_back(absolute_normal(p.common_file));
+    if (!file.empty()) {
+      code = read_source(file, roots, origin, what);
+      where = display_path(file);
+      dir = absolute_normal(file).parent_path();
+      read.push_back(absolute_normal(file));
     }
-    refuse_main(common, where);
-    popts.inline_files["marchstudio:common"] = {where, rename_desktop_keywords(common), dir};
-    root += "#include \"marchstudio:common\"\n";
-  }
-  std::string code = pass.code;
-  std::string where = pass.where.empty() ? origin + " (" + pass.name + ")" : pass.where;
-  fs::path dir = absolute_normal(p.origin).parent_path();
-  if (!pass.file.empty()) {
-    code = read_source(pass.file, roots, origin, pass.name);
-    where = display_path(pass.file);
-    dir = absolute_normal(pass.file).parent_path();
-    read.push_back(absolute_normal(pass.file));
-  }
-  refuse_main(code, where);
-  popts.inline_files["marchstudio:pass"] = {where, rename_desktop_keywords(code), dir};
-  root += "#include \"marchstudio:pass\"\n";
+    refuse_main(code, where);
+    popts.inline_files[include] = {where, rename_desktop_keywords(code), dir};
+    root += "#include \"" + include + "\"\n";
+    return where;
+  };
+  std::string common, code;
+  if (!p.common.empty() || !p.common_file.empty())
+    add_tab(p.common, p.common_file, p.common_where.empty() ? origin + " (Common)" : p.common_where,
+            "shadertoy.common", "marchstudio:common", common);
+  const std::string where = add_tab(pass.code, pass.file, pass.where.empty() ? origin + " (" + pass.name + ")" : pass.where,
+                                    pass.name, "marchstudio:pass", code);
+  const fs::path dir = pass.file.empty() ? absolute_normal(p.origin).parent_path() : absolute_normal(pass.file).parent_path();
   root += pass.kind == PassKind::image ? image_main() : buffer_main();
 
   ShaderSource src = preprocess(root, where + " (shadertoy wrapper)", dir, popts);
