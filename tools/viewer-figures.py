@@ -1,0 +1,174 @@
+#!/usr/bin/python3
+"""Measures docs/viewer.md's figures and writes them between its markers.
+
+- viewer-reload: the reload latency of the two kinds of save. A save of the
+  scene TOML that changes only a uniform value (a light's intensity) needs
+  no recompile: the shader text is the same, so the viewer's program cache
+  has it. A save of the map GLSL with a new constant is new shader text:
+  assembled, compiled and linked again, and llvmpipe's lazy code
+  generation lands in the first frame; Mesa's disk shader cache starts
+  empty (MESA_SHADER_CACHE_DIR), as for an edit never compiled before.
+  For each window size and kind, SAVES saves by rename(); per save the
+  in-viewer `ms` and `compile_ms` of its `reload ok` log line and the
+  wall time from the rename until that line is in the log.
+- watch-log: what `render --watch` prints for a start, one save and Ctrl+C.
+- images/viewer/panel.png: the window with its panel under Xvfb, on
+  tests/data/bounds/ball.toml, whose map has a ranged uniform (`uRadius`).
+
+Needs xvfb-run. Usage: /usr/bin/python3 tools/viewer-figures.py [path/to/marchstudio]
+"""
+import datetime
+import os
+import platform
+import re
+import shutil
+import signal
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'))
+BIN = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, 'build', 'marchstudio'))
+SIZES = ['160x90', '320x180', '640x360', '1280x720']
+SAVES = 4
+ENV = dict(os.environ, LIBGL_ALWAYS_SOFTWARE='1', MARCH_SHADER_DIR=os.path.join(ROOT, 'sdf_shaders'))
+RELOAD = re.compile(r'^reload ok (\d+) frames=(\d+) iterations=\d+ ms=([\d.]+) compile_ms=([\d.]+)(.*)$')
+
+
+def replace(path, text):
+    tmp = path + '.new'
+    open(tmp, 'w').write(text)
+    os.rename(tmp, path)  # as vim or VS Code save
+
+
+def wait_line(log, n, deadline=60):
+    t_end = time.monotonic() + deadline
+    while time.monotonic() < t_end:
+        for line in open(log).read().splitlines() if os.path.exists(log) else []:
+            if re.match(r'^reload (ok|failed) %d ' % n, line):
+                return line
+        time.sleep(0.002)
+    raise SystemExit('viewer-figures: no reload %d line in %s' % (n, log))
+
+
+def measure(size, work):
+    for f in ('seed.toml', 'seed.glsl'):
+        shutil.copy(os.path.join(ROOT, 'scenes', f), work)
+    log = os.path.join(work, 'log.txt')
+    if os.path.exists(log):
+        os.remove(log)
+    p = subprocess.Popen(['xvfb-run', '-a', '-s', '-screen 0 1920x1080x24', BIN, 'view', 'seed.toml',
+                          '--size', size, '--log', log, '--exit-after', '300'], cwd=work,
+                         env=dict(ENV, MESA_SHADER_CACHE_DIR=os.path.join(work, 'mesa-cache')),  # empty: a new edit misses
+                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+    rows = {'toml': [], 'glsl': []}
+    try:
+        wait_line(log, 0)
+        time.sleep(1.0)
+        n = 0
+        toml = open(os.path.join(work, 'seed.toml')).read()
+        glsl = open(os.path.join(work, 'seed.glsl')).read()
+        for k in range(SAVES):
+            for kind in ('toml', 'glsl'):
+                n += 1
+                if kind == 'toml':  # a uniform value only
+                    path, text = 'seed.toml', toml.replace('intensity   = 2.0', 'intensity   = %.2f' % (2.0 + 0.05 * (k + 1)))
+                else:  # new shader text: a radius never compiled before in this session
+                    path, text = 'seed.glsl', glsl.replace('1.0), MAT_BALL', '%.4f), MAT_BALL' % (1.0 - 0.001 * (k + 1)))
+                t0 = time.monotonic()
+                replace(os.path.join(work, path), text)
+                line = wait_line(log, n)
+                wall = (time.monotonic() - t0) * 1000
+                m = RELOAD.match(line)
+                if not m:
+                    raise SystemExit('viewer-figures: reload %d failed: %s' % (n, line))
+                rows[kind].append((int(m.group(2)), float(m.group(3)), float(m.group(4)), wall))
+                time.sleep(1.0)
+        frame = [float(x) for x in re.findall(r'frame_ms=([\d.]+)', open(log).read())]
+    finally:
+        os.killpg(p.pid, signal.SIGTERM)
+        p.wait()
+    return rows, statistics.median(frame) if frame else float('nan')
+
+
+def span(xs, fmt='%.0f'):
+    lo, hi = min(xs), max(xs)
+    return (fmt % lo) if fmt % lo == fmt % hi else '%s - %s' % (fmt % lo, fmt % hi)
+
+
+def watch_log(work):
+    for f in ('seed.toml', 'seed.glsl'):
+        shutil.copy(os.path.join(ROOT, 'scenes', f), work)
+    p = subprocess.Popen([BIN, 'render', '--watch', 'seed.toml', '-o', 'out/seed.png', '--size', '320x180'], cwd=work,
+                         env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    time.sleep(4)
+    glsl = open(os.path.join(work, 'seed.glsl')).read()
+    replace(os.path.join(work, 'seed.glsl'), glsl.replace('1.0), MAT_BALL', '0.9), MAT_BALL'))
+    time.sleep(4)
+    p.send_signal(signal.SIGINT)
+    out, _ = p.communicate(timeout=30)
+    return out.rstrip('\n').split('\n'), p.returncode
+
+
+def panel(work):
+    for f in ('ball.toml', 'ball.glsl'):
+        shutil.copy(os.path.join(ROOT, 'tests', 'data', 'bounds', f), work)
+    shots = os.path.join(work, 'shots')
+    subprocess.run(['xvfb-run', '-a', '-s', '-screen 0 1920x1080x24', BIN, 'view', 'ball.toml', '--size', '960x600',
+                    '--paused', '--shot-frame', '20', '--shot-dir', shots, '--max-frames', '25'],
+                   cwd=work, env=ENV, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=120)
+    win = [f for f in os.listdir(shots) if '_window_' in f]
+    if len(win) != 1:
+        raise SystemExit('viewer-figures: expected one window screenshot, found %s' % os.listdir(shots))
+    shutil.copy(os.path.join(shots, win[0]), os.path.join(ROOT, 'docs', 'images', 'viewer', 'panel.png'))
+
+
+def put(doc, name, lines):
+    text = open(doc).read()
+    b, e = '<!-- %s:begin -->' % name, '<!-- %s:end -->' % name
+    i, j = text.index(b), text.index(e) + len(e)
+    open(doc, 'w').write(text[:i] + '\n'.join([b] + lines + [e]) + text[j:])
+
+
+def main():
+    if not shutil.which('xvfb-run'):
+        raise SystemExit('viewer-figures: needs xvfb-run')
+    doc = os.path.join(ROOT, 'docs', 'viewer.md')
+    renderer = subprocess.run([BIN, 'bench', os.path.join(ROOT, 'scenes', 'seed.toml'), '--size', '16x16', '--frames', '1',
+                               '--json'], env=ENV, capture_output=True, text=True, check=True).stdout
+    renderer = re.search(r'"gl_renderer":\s*"([^"]*)"', renderer).group(1)
+    with open('/proc/cpuinfo') as f:
+        cpu = next((l.split(':', 1)[1].strip() for l in f if l.startswith('model name')), platform.machine())
+    date = datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d')
+    table = ['Measured by `tools/viewer-figures.py` on %s (%d cores), Xvfb, `GL_RENDERER` = `%s`, %s: the seed'
+             % (cpu, os.cpu_count(), renderer, date),
+             'scene, spp 1, %d saves of each kind per window size, one second apart. *save to log line*: wall time from'
+             % SAVES,
+             'the `rename()` until the `reload ok` line is in the log file. Mesa\'s disk shader cache starts empty, so',
+             'each new radius is a real compile, as an edit never made before is.', '',
+             '| window | frame time (median) | save | in-viewer `ms` (event to swap) | `compile_ms` | save to log line | frames |',
+             '|---|---|---|---|---|---|---|']
+    for size in SIZES:
+        with tempfile.TemporaryDirectory() as work:
+            rows, frame = measure(size, work)
+        for kind, label in (('toml', 'TOML, a light\'s intensity (no recompile)'), ('glsl', 'map GLSL, a new radius (recompile)')):
+            r = rows[kind]
+            table.append('| %s | %.0f ms | %s | %s ms | %s ms | %s ms | %s |' % (
+                size, frame, label, span([x[1] for x in r]), span([x[2] for x in r], '%.1f'), span([x[3] for x in r]),
+                span([x[0] for x in r], '%d')))
+        print('measured %s' % size, file=sys.stderr)
+    put(doc, 'viewer-reload', table)
+    with tempfile.TemporaryDirectory() as work:
+        lines, rc = watch_log(work)
+    put(doc, 'watch-log', ['```text', '$ marchstudio render --watch seed.toml -o out/seed.png --size 320x180',
+                           '(one save of seed.glsl, then Ctrl+C)'] + lines +
+        ['```', 'Exit status %d. Printed by `tools/viewer-figures.py`, %s.' % (rc, date)])
+    with tempfile.TemporaryDirectory() as work:
+        panel(work)
+    print('wrote docs/viewer.md and docs/images/viewer/panel.png', file=sys.stderr)
+
+
+if __name__ == '__main__':
+    main()
