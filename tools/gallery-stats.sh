@@ -4,7 +4,9 @@
 # markers of docs/gallery.md: frame time (wall median of 3 frames after 1
 # warm-up, at the scene's own size, spp 1), steps and map() calls per pixel
 # (the counting pass: deterministic), compile time, the machine and GL
-# renderer, the date. Rerun it after changing a scene or the tracer.
+# renderer, the date; and between <!-- gallery-psnr:begin --> and
+# <!-- gallery-psnr:end --> what each scene's fresh render scores against
+# its golden on both backends. Rerun it after changing a scene or the tracer.
 #
 # Usage: tools/gallery-stats.sh [path/to/marchstudio]
 set -euo pipefail
@@ -45,4 +47,36 @@ text = open(doc).read()
 b, e = text.index("<!-- gallery-stats:begin -->"), text.index("<!-- gallery-stats:end -->") + len("<!-- gallery-stats:end -->")
 open(doc, "w").write(text[:b] + "\n".join(table) + text[e:])
 PY
-echo "wrote the table in docs/gallery.md" >&2
+# Each scene rendered again on both backends against its golden, as the
+# golden suite does (llvmpipe pinned): the PSNR and max difference it scores.
+mesa_vendor=/usr/share/glvnd/egl_vendor.d/50_mesa.json
+if [[ -f $mesa_vendor ]]; then export __EGL_VENDOR_LIBRARY_FILENAMES=$mesa_vendor; fi
+LIBGL_ALWAYS_SOFTWARE=1 "$bin" test "$root/tests/golden/suite.toml" --json > "$tmp.golden.json" 2>/dev/null || true
+/usr/bin/python3 - "$tmp.golden.json" "$root/docs/gallery.md" "$machine" "$(date -u +%Y-%m-%d)" <<'PY'
+import json, sys
+src, doc, machine, date = sys.argv[1:5]
+j = json.load(open(src))
+by, renderer, n_same, worst = {}, "", 0, 0
+for c in j["cases"]:
+    scene, backend = c["name"].rsplit(".", 1)
+    chk = [k for k in c["checks"] if k["metric"] == "psnr"][0]
+    psnr = "identical" if chk["identical"] else "%.2f dB" % chk["psnr"]
+    by.setdefault(scene, {})[backend] = "%s, max %d/255" % (psnr, round(chk["max"] * 255)) + ("" if c["outcome"] == "pass" else " (**%s**)" % c["outcome"])
+    renderer = c["gl_renderer"] or renderer
+    n_same += 1 if chk["identical"] else 0
+    worst = max(worst, round(chk["max"] * 255))
+rows = ["<!-- gallery-psnr:begin -->",
+        "A fresh render against its golden, as the golden suite scores it (`marchstudio test tests/golden/suite.toml --json`),",
+        "measured by `tools/gallery-stats.sh` on %s, `GL_RENDERER` = `%s`, %s." % (machine, renderer, date),
+        "%d of the %d renders are bit-identical to their goldens; the largest difference of any pixel is %d/255." % (
+            n_same, len(j["cases"]), worst),
+        "",
+        "| scene | egl | osmesa |", "|---|---|---|"]
+rows += ["| `%s` | %s | %s |" % (s, by[s].get("egl", "-"), by[s].get("osmesa", "-")) for s in sorted(by)]
+rows.append("<!-- gallery-psnr:end -->")
+text = open(doc).read()
+b, e = text.index("<!-- gallery-psnr:begin -->"), text.index("<!-- gallery-psnr:end -->") + len("<!-- gallery-psnr:end -->")
+open(doc, "w").write(text[:b] + "\n".join(rows) + text[e:])
+PY
+rm -f "$tmp.golden.json"
+echo "wrote the tables in docs/gallery.md" >&2
