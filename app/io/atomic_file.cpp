@@ -108,6 +108,13 @@ void AtomicFile::discard() {
   }
 }
 
+void AtomicFile::written_by_name() {
+  struct stat st {};
+  if (fd_ < 0 || error_) return;
+  if (::fstat(fd_, &st) != 0) error_ = errno;
+  else size_ = static_cast<std::uint64_t>(st.st_size);
+}
+
 bool AtomicFile::pwrite(const void* data, std::size_t n, std::uint64_t offset) {
   if (error_ || fd_ < 0) return false;
   const char* p = static_cast<const char*>(data);

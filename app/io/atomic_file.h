@@ -34,6 +34,10 @@ class AtomicFile {
   // Writes at the end, or at `offset`. Return false once anything failed.
   bool write(const void* data, std::size_t n);
   bool pwrite(const void* data, std::size_t n, std::uint64_t offset);
+  // The bytes went to temp() by its name, from a writer that must reread
+  // what it wrote (libtiff, through OpenImageIO): the size on disk becomes
+  // the size written. That writer must have checked its own writes.
+  void written_by_name();
   bool failed() const { return error_ != 0; }
   std::uint64_t size() const { return size_; }
   const std::filesystem::path& temp() const { return temp_; }
