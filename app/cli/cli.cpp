@@ -9,6 +9,7 @@
 #include "cli/view_cmd.h"
 #include "cli/bench_cmd.h"
 #include "cli/compare_cmd.h"
+#include "cli/info_cmd.h"
 #include "cli/flag_checks.h"
 #include "cli/sweep_cmd.h"
 #include "cli/test_cmd.h"
@@ -43,6 +44,8 @@ int run_cli(int argc, char** argv) {
   CLI::App* sweep = add_sweep_command(app, sweep_args);
   TestArgs test_args;
   CLI::App* test = add_test_command(app, test_args);
+  InfoArgs info_args;
+  CLI::App* info = add_info_command(app, info_args);
 
   if (const std::string bad = unknown_subcommand(app, argc, argv); !bad.empty()) {
     std::fprintf(stderr, "marchstudio: %s (see 'marchstudio --help')\n", bad.c_str());
@@ -72,6 +75,7 @@ int run_cli(int argc, char** argv) {
     if (compare->parsed()) return run_compare(compare_args);
     if (sweep->parsed()) return run_sweep_command(sweep_args);
     if (test->parsed()) return run_test(test_args);
+    if (info->parsed()) return run_info(info_args);
   } catch (const Error& e) {
     std::fprintf(stderr, "marchstudio: %s\n", e.what());
     if (!e.info().detail.empty() && verbose(app)) std::fprintf(stderr, "%s", e.info().detail.c_str());

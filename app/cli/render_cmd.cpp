@@ -28,6 +28,7 @@
 #include "render/uniforms.h"
 #include "scene/animation.h"
 #include "cli/flag_checks.h"
+#include "cli/fingerprint.h"
 #include "cli/input.h"
 #include "live/render_watch.h"
 
@@ -69,6 +70,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
       ->check(one_of({"stride", "chunk"}));
   cmd->add_option("--video", a.video, "Encode the --frames sequence with ffmpeg into this file (e.g. out.mp4)")
       ->check(not_empty());
+  cmd->add_flag("--force", a.force,
+                "With --frames: render every frame again, even those on disk with this run's fingerprint");
   cmd->add_flag("--no-write", a.no_write, "Render --frames but write nothing (throughput measurements)")
       ->group("");
   cmd->add_option("--aov", a.aov,
@@ -134,6 +137,9 @@ int run_render(const RenderArgs& a) {
     fail_input("--timeout must be a number of seconds >= 0 (0: no limit)", {}, 0, "--timeout");
   if (a.watch) return run_render_watch(a);
   if (wants_sequence(a)) return run_sequence(a);
+  if (a.force)
+    fail_input("--force needs --frames: a still always replaces its file", {}, 0, "--force",
+               "it makes a sequence render again the frames it would keep");
   // From here on the image has a.timeout seconds; the watchdog ends the
   // process if a draw (or the driver's compile) never returns.
   const Deadline deadline = Deadline::after(a.timeout);
@@ -249,6 +255,8 @@ int run_render(const RenderArgs& a) {
   ImageMetadata meta{{"Software", "marchstudio 0.1.0"},
                      {"ImageDescription", input.filename().string() + " t=" + std::to_string(time) +
                                               " spp=" + std::to_string(fp.spp)}};
+  add_fingerprint(meta, frame_fingerprint(job_fingerprint(in, fp, post_src, aov_names, scene.shadertoy.fps), a.frame,
+                                          time));
   const double t_render = clock.lap();
   deadline.check("the render");
   if (watchdog) watchdog->disarm();  // the write is atomic and must not be cut short

@@ -34,6 +34,7 @@ struct RenderArgs {
   std::string shard_mode;  // "stride" (when empty) or "chunk"
   std::string video;       // encode the frames with ffmpeg afterwards
   bool no_write = false;   // hidden: render but discard (throughput measurements)
+  bool force = false;      // a sequence renders every frame again (cli/sequence_state.h)
   bool verbose = false;
   bool watch = false;       // re-render on every save of the scene or its includes (live/render_watch.h)
   std::vector<std::string> aov;      // AOVs to add to an .exr: depth, normal, steps, material, shadow, ao, cost, hit

@@ -29,6 +29,7 @@
 #include "render/graph.h"
 #include "render/still.h"
 #include "render/uniforms.h"
+#include "cli/fingerprint.h"
 #include "cli/sequence_state.h"
 #include "scene/animation.h"
 
@@ -126,32 +127,6 @@ Plan plan_from_flags(const RenderArgs& a) {
   return p;
 }
 
-// What a rerun finds on disk for this shard's frames.
-struct ResumeScan {
-  std::vector<int> todo;                              // to render, ascending
-  std::vector<std::pair<int, std::string>> skipped;  // complete: frame, path
-  std::vector<std::pair<int, std::string>> redone;   // present but broken: frame, why
-};
-
-// Remove a killed run's temporaries, then sort the frames into complete
-// (skipped) and missing or broken (rendered again, atomically replaced).
-ResumeScan scan_existing(const FramePattern& pattern, const std::vector<int>& mine, const FrameParams& fp) {
-  for (const fs::path& p : remove_stale_temps(pattern, mine))
-    std::fprintf(stderr, "marchstudio: removed %s, left by an interrupted run\n", p.string().c_str());
-  ResumeScan scan;
-  for (int f : mine) {
-    std::string why;
-    const fs::path p = pattern.path(f);
-    if (frame_is_complete(p, fp.width, fp.height, &why)) {
-      scan.skipped.emplace_back(f, p.string());
-      continue;
-    }
-    if (why != "missing") scan.redone.emplace_back(f, why);
-    scan.todo.push_back(f);
-  }
-  return scan;
-}
-
 }  // namespace
 
 bool wants_sequence(const RenderArgs& a) {
@@ -226,29 +201,33 @@ int run_sequence(const RenderArgs& a) {
   const std::vector<int> mine = shard_frames(plan.range, plan.shard, plan.mode);
   for (int f : mine) animated(scene, frame_time(f));  // throws on a pose that cannot render
 
-  ResumeScan scan = a.no_write ? ResumeScan{mine, {}, {}} : scan_existing(pattern, mine, fp);
+  // What makes each frame: a rerun keeps only frames with the same fingerprint.
+  const std::string job = job_fingerprint(in, fp, post_src, aov_names, plan.fps);
+  const FrameFingerprint fingerprint = [&](int f) { return frame_fingerprint(job, f, frame_time(f)); };
+  ResumeScan scan = a.no_write ? ResumeScan{mine, {}, {}, {}, {}}
+                               : scan_existing(pattern, mine, fp.width, fp.height, fingerprint, a.force);
   StatefulPlan sp;
   if (stateful) {
-    // What made the state: the passes, the size, the frame rate, the mouse, the media.
-    std::string what = std::to_string(fp.width) + "x" + std::to_string(fp.height) + "@" + std::to_string(plan.fps);
-    for (float m : scene.shadertoy.mouse) what += "," + std::to_string(m);
-    for (const PassSource& pass : in.passes) {
-      what += "\n" + pass.source.text;
-      for (const GraphInput& g : pass.inputs)
-        if (g.image) what += "\n" + std::to_string(g.image->width) + "x" + std::to_string(g.image->height);
-    }
-    sp = plan_stateful(mine, pattern, fp.width, fp.height, state_key(what), a.no_write);
+    sp = plan_stateful(mine, pattern, fp.width, fp.height, state_key(job), fingerprint, a.no_write || a.force);
     // Frames after the resume point render again even when present: they follow from it.
     scan.todo = sp.todo;
     scan.skipped.erase(std::remove_if(scan.skipped.begin(), scan.skipped.end(),
                                       [&](const auto& s) { return s.first > sp.resume_from; }),
                        scan.skipped.end());
     scan.redone.clear();
+    scan.stale.clear();
+    scan.unmarked.clear();
   }
   const std::vector<int>& todo = scan.todo;
   Progress progress(static_cast<int>(todo.size()), ::isatty(2) == 1);
   for (const auto& [f, p] : scan.skipped) progress.skipped(f, p);
   for (const auto& [f, why] : scan.redone) progress.redo(f, pattern.path(f).string(), why);
+  if (!scan.stale.empty() || !scan.unmarked.empty())
+    progress.line(std::to_string(scan.stale.size() + scan.unmarked.size()) +
+                  (scan.stale.size() + scan.unmarked.size() == 1 ? " frame on disk is" : " frames on disk are") +
+                  " not this run's (" +
+                  std::to_string(scan.stale.size()) + " made from other inputs or settings, " +
+                  std::to_string(scan.unmarked.size()) + " with no fingerprint): rendering them again");
   if (!scan.skipped.empty() || mine.size() != static_cast<std::size_t>(plan.range.count()))
     progress.line("shard " + std::to_string(plan.shard.index) + "/" + std::to_string(plan.shard.count) + ": " +
                   std::to_string(mine.size()) + " of " + std::to_string(plan.range.count()) + " frames, " +
@@ -355,6 +334,7 @@ int run_sequence(const RenderArgs& a) {
       ImageMetadata meta{{"Software", "marchstudio 0.1.0"},
                          {"ImageDescription", fs::path(a.input).filename().string() + " t=" + std::to_string(time) +
                                                   " spp=" + std::to_string(fp.spp) + " frame=" + std::to_string(f)}};
+      add_fingerprint(meta, fingerprint(f));
       WriteJob job{f, std::move(img), pattern.path(f), std::move(meta), {}, {}, {}};
       if (stateful) {
         for (int b : graph.buffers()) job.state.emplace_back(b, graph.read_buffer(b));

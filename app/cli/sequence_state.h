@@ -1,3 +1,9 @@
+// What a rerun of a sequence finds on disk, and what it renders again.
+//
+// Every frame: a frame file is kept only when it is complete and carries
+// this run's fingerprint for that frame (cli/fingerprint.h); --force keeps
+// none. Missing, broken and stale frames render again.
+//
 // Sequences of a shader with buffers: frame f follows from frame f-1, so
 // the frames render in order, the buffers carried from one to the next,
 // and each written frame takes a checkpoint of them along
@@ -7,13 +13,31 @@
 // its own, buffers only. Stride shards are refused: every shard would
 // replay nearly all frames.
 #pragma once
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/checkpoint.h"
 #include "io/sequence.h"
 
 namespace ms {
+
+// The fingerprint frame f must carry to be kept.
+using FrameFingerprint = std::function<std::string(int frame)>;
+
+struct ResumeScan {
+  std::vector<int> todo;                              // to render, ascending
+  std::vector<std::pair<int, std::string>> skipped;  // complete and this run's: frame, path
+  std::vector<std::pair<int, std::string>> redone;   // present but broken: frame, why
+  std::vector<int> stale;                            // complete but made from other inputs or settings
+  std::vector<int> unmarked;                         // complete but with no fingerprint (not ours, or older)
+};
+
+// Removes a killed run's temporaries of `mine` (saying so on stderr), then
+// sorts the frames. `force`: everything is to render.
+ResumeScan scan_existing(const FramePattern& pattern, const std::vector<int>& mine, int width, int height,
+                         const FrameFingerprint& fingerprint, bool force);
 
 struct StatefulPlan {
   std::string key;        // io/checkpoint.h's state key
@@ -23,8 +47,9 @@ struct StatefulPlan {
 };
 
 // `mine`: the frames of this run, ascending and contiguous. A frame counts
-// as done when frame_is_complete() and its checkpoint are there.
+// as done when frame_is_complete() with its fingerprint and its checkpoint
+// are there. `fresh` (no_write or --force): nothing counts as done.
 StatefulPlan plan_stateful(const std::vector<int>& mine, const FramePattern& pattern, int width, int height,
-                           const std::string& key, bool no_write);
+                           const std::string& key, const FrameFingerprint& fingerprint, bool fresh);
 
 }  // namespace ms

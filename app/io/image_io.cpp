@@ -98,16 +98,56 @@ void write_image(const Image& image, const fs::path& path, const ImageMetadata& 
 
   AtomicFile file(path);
   AtomicProxy proxy(file);
-  // The format comes from the target's name; the bytes go to the temporary.
-  auto out = OIIO::ImageOutput::create(path.string(), &proxy);
+  // The format comes from the target's name; the bytes go to the temporary:
+  // through the proxy, which checks every write (PNG and JPEG do not), or
+  // for TIFF by name, since libtiff rereads the directory it wrote (to link
+  // the EXIF one) and checks its own writes.
+  const bool by_name = format == ImageFormat::tiff;
+  auto out = OIIO::ImageOutput::create(path.string(), by_name ? nullptr : &proxy);
   if (!out) fail_system("cannot create an image writer: " + OIIO::geterror(), path.string());
   const OIIO::stride_t xstride = static_cast<OIIO::stride_t>(nch * sizeof(float));
-  const bool ok = out->open(path.string(), spec) &&
+  const bool ok = out->open(by_name ? file.temp().string() : path.string(), spec) &&
                   out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data(), xstride) && out->close();
+  if (by_name) file.written_by_name();
   const std::string err = ok ? "" : out->geterror();
   out.reset();
   if (!ok) fail_system("cannot write image: " + err, path.string());
   file.commit();
+}
+
+void add_fingerprint(ImageMetadata& meta, const std::string& fingerprint) {
+  meta[kFingerprintKey] = fingerprint;
+  std::string& d = meta["ImageDescription"];
+  d += (d.empty() ? "" : " ") + std::string("fingerprint=") + fingerprint;
+}
+
+std::string fingerprint_from(std::string_view attribute, std::string_view description) {
+  if (!attribute.empty()) return std::string(attribute);
+  const std::string_view word = "fingerprint=";
+  const size_t at = description.rfind(word);
+  if (at == std::string_view::npos || (at > 0 && description[at - 1] != ' ')) return {};
+  const std::string_view rest = description.substr(at + word.size());
+  return std::string(rest.substr(0, rest.find(' ')));
+}
+
+ImageInfo read_image_info(const fs::path& path) {
+  std::string bytes = read_input_file(path, "image file", {}, kMaxImageInput);
+  OIIO::Filesystem::IOMemReader mem(bytes.data(), bytes.size());
+  OIIO::ImageSpec config;
+  auto in = OIIO::ImageInput::open(path.string(), &config, &mem);
+  if (!in) fail_input("cannot read image: " + OIIO::geterror(), path.string());
+  const OIIO::ImageSpec& spec = in->spec();
+  ImageInfo info;
+  info.width = spec.width;
+  info.height = spec.height;
+  info.channels.assign(spec.channelnames.begin(), spec.channelnames.end());
+  info.format = in->format_name();
+  info.pixel_type = spec.format.c_str();
+  for (const OIIO::ParamValue& p : spec.extra_attribs)
+    if (p.type() == OIIO::TypeDesc::STRING) info.attributes.emplace_back(p.name().string(), p.get_string());
+  info.fingerprint = fingerprint_from(spec.get_string_attribute(kFingerprintKey),
+                                      spec.get_string_attribute("ImageDescription"));
+  return info;
 }
 
 Image read_image(const fs::path& path) {

@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include "io/image.h"
 
@@ -30,6 +33,27 @@ using ImageMetadata = std::map<std::string, std::string>;
 // system for I/O errors (a full disk: exit 3, one line); never leaves the
 // target or the temporary behind on failure.
 void write_image(const Image& image, const std::filesystem::path& path, const ImageMetadata& meta = {});
+
+// The fingerprint of what made an image (cli/fingerprint.h), in two places
+// so that every format keeps it: the "marchstudio:fingerprint" attribute
+// (a PNG text chunk, an EXR header attribute) and a last
+// "fingerprint=<hex>" word of ImageDescription (which TIFF and JPEG keep).
+inline constexpr const char* kFingerprintKey = "marchstudio:fingerprint";
+void add_fingerprint(ImageMetadata& meta, const std::string& fingerprint);
+// The fingerprint from an image's attribute, else its description; empty if none.
+std::string fingerprint_from(std::string_view attribute, std::string_view description);
+
+// An image file's header: size, channels, and its text attributes.
+struct ImageInfo {
+  int width = 0, height = 0;
+  std::vector<std::string> channels;
+  std::string format;       // "png", "openexr", ...
+  std::string pixel_type;   // "uint8", "float", ...
+  std::string fingerprint;  // empty when it has none
+  std::vector<std::pair<std::string, std::string>> attributes;  // string-valued ones, in file order
+};
+// Reads the header only, from a regular file. Throws bad_input naming it.
+ImageInfo read_image_info(const std::filesystem::path& path);
 
 // Read any format OpenImageIO knows, as float, from a regular file (io/
 // input_file.h). Throws bad_input naming the file.

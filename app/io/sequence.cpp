@@ -131,7 +131,7 @@ fs::path FramePattern::path(int frame) const {
   return fs::path(prefix_ + num + suffix_);
 }
 
-bool frame_is_complete(const fs::path& path, int width, int height, std::string* why) {
+bool frame_is_complete(const fs::path& path, int width, int height, std::string* why, std::string_view fingerprint) {
   // OpenImageIO's messages can span lines; the log keeps one line per event.
   const auto no = [&](std::string reason) {
     if (why) *why = reason.substr(0, reason.find('\n'));
@@ -154,6 +154,12 @@ bool frame_is_complete(const fs::path& path, int width, int height, std::string*
   if (spec.width != width || spec.height != height)
     return no(std::to_string(width) + "x" + std::to_string(height) + " expected, file is " +
               std::to_string(spec.width) + "x" + std::to_string(spec.height));
+  if (!fingerprint.empty()) {
+    const std::string has = fingerprint_from(spec.get_string_attribute(kFingerprintKey),
+                                             spec.get_string_attribute("ImageDescription"));
+    if (has.empty()) return no(kNoFingerprint);
+    if (has != fingerprint) return no(kOtherFingerprint);
+  }
   // Decoding every pixel is what catches a file cut short by something
   // other than our atomic writer (a copy, a full disk); a few ms per frame.
   std::vector<unsigned char> pixels(spec.image_bytes());

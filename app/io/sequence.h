@@ -5,6 +5,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ms {
@@ -63,9 +64,15 @@ class FramePattern {
 bool has_frame_field(const std::string& text);
 
 // Does `path` hold a complete image of width x height? It must open, have
-// that size and decode to the last pixel. `why` (may be null) gets the
-// reason when not, e.g. "640x360 expected, file is 320x180".
-bool frame_is_complete(const std::filesystem::path& path, int width, int height, std::string* why = nullptr);
+// that size, decode to the last pixel and, when `fingerprint` is given,
+// carry that fingerprint (io/image_io.h): a frame made from other inputs or
+// settings is not this run's. `why` (may be null) gets the reason when not,
+// e.g. "640x360 expected, file is 320x180".
+bool frame_is_complete(const std::filesystem::path& path, int width, int height, std::string* why = nullptr,
+                       std::string_view fingerprint = {});
+// The two `why`s of a complete frame that is not this run's.
+inline constexpr const char* kNoFingerprint = "it has no marchstudio fingerprint";
+inline constexpr const char* kOtherFingerprint = "it was made from other inputs or settings (its fingerprint differs)";
 
 // Remove the temporaries that write_image leaves when its process is
 // killed (".<stem>.tmp<pid><ext>" beside the frame) for `frames` only, so

@@ -1,0 +1,39 @@
+#include "cli/fingerprint.h"
+
+#include "core/hash.h"
+#include "io/input_file.h"
+
+namespace ms {
+
+std::string job_fingerprint(const LoadedInput& in, const FrameParams& fp, const ShaderSource& post,
+                            const std::vector<std::string>& aovs, double fps) {
+  Hash128 h;
+  h.add("marchstudio 0.1.0 fingerprint 1");
+  h.add(read_input_file(in.path, "input file", {}, kMaxTextInput));
+  h.add(static_cast<std::int64_t>(in.passes.size()));
+  for (const PassSource& pass : in.passes) {
+    h.add(pass.name).add(pass.source.text).add(pass.output).add(static_cast<int>(pass.uniforms));
+    for (const GraphInput& g : pass.inputs) {
+      h.add(static_cast<int>(g.kind)).add(g.buffer).add(g.eight_bit).add(g.single_channel);
+      h.add(static_cast<int>(g.sampler.filter)).add(static_cast<int>(g.sampler.wrap));
+      h.add(g.sampler.vflip).add(g.sampler.srgb);
+      h.add(g.image != nullptr);
+      if (g.image) {
+        h.add(g.image->width).add(g.image->height);
+        h.add_bytes(g.image->pixels.data(), g.image->pixels.size() * sizeof(float));
+      }
+    }
+  }
+  h.add(post.text);
+  h.add(fp.width).add(fp.height).add(fp.spp).add(fp.exposure).add(fp.aovs).add(fp.fused_post);
+  for (const std::string& a : aovs) h.add(a);
+  if (in.shadertoy) h.add(fps);  // iTimeDelta and iFrameRate; a scene sees only each frame's time
+  for (float m : in.scene.shadertoy.mouse) h.add(m);
+  return h.hex();
+}
+
+std::string frame_fingerprint(const std::string& job, int frame, float time) {
+  return Hash128().add(job).add(frame).add(time).hex();
+}
+
+}  // namespace ms

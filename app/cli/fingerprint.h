@@ -1,0 +1,27 @@
+// What made an image, as a fingerprint written into every image `render`
+// writes (io/image_io.h) and checked when a sequence resumes, so a rerun
+// never keeps a frame made from other inputs (docs/animation.md#fingerprints).
+//
+//   const std::string job = job_fingerprint(in, fp, post_src, aov_names, fps);
+//   add_fingerprint(meta, frame_fingerprint(job, f, time));
+//
+// The job part hashes the input file's bytes, every pass's assembled shader
+// (the map, includes, defines, quality and specialization are in that text),
+// each texture's pixels and sampler, the post shader, the size, samples,
+// exposure, AOVs, frame rate and iMouse, and the program's version; a frame
+// adds its number and its time.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cli/input.h"
+#include "render/frame.h"
+#include "shader/preprocess.h"
+
+namespace ms {
+
+std::string job_fingerprint(const LoadedInput& in, const FrameParams& fp, const ShaderSource& post,
+                            const std::vector<std::string>& aovs, double fps);
+std::string frame_fingerprint(const std::string& job, int frame, float time);
+
+}  // namespace ms
