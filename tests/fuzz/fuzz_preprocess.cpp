@@ -46,6 +46,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   PreprocessOptions opts;
   opts.include_dirs = {ws.lib()};
   opts.roots = {ws.scene(), ws.lib()};
+  // The budgets scaled down (the release ones: 2^20 tokens, 8 MiB, depth
+  // 50 000), so that a macro bomb or a macro-made deep expression reaches
+  // its limit within the fuzzer's 10 s per input in the instrumented
+  // ASan + UBSan build (the full token budget takes about 30 s there, under
+  // 0.1 s in the release replay).
+  // The same code paths; the release values are tests/cli/test_attacks_*'s.
+  opts.limits.max_expanded_tokens = std::size_t{1} << 14;
+  opts.limits.max_text_bytes = std::size_t{256} << 10;
+  opts.limits.max_expression_depth = 2000;
   ShaderSource src;
   try {
     src = preprocess(parts[0], "root.frag", ws.scene(), opts);
