@@ -3,12 +3,14 @@
 //   int rc = ms::run_on_big_stack([&] { return run_cli(argc, argv); });
 //
 // Why: Mesa's GLSL compiler recurses once per level of an expression's
-// syntax tree (about 0.7 KB a level, measured in docs/reliability.md), so
+// syntax tree (426-686 bytes a level, measured by bisecting `ulimit -s`;
+// tests/cli/test_attacks_input.cpp), so
 // a 20,000-term sum overflowed the 8 MiB main-thread stack and killed the
 // process with SIGSEGV. A thread's stack size is set here, independent of
 // `ulimit -s`; the memory is reserved, not used, until a deep compile
-// touches it. shader/cpp_engine.h refuses expressions deeper than what
-// this stack holds with room to spare (kMaxExpressionDepth).
+// touches it. shader/macro_engine.h refuses expressions deeper than what
+// this stack holds with room to spare (max_expression_depth, 50,000 levels:
+// at most about 34 MiB of the 256 MiB).
 #pragma once
 #include <cstddef>
 #include <functional>

@@ -111,6 +111,8 @@ void write_image(const Image& image, const fs::path& path, const ImageMetadata& 
   if (by_name) file.written_by_name();
   const std::string err = ok ? "" : out->geterror();
   out.reset();
+  if (!ok && by_name)  // the writer's own check failed: the same words as AtomicFile's
+    fail_system("cannot write the file: " + err.substr(0, err.find('\n')) + "; nothing was written", path.string());
   if (!ok) fail_system("cannot write image: " + err, path.string());
   file.commit();
 }
