@@ -317,6 +317,10 @@ ShaderProject load_shadertoy_json(std::string_view text, const std::string& disp
     const size_t colon = what.rfind(": ");
     if (colon != std::string::npos) what = what.substr(colon + 2);
     fail_input("malformed JSON at column " + std::to_string(col) + ": " + what, display, line);
+  } catch (const json::exception& e) {  // a number past double's range (out_of_range.406): no position given
+    std::string what = e.what();
+    const size_t bracket = what.find("] ");
+    fail_input("malformed JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)), display);
   }
   ShaderProject p = Loader(text, display).load(root);
   check_project(p, display);
