@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <memory>
 #include <unistd.h>
 
 #include <climits>
@@ -70,6 +71,25 @@ class AtomicProxy final : public OIIO::Filesystem::IOProxy {
   AtomicFile& f_;
 };
 
+// An image file read by us (a FIFO or a device is refused) and opened by
+// OpenImageIO from memory. The members go in reverse order: the input
+// before the reader before the bytes it reads.
+struct OpenedImage {
+  std::unique_ptr<std::string> bytes;
+  std::unique_ptr<OIIO::Filesystem::IOMemReader> mem;
+  std::unique_ptr<OIIO::ImageInput> in;
+};
+
+OpenedImage open_image(const fs::path& path) {
+  OpenedImage o;
+  o.bytes = std::make_unique<std::string>(read_input_file(path, "image file", {}, kMaxImageInput));
+  o.mem = std::make_unique<OIIO::Filesystem::IOMemReader>(o.bytes->data(), o.bytes->size());
+  OIIO::ImageSpec config;
+  o.in = OIIO::ImageInput::open(path.string(), &config, o.mem.get());
+  if (!o.in) fail_input("cannot read image: " + OIIO::geterror(), path.string());
+  return o;
+}
+
 }  // namespace
 
 void write_image(const Image& image, const fs::path& path, const ImageMetadata& meta) {
@@ -133,11 +153,8 @@ std::string fingerprint_from(std::string_view attribute, std::string_view descri
 }
 
 ImageInfo read_image_info(const fs::path& path) {
-  std::string bytes = read_input_file(path, "image file", {}, kMaxImageInput);
-  OIIO::Filesystem::IOMemReader mem(bytes.data(), bytes.size());
-  OIIO::ImageSpec config;
-  auto in = OIIO::ImageInput::open(path.string(), &config, &mem);
-  if (!in) fail_input("cannot read image: " + OIIO::geterror(), path.string());
+  const OpenedImage opened = open_image(path);
+  OIIO::ImageInput* in = opened.in.get();
   const OIIO::ImageSpec& spec = in->spec();
   ImageInfo info;
   info.width = spec.width;
@@ -153,12 +170,8 @@ ImageInfo read_image_info(const fs::path& path) {
 }
 
 Image read_image(const fs::path& path) {
-  // Read by us (a FIFO or a device is refused), decoded from memory.
-  std::string bytes = read_input_file(path, "image file", {}, kMaxImageInput);
-  OIIO::Filesystem::IOMemReader mem(bytes.data(), bytes.size());
-  OIIO::ImageSpec config;
-  auto in = OIIO::ImageInput::open(path.string(), &config, &mem);
-  if (!in) fail_input("cannot read image: " + OIIO::geterror(), path.string());
+  const OpenedImage opened = open_image(path);
+  OIIO::ImageInput* in = opened.in.get();
   const OIIO::ImageSpec& spec = in->spec();
   Image img;
   img.width = spec.width;
