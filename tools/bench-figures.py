@@ -19,6 +19,8 @@ import subprocess
 import sys
 import tempfile
 
+from doc_markers import put  # tools/doc_markers.py: this directory is on sys.path
+
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'))
 BIN = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, 'build', 'marchstudio'))
 ENV = dict(os.environ, LIBGL_ALWAYS_SOFTWARE='1')
@@ -33,13 +35,6 @@ def bench(*args, json_out=True):
 
 def pct(x):
     return '0' if x == 0 else '%.3f%%' % (100 * x)
-
-
-def put(doc, name, lines):
-    text = open(doc).read()
-    b, e = '<!-- %s:begin -->' % name, '<!-- %s:end -->' % name
-    i, j = text.index(b), text.index(e) + len(e)
-    open(doc, 'w').write(text[:i] + '\n'.join([b] + lines + [e]) + text[j:])
 
 
 def main():

@@ -29,6 +29,8 @@ import sys
 import tempfile
 import time
 
+from doc_markers import put  # tools/doc_markers.py: this directory is on sys.path
+
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'))
 BIN = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, 'build', 'marchstudio'))
 SIZES = ['160x90', '320x180', '640x360', '1280x720']
@@ -123,13 +125,6 @@ def panel(work):
     if len(win) != 1:
         raise SystemExit('viewer-figures: expected one window screenshot, found %s' % os.listdir(shots))
     shutil.copy(os.path.join(shots, win[0]), os.path.join(ROOT, 'docs', 'images', 'viewer', 'panel.png'))
-
-
-def put(doc, name, lines):
-    text = open(doc).read()
-    b, e = '<!-- %s:begin -->' % name, '<!-- %s:end -->' % name
-    i, j = text.index(b), text.index(e) + len(e)
-    open(doc, 'w').write(text[:i] + '\n'.join([b] + lines + [e]) + text[j:])
 
 
 def main():
