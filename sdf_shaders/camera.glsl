@@ -28,7 +28,7 @@ vec3 normalizeDiff(vec3 v, vec3 dv) {
 }
 
 // Primary ray through the sample `pix` (window coordinates, pixels; e.g.
-// floor(gl_FragCoord.xy) + uJitter), pinhole look-at camera from the
+// floor(gl_FragCoord.xy) + uPixelOffset + uJitter), pinhole look-at camera from the
 // uniforms, with differentials for a one-pixel step.
 Ray cameraRay(vec2 pix) {
   mat3 B = uCamBasis;

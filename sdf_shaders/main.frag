@@ -213,7 +213,8 @@ vec3 debugViewColor(int primarySteps) {
 
 void main() {
   int primarySteps;  // kept for the step-count AOV
-  vec3 c = renderSample(floor(gl_FragCoord.xy) + uJitter, primarySteps);
+  // The pixel in the whole image: a tile's framebuffer starts at its offset.
+  vec3 c = renderSample(floor(gl_FragCoord.xy) + uPixelOffset + uJitter, primarySteps);
   // Last line of defence: the pipeline guards its divisions, but a user map()
   // may not; a NaN would poison the whole accumulation buffer. The sample is
   // zeroed but flagged, so the host's NaN/Inf guard (render/bench --strict)

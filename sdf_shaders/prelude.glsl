@@ -34,6 +34,7 @@
 // ---- uniforms (exactly as in notes/glsl_contract.md) ----
 uniform vec2  uResolution;   // full image size in pixels
 uniform vec2  uJitter;       // sub-pixel sample position in [0,1)^2
+uniform vec2  uPixelOffset;  // a tile's lower-left pixel in the whole image (render/tiled_still.h); 0 untiled
 uniform float uTime;         // scene seconds
 uniform int   uFrame;
 uniform vec3  uCamPos;

@@ -78,14 +78,18 @@ static std::vector<float> read_attachment(GLuint fbo, int i, int w, int h) {
   return std::move(img.pixels);
 }
 
+int gl_max_width(const GlInfo& info) {
+  return info.max_texture_size > 0 ? std::min(info.max_viewport[0], info.max_texture_size) : info.max_viewport[0];
+}
+
+int gl_max_height(const GlInfo& info) {
+  return info.max_texture_size > 0 ? std::min(info.max_viewport[1], info.max_texture_size) : info.max_viewport[1];
+}
+
 void check_frame_size(const GlInfo& info, int width, int height, int targets) {
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   if (width < 1 || height < 1) fail_input("image size " + size + " must be at least 1x1", {}, 0, "--size");
-  int max_w = info.max_viewport[0], max_h = info.max_viewport[1];
-  if (info.max_texture_size > 0) {
-    max_w = std::min(max_w, info.max_texture_size);
-    max_h = std::min(max_h, info.max_texture_size);
-  }
+  const int max_w = gl_max_width(info), max_h = gl_max_height(info);
   if (width > max_w || height > max_h)
     fail_input("image size " + size + " exceeds this GL's limit of " + std::to_string(max_w) + "x" +
                    std::to_string(max_h),
@@ -132,6 +136,9 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   }
   glUseProgram(main.id());
   set_uniforms(main);
+  // Integers, so floor(gl_FragCoord.xy) + uPixelOffset is exactly the pixel
+  // an untiled draw sees (floats hold every integer below 2^24).
+  glUniform2f(main.loc("uPixelOffset"), static_cast<float>(p.offset_x), static_cast<float>(p.offset_y));
   if (p.fused_post) glUniform1f(main.loc("uExposure"), p.exposure);
   const GLint jitter = main.loc("uJitter");
   // Tile by tile (scissor; the viewport stays whole, so gl_FragCoord and the

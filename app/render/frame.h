@@ -29,6 +29,15 @@ struct FrameParams {
   bool fused_post = false;
   // Largest square one draw covers (render/tiles.h); <= 0: one draw per sample.
   int tile_size = kTileSize;
+  // One tile of a larger image (render/tiled_still.h): width x height is
+  // then the tile's framebuffer, image_width x image_height the image the
+  // shader sees (uResolution / iResolution) and offset_x, offset_y the
+  // tile's lower-left pixel in it (uPixelOffset, GL's rows: bottom first).
+  // 0: the frame is the whole image.
+  int image_width = 0, image_height = 0;
+  int offset_x = 0, offset_y = 0;
+  int resolution_width() const { return image_width > 0 ? image_width : width; }
+  int resolution_height() const { return image_height > 0 ? image_height : height; }
   // When set, every draw is waited for (glFinish) and the deadline checked
   // after it: draw() throws the --timeout error (Exit::system) once it passed.
   const Deadline* deadline = nullptr;
@@ -41,6 +50,10 @@ using UniformFn = std::function<void(const Program&)>;
 // limits, or the frame would exceed the memory budget (render/tiles.h).
 // `targets`: how many RGBA32F buffers the frame needs (2 plain, 5 with AOVs).
 void check_frame_size(const GlInfo& info, int width, int height, int targets = 2);
+// The largest framebuffer this GL makes: GL_MAX_VIEWPORT_DIMS within
+// GL_MAX_TEXTURE_SIZE. Past it a still is drawn in tiles (render/tiled_still.h).
+int gl_max_width(const GlInfo& info);
+int gl_max_height(const GlInfo& info);
 
 struct RenderTarget;  // an RGBA32F texture with its framebuffer (frame.cpp)
 

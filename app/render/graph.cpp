@@ -308,10 +308,10 @@ void PassGraph::draw(FrameRenderer& renderer, const Program& post, const FrameIn
     float res[4][3];
     bind_inputs(last, p.width, p.height, res);
     if (frame_pass.uniforms == PassUniforms::shadertoy) {
-      set_shadertoy_uniforms(prog, p.width, p.height, shadertoy_inputs(in, res));
+      set_shadertoy_uniforms(prog, p.resolution_width(), p.resolution_height(), shadertoy_inputs(in, res));
     } else {
       if (!in.scene) fail_system("internal: a scene pass without its scene");
-      set_scene_uniforms(prog, *in.scene, p.width, p.height, in.time, in.frame);
+      set_scene_uniforms(prog, *in.scene, p.resolution_width(), p.resolution_height(), in.time, in.frame);
     }
     if (in.extra) (*in.extra)(prog);
   }, post, p);

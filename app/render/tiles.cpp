@@ -50,13 +50,47 @@ double frame_memory_budget() {
   return budget;
 }
 
-void check_frame_memory(const FrameMemory& m, int width, int height) {
+void check_frame_memory(const FrameMemory& m, int width, int height, const std::string& also) {
   const double budget = frame_memory_budget();
   if (m.total() <= budget) return;
   fail_input("image size " + std::to_string(width) + "x" + std::to_string(height) + " needs " + format_bytes(m.total()) +
                  " (" + format_bytes(m.gpu_bytes) + " of GPU buffers, " + format_bytes(m.host_bytes) +
-                 " of host copies), over the " + format_bytes(budget) + " memory budget",
+                 " of host copies), over the " + format_bytes(budget) + " memory budget" +
+                 (also.empty() ? "" : ", and " + also),
              {}, 0, "--size", m.aovs ? "render it smaller, or without --aov" : "render it smaller");
+}
+
+FrameMemory tiled_memory(int width, const StillTiling& t, int gpu_targets, bool aovs) {
+  return frame_memory(width, t.band_height, gpu_targets, aovs);
+}
+
+namespace {
+
+int even_at_most(int v) { return std::max(2, v - v % 2); }
+
+}  // namespace
+
+StillTiling plan_still_tiling(int width, int height, int max_w, int max_h, int gpu_targets, bool aovs,
+                              int forced_side) {
+  const bool fits = width <= max_w && height <= max_h &&
+                    frame_memory(width, height, gpu_targets, aovs).total() <= frame_memory_budget();
+  if (fits && forced_side <= 0) return {};
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  if (width > kMaxTiledSide || height > kMaxTiledSide)
+    fail_input("image size " + size + " is larger than " + std::to_string(kMaxTiledSide) + " pixels a side", {}, 0,
+               "--size", "the largest tiled still is " + std::to_string(kMaxTiledSide) + "x" +
+                             std::to_string(kMaxTiledSide));
+  constexpr int kMaxBandRows = 512, kMaxTileWidth = 4096;
+  StillTiling t;
+  // Equal tiles across (an even width each, the last one the rest).
+  const int cap = even_at_most(std::min({max_w, kMaxTileWidth, forced_side > 0 ? forced_side : kMaxTileWidth}));
+  const int across = (width + cap - 1) / cap;
+  t.tile_width = std::min(cap, even_at_most((width + across - 1) / across + 1));
+  const double row_bytes = frame_memory(width, 1, gpu_targets, aovs).total();
+  const int rows = static_cast<int>(std::min(1e9, 0.25 * frame_memory_budget() / row_bytes));
+  t.band_height = even_at_most(std::min({rows, kMaxBandRows, max_h, forced_side > 0 ? forced_side : kMaxBandRows}));
+  check_frame_memory(tiled_memory(width, t, gpu_targets, aovs), width, height);
+  return t;
 }
 
 std::string format_bytes(double bytes) {

@@ -35,7 +35,12 @@ std::string wrapper_head(const ProjectPass& pass) {
   for (size_t c = 0; c < pass.inputs.size(); ++c)
     s += "uniform sampler2D iChannel" + std::to_string(c) + ";\n";  // 2D: buffers, textures, the keyboard
   s += "uniform vec2      uJitter;               // marchstudio: sub-pixel sample position\n"
-       "layout(location = 0) out vec4 outColor;\n";
+       "uniform vec2      uPixelOffset;          // marchstudio: a tile's lower-left pixel in the image\n"
+       "layout(location = 0) out vec4 outColor;\n"
+       // gl_FragCoord in the whole image, also in a tile's framebuffer
+       // (render/tiled_still.h): main() sets it before mainImage runs.
+       "vec4 msFragCoord;\n"
+       "#define gl_FragCoord msFragCoord\n";
   return s;
 }
 
@@ -45,10 +50,12 @@ std::string wrapper_head(const ProjectPass& pass) {
 // for the host's NaN/Inf count (--strict); the post pass and the host
 // restore alpha 1.
 const char* image_main() {
-  return "float msUnorm(float v) { return isnan(v) ? 0.0 : isinf(v) ? (v > 0.0 ? 1.0 : 0.0) : v; }\n"
+  return "#undef gl_FragCoord\n"
+         "float msUnorm(float v) { return isnan(v) ? 0.0 : isinf(v) ? (v > 0.0 ? 1.0 : 0.0) : v; }\n"
          "void main() {\n"
          "  vec4 c = vec4(0.0, 0.0, 0.0, 1.0);\n"
-         "  mainImage(c, floor(gl_FragCoord.xy) + uJitter);\n"
+         "  msFragCoord = vec4(gl_FragCoord.xy + uPixelOffset, gl_FragCoord.zw);\n"
+         "  mainImage(c, floor(gl_FragCoord.xy) + uPixelOffset + uJitter);\n"
          "  bool bad = any(isnan(c.rgb)) || any(isinf(c.rgb));\n"
          "  outColor = vec4(msUnorm(c.r), msUnorm(c.g), msUnorm(c.b), bad ? -4096.0 : 1.0);\n"
          "}\n";
@@ -57,8 +64,10 @@ const char* image_main() {
 // A buffer pass: the whole vec4 into the RGBA32F buffer, as it is (a NaN
 // stays a NaN there, as on Shadertoy), at pixel centres.
 const char* buffer_main() {
-  return "void main() {\n"
+  return "#undef gl_FragCoord\n"
+         "void main() {\n"
          "  vec4 c = vec4(0.0, 0.0, 0.0, 1.0);\n"
+         "  msFragCoord = gl_FragCoord;\n"
          "  mainImage(c, gl_FragCoord.xy);\n"
          "  outColor = c;\n"
          "}\n";

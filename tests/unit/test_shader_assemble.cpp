@@ -167,7 +167,7 @@ TEST(ShaderShadertoy, WrapperDeclaresUniformsAndCompiles) {
                         "uniform vec3      iChannelResolution[4];", "uniform sampler2D iChannel3;",
                         "uniform vec2      uJitter;"})
     EXPECT_NE(s.text.find(u), std::string::npos) << u;
-  EXPECT_NE(s.text.find("mainImage(c, floor(gl_FragCoord.xy) + uJitter);"), std::string::npos);
+  EXPECT_NE(s.text.find("mainImage(c, floor(gl_FragCoord.xy) + uPixelOffset + uJitter);"), std::string::npos);
   // ok.glsl includes lib/palette.glsl (next to it) and primitives.glsl (shader dir).
   EXPECT_EQ(s.dependencies.size(), 3u);
   if (!test::have_glslang()) GTEST_SKIP() << "glslangValidator not on PATH";
