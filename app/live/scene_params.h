@@ -1,34 +1,15 @@
-// A scene's own uniforms, shown as sliders in the viewer's panel. A map file
-// (or any file it includes, or a Shadertoy shader) opts a uniform in with a
-// range in a comment on its declaration line:
-//
-//   uniform float uTwist = 0.5;                // range(0, 2)
-//   uniform vec3  uTint  = vec3(1.0, 0.8, 0.6); // color
-//   uniform int   uCount = 4;                  // range(1, 16)
-//
-// The initializer is GLSL's own, so `render` (which sets none of these) sees
-// the same default. Types: float, int, vec2, vec3, vec4. No GL here.
+// A scene's own uniforms, shown as sliders in the viewer's panel: parsed by
+// shader/scene_params.h (where --uniform also sets their values); here what
+// only the viewer needs.
 #pragma once
-#include <array>
-#include <string>
-#include <string_view>
 #include <vector>
+
+#include "shader/scene_params.h"
 
 namespace ms::live {
 
-struct SceneParam {
-  std::string name;
-  std::string type;        // "float", "int", "vec2", "vec3", "vec4"
-  int components = 1;
-  bool is_int = false;
-  bool color = false;      // `// color`: a vec3 colour picker, range [0, 1]
-  float lo = 0.0f, hi = 1.0f;
-  std::array<float, 4> initial{};  // the initializer (lo when there is none)
-  std::array<float, 4> value{};    // what the panel set
-};
-
-// Every annotated uniform declaration in `glsl`, in order, each name once.
-std::vector<SceneParam> parse_scene_params(std::string_view glsl);
+using ms::parse_scene_params;
+using ms::SceneParam;
 
 // After a reload: a parameter whose type and initializer did not change keeps
 // the value the user set; an edited initializer wins (the file changed).

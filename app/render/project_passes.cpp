@@ -113,6 +113,17 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& p, const Shadertoy
     ps.source = assemble_shadertoy_pass(p, i, opts, scene_file);
     out.push_back(std::move(ps));
   }
+  // --uniform: a name may be declared in any pass (each pass that declares it gets the value).
+  if (!opts.uniforms.empty()) {
+    std::vector<bool> found(opts.uniforms.size(), false);
+    std::vector<SceneParam> declared;
+    for (PassSource& ps : out) {
+      const std::vector<bool> here = set_uniform_defaults(ps.source.text, opts.uniforms);
+      for (size_t i = 0; i < found.size(); ++i) found[i] = found[i] || here[i];
+      for (SceneParam& d : parse_scene_params(ps.source.text)) declared.push_back(std::move(d));
+    }
+    check_uniforms_found(opts.uniforms, found, declared);
+  }
   return out;
 }
 

@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "scene/animation.h"
 #include "scene/load_geometry.h"
+#include "scene/overrides.h"
 #include "scene/quality.h"
 #include "scene/quality_fields.h"
 #include "scene/suggest.h"
@@ -330,11 +331,8 @@ void check_shadertoy_wrapper(const Reader& r, const toml::table& root) {
            "'render.tonemap' has no effect on a Shadertoy shader", "its output is display-referred already");
 }
 
-}  // namespace
-
-Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
-  const Reader r(display_path.string());
-  const toml::table root = parse_toml(toml_text, r);
+// Every table and key of a parsed scene file, validated, into a Scene.
+Scene read_scene(const Reader& r, const toml::table& root, const fs::path& display_path) {
   const Schema schema;
   r.check_keys(root, {}, schema.top, [&](std::string_view key) { return schema.elsewhere({}, key); });
 
@@ -386,8 +384,23 @@ Scene parse_scene(std::string_view toml_text, const fs::path& display_path) {
   return scene;
 }
 
-Scene load_scene(const fs::path& toml_path) {
-  return parse_scene(read_input_file(toml_path, "scene file"), toml_path);
+}  // namespace
+
+Scene parse_scene(std::string_view toml_text, const fs::path& display_path, const SceneOverrides& overrides) {
+  const Reader r(display_path.string());
+  toml::table root = parse_toml(toml_text, r);
+  // Before validation, so an override meets every check the file does.
+  const std::vector<std::string> keys = apply_overrides(root, overrides);
+  try {
+    return read_scene(r, root, display_path);
+  } catch (const Error& e) {
+    if (overrides.empty()) throw;
+    throw Error(blame_override(e.info(), overrides, keys));
+  }
+}
+
+Scene load_scene(const fs::path& toml_path, const SceneOverrides& overrides) {
+  return parse_scene(read_input_file(toml_path, "scene file"), toml_path, overrides);
 }
 
 }  // namespace ms

@@ -197,6 +197,8 @@ ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts) {
   if (find_definition(strip_comments(src.text), "map", "vec2") == std::string::npos)
     fail_input("the map file defines no map() function", display_path(scene.file), 0, "scene.map",
                "define vec2 map(vec3 p), returning the distance and a material id");
+  if (!opts.uniforms.empty())
+    check_uniforms_found(opts.uniforms, set_uniform_defaults(src.text, opts.uniforms), parse_scene_params(src.text));
   return src;
 }
 

@@ -10,6 +10,7 @@
 #include "scene/features.h"
 #include "scene/scene.h"
 #include "shader/preprocess.h"
+#include "shader/scene_params.h"
 #include "shader/specialize.h"
 
 namespace ms {
@@ -27,6 +28,10 @@ struct AssembleOptions {
   // render and bench fold, view keeps the panel's values as uniforms,
   // --no-specialize (and this default) builds the generic shader.
   Specialization specialize = Specialization::generic;
+  // --uniform NAME=VALUE: each becomes the initializer of the scene's ranged
+  // uniform NAME (shader/scene_params.h), in the scene pass or in whichever
+  // Shadertoy pass declares it; a name no pass declares is an error.
+  std::vector<UniformValue> uniforms = {};  // (an initializer: no -Wmissing-field-initializers for AssembleOptions{a, b, c})
 };
 
 // The directories includes of a scene whose file is `scene_file` may read:
