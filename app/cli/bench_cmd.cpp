@@ -26,6 +26,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
   CLI::App* cmd = app.add_subcommand("bench", "Time a scene and count its steps per pixel (docs/bench.md)");
   cmd->add_option("scene", a.input, "Scene .toml, or a Shadertoy shader (.glsl, .json): its passes are timed")->required();
   add_shadertoy_flags(cmd, a.shadertoy);
+  add_override_flags(cmd, a.overrides);
   cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
   cmd->add_option("--frames", a.frames, "Timed frames (default 30)");
   cmd->add_option("--warmup", a.warmup, "Untimed frames before them (default 3)");
@@ -70,7 +71,8 @@ int run_bench_command(const BenchArgs& a) {
   const Backend backend = parse_backend(a.backend);
   AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}, parse_allow_include(a.allow_include)};
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  LoadedInput in = load_input_scene(a.input, a.disable, a.preset);
+  opts.uniforms = a.overrides.uniforms;
+  LoadedInput in = load_input_scene(a.input, a.disable, a.preset, a.overrides.set);
   apply_shadertoy_flags(in, a.shadertoy);
   // The counting pass: the same scene with the AOV counters compiled in (a
   // Shadertoy shader has no step counters: its passes are timed only).

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cli/input.h"
+#include "cli/override_flags.h"
 
 namespace CLI {
 class App;
@@ -28,6 +29,7 @@ struct BenchArgs {
   bool strict = false;     // any NaN/Inf pixel in the counting pass is an error (exit 1)
   std::vector<std::string> allow_include;  // more directories #include may read
   ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
+  Overrides overrides;       // --set, --uniform (cli/override_flags.h)
 };
 
 CLI::App* add_bench_command(CLI::App& app, BenchArgs& args);

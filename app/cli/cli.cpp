@@ -66,6 +66,9 @@ int run_cli(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "marchstudio: %s (see 'marchstudio --help')\n", e.what());
     return static_cast<int>(Exit::bad_input);
+  } catch (const Error& e) {  // a flag's value parsed as it is read (--set, --mouse)
+    std::fprintf(stderr, "marchstudio: %s\n", e.what());
+    return static_cast<int>(e.code());
   }
 
   try {

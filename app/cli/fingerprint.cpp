@@ -1,5 +1,7 @@
 #include "cli/fingerprint.h"
 
+#include <sstream>
+
 #include "core/hash.h"
 #include "io/input_file.h"
 
@@ -10,6 +12,13 @@ std::string job_fingerprint(const LoadedInput& in, const FrameParams& fp, const 
   Hash128 h;
   h.add("marchstudio 0.1.0 fingerprint 1");
   h.add(read_input_file(in.path, "input file", {}, kMaxTextInput));
+  // --set changes the scene without changing the file (camera and sky are
+  // uniforms, not shader text): each override's key and value.
+  for (const SceneOverride& o : in.overrides) {
+    std::ostringstream value;
+    value << o.value;
+    h.add(o.flag).add(value.str());
+  }
   h.add(static_cast<std::int64_t>(in.passes.size()));
   for (const PassSource& pass : in.passes) {
     h.add(pass.name).add(pass.source.text).add(pass.output).add(static_cast<int>(pass.uniforms));

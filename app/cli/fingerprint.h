@@ -5,11 +5,12 @@
 //   const std::string job = job_fingerprint(in, fp, post_src, aov_names, fps);
 //   add_fingerprint(meta, frame_fingerprint(job, f, time));
 //
-// The job part hashes the input file's bytes, every pass's assembled shader
-// (the map, includes, defines, quality and specialization are in that text),
-// each texture's pixels and sampler, the post shader, the size, samples,
-// exposure, AOVs, frame rate and iMouse, and the program's version; a frame
-// adds its number and its time.
+// The job part hashes the input file's bytes and its --set overrides,
+// every pass's assembled shader (the map, includes, defines, --uniform
+// values, quality and specialization are in that text), each texture's
+// pixels and sampler, the post shader, the size, samples, exposure, AOVs,
+// frame rate and iMouse, and the program's version; a frame adds its
+// number and its time.
 #pragma once
 #include <string>
 #include <vector>

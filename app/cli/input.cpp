@@ -70,13 +70,17 @@ std::vector<fs::path> parse_allow_include(const std::vector<std::string>& flags)
 }
 
 LoadedInput load_input_scene(const fs::path& input, const std::vector<std::string>& disable,
-                             const std::string& preset) {
+                             const std::string& preset, const SceneOverrides& overrides) {
   check_input_file(input, input.extension() == ".toml" ? "scene file" : "input file");
   LoadedInput in;
   in.path = input;
+  in.overrides = overrides;
   if (input.extension() == ".toml") {
-    in.scene = load_scene(input);
+    in.scene = load_scene(input, overrides);
   } else {
+    if (!overrides.empty())
+      fail_input("--set needs a scene .toml: " + input.filename().string() + " has no scene keys", {}, 0,
+                 overrides.front().flag, "wrap the shader in a scene file, or use --size, --spp and --time");
     // Shadertoy's output is display-referred: no tone map, no encode.
     in.scene.file = input;
     in.scene.name = input.stem().string();
@@ -184,8 +188,8 @@ std::vector<float> parse_mouse_flag(const std::string& text) {
 }
 
 LoadedInput load_input(const fs::path& input, const std::vector<std::string>& disable, const AssembleOptions& opts,
-                       const std::string& preset) {
-  LoadedInput in = load_input_scene(input, disable, preset);
+                       const std::string& preset, const SceneOverrides& overrides) {
+  LoadedInput in = load_input_scene(input, disable, preset, overrides);
   assemble_input(in, opts);
   return in;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/graph.h"
+#include "scene/overrides.h"
 #include "scene/scene.h"
 #include "shader/assemble.h"
 #include "shader/preprocess.h"
@@ -26,6 +27,7 @@ struct LoadedInput {
   ShaderProject project;            // shadertoy: what its passes are (assemble_input)
   std::vector<PassSource> passes;   // assembled: a scene's one pass, or the buffers then the Image
   std::vector<std::string> warnings;  // for the subcommand to print (missing media stood in for, ...)
+  SceneOverrides overrides;  // --set, applied to the scene file (the fingerprint hashes them)
 
   // The pass that draws the frame (the scene's, or the Image pass).
   const ShaderSource& main() const { return passes.back().source; }
@@ -73,14 +75,17 @@ std::vector<std::filesystem::path> parse_allow_include(const std::vector<std::st
 // `disable`: effects switched off (shadows, reflections, ao, checker-filter).
 // `preset`: a quality preset replacing the scene file's (scene/quality.h);
 // empty keeps the file's. The file's explicit [quality] keys still apply.
+// `overrides`: --set (cli/override_flags.h), a .toml scene only; --uniform
+// values travel in opts.uniforms.
 LoadedInput load_input(const std::filesystem::path& input, const std::vector<std::string>& disable,
-                       const AssembleOptions& opts, const std::string& preset = {});
+                       const AssembleOptions& opts, const std::string& preset = {},
+                       const SceneOverrides& overrides = {});
 
 // load_input() in two steps, for callers whose shader depends on the scene
 // (fuse_post) or who apply flags to it: the scene alone (no passes), then
 // its passes (for a Shadertoy input: the project read, media found).
 LoadedInput load_input_scene(const std::filesystem::path& input, const std::vector<std::string>& disable,
-                             const std::string& preset = {});
+                             const std::string& preset = {}, const SceneOverrides& overrides = {});
 void assemble_input(LoadedInput& in, const AssembleOptions& opts);
 
 // Frames of one sample without AOVs need no accumulation buffer and no post

@@ -61,6 +61,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   cmd->add_option("--frames", a.frames, "Render frames A..B (both included) to -o PATTERN, e.g. out/f_%04d.png")
       ->check(not_empty());
   add_shadertoy_flags(cmd, a.shadertoy);
+  add_override_flags(cmd, a.overrides);
   cmd->add_option("--fps", a.fps,
                   "Frames per second: frame f of --frames is at time f / fps (default 24; a Shadertoy shader's 60), "
                   "and a still of a shader with buffers replays round(time x fps) frames")
@@ -122,10 +123,11 @@ static int run_render_watch(const RenderArgs& a) {
   live::WatchRenderOptions w;
   w.render = [once] { run_render(once); };
   w.files = [&a] {
-    const AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
-                               parse_allow_include(a.allow_include)};
+    AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
+                         parse_allow_include(a.allow_include)};
+    opts.uniforms = a.overrides.uniforms;
     std::vector<fs::path> files = {a.input};
-    for (const PassSource& pass : load_input(a.input, a.disable, opts, a.preset).passes)
+    for (const PassSource& pass : load_input(a.input, a.disable, opts, a.preset, a.overrides.set).passes)
       for (const fs::path& p : pass.source.dependencies) files.push_back(p);
     return files;
   };
@@ -166,7 +168,8 @@ int run_render(const RenderArgs& a) {
                        parse_allow_include(a.allow_include)};
   if (aovs) for (const auto& d : aov_defines()) opts.defines.push_back(d);
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  LoadedInput in = load_input_scene(input, a.disable, a.preset);
+  opts.uniforms = a.overrides.uniforms;
+  LoadedInput in = load_input_scene(input, a.disable, a.preset, a.overrides.set);
   if (aovs && in.shadertoy)
     fail_input("--aov needs a scene: a Shadertoy shader has no AOV outputs", input.string(), 0, "--aov");
   apply_shadertoy_flags(in, a.shadertoy);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cli/input.h"
+#include "cli/override_flags.h"
 #include "render/tiles.h"
 
 namespace CLI {
@@ -45,6 +46,7 @@ struct RenderArgs {
   double timeout = 0.0;      // seconds per image (each frame of --frames); 0: none (core/deadline.h)
   int tile_size = kTileSize; // hidden --tile-size: largest square per draw (render/tiles.h); 0: whole frame
   ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
+  Overrides overrides;       // --set, --uniform (cli/override_flags.h)
 };
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args);

@@ -162,7 +162,8 @@ int run_sequence(const RenderArgs& a) {
     for (const auto& d : aov_defines()) opts.defines.push_back(d);
   // Animated values stay uniforms in a folded shader: one program serves every frame.
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  LoadedInput in = load_input_scene(a.input, a.disable, a.preset);
+  opts.uniforms = a.overrides.uniforms;
+  LoadedInput in = load_input_scene(a.input, a.disable, a.preset, a.overrides.set);
   if (aovs && in.shadertoy) fail_input("--aov needs a scene, not a Shadertoy shader", a.input, 0, "--aov");
   apply_shadertoy_flags(in, a.shadertoy);
   if (in.shadertoy && !a.fps_set) plan.fps = in.scene.shadertoy.fps;  // Shadertoy runs at 60

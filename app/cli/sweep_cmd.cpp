@@ -54,6 +54,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   cmd->add_flag("-q,--quiet", a.quiet, "No progress lines on stderr");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Measure the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
+  add_override_flags(cmd, a.overrides);
   return cmd;
 }
 
@@ -86,6 +87,7 @@ int run_sweep_command(const SweepArgs& a) {
   AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}, parse_allow_include(a.allow_include)};
   // The shader render and bench build: specialized to the scene (and each row's quality).
   opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
+  opts.uniforms = a.overrides.uniforms;
   SweepSettings s;
   const ImageSize size = parse_size_flag(a.size);
   s.width = size.width;
@@ -102,7 +104,7 @@ int run_sweep_command(const SweepArgs& a) {
   s.ref_spp = a.ref_spp;
   s.grid = parse_sweep_grid(a.grid);
   if (a.time_by != "auto") s.clock = parse_sweep_clock(a.time_by);
-  const LoadedInput in = load_input(a.input, {}, opts);
+  const LoadedInput in = load_input(a.input, {}, opts, {}, a.overrides.set);
   if (in.shadertoy)
     fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
                "wrap the map in a scene .toml");

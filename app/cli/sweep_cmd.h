@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/override_flags.h"
+
 namespace CLI {
 class App;
 }
@@ -28,6 +30,7 @@ struct SweepArgs {
   std::vector<std::string> allow_include;
   bool quiet = false;
   bool no_specialize = false;       // time the generic shader, as bench --no-specialize
+  Overrides overrides;              // --set, --uniform (cli/override_flags.h)
 };
 
 CLI::App* add_sweep_command(CLI::App& app, SweepArgs& args);

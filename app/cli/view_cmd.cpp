@@ -45,6 +45,7 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
                 "Build the generic shader: every feature compiled (docs/specialization.md)");
   cmd->add_option("--allow-include", a.allow_include,
                   "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
+  add_override_flags(cmd, a.overrides);
   return cmd;
 }
 
@@ -55,20 +56,33 @@ int run_view(const ViewArgs& a) {
                                parse_allow_include(a.allow_include)};
   // Specialized, but every value the panel can drag stays a uniform.
   o.assemble.specialize = a.no_specialize ? Specialization::generic : Specialization::uniforms;
+  // Made the initializers at every build: the panel's sliders start there.
+  o.assemble.uniforms = a.overrides.uniforms;
   const fs::path input = a.input;
   const AssembleOptions opts = o.assemble;
+  const SceneOverrides set = a.overrides.set;
   // A .toml is only parsed here (the viewer assembles itself, and shows an
   // include error in the window instead of exiting); a bare Shadertoy file
   // goes through the same loader as `render`.
-  o.load = [input, opts]() -> Scene {
+  // --set is applied to every read of the file: a save keeps the overrides.
+  o.load = [input, opts, set]() -> Scene {
     check_input_file(input, input.extension() == ".toml" ? "scene file" : "input file");
     if (input.extension() == ".toml") {
-      Scene s = load_scene(input);
+      Scene s = load_scene(input, set);
       if (!s.shadertoy_file.empty() || s.passes) request_zero_initialised_locals();  // as WebGL
       return s;
     }
-    return load_input(input, {}, opts).scene;
+    return load_input(input, {}, opts, {}, set).scene;
   };
+  // A bad --uniform is a bad flag: exit 2 now, not an error in the window.
+  // (Other assembly errors are the window's to show, and fixed by a save.)
+  if (!opts.uniforms.empty()) {
+    try {
+      load_input(input, {}, opts, {}, set);
+    } catch (const Error& e) {
+      if (e.info().key.rfind("--uniform", 0) == 0) throw;
+    }
+  }
   if (!a.size.empty()) {
     const ImageSize size = parse_size_flag(a.size, "--size");
     o.width = size.width;

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/override_flags.h"
+
 namespace CLI {
 class App;
 }
@@ -29,6 +31,7 @@ struct ViewArgs {
   bool no_panel = false;
   bool no_specialize = false;  // the generic shader, not one specialized to the scene
   std::vector<std::string> allow_include;  // more directories #include may read
+  Overrides overrides;       // --set, --uniform: applied again at every reload
 };
 
 CLI::App* add_view_command(CLI::App& app, ViewArgs& args);
