@@ -87,15 +87,23 @@ TEST(SetOverride, RepeatedIndexedAndCreatedKeysEqualAnEditedFile) {
   expect_same_pixels(from_flag, render(copy, dir / "file.png"));
 }
 
-TEST(SetOverride, ChangesTheFingerprint) {
+std::string fingerprint(const fs::path& image) {
+  const RunResult r = run_marchstudio({"info", "--fingerprint", image.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return r.out;
+}
+
+TEST(Overrides, ChangeTheFingerprint) {
+  // camera.fov is a uniform, not shader text: the override itself is hashed.
   TempDir dir;
   render(kSeed, dir / "a.png");
   render(kSeed, dir / "b.png", {"--set", "camera.fov=30"});
-  const RunResult a = run_marchstudio({"info", "--fingerprint", (dir / "a.png").string()});
-  const RunResult b = run_marchstudio({"info", "--fingerprint", (dir / "b.png").string()});
-  ASSERT_EQ(a.exit_code, 0) << a.err;
-  ASSERT_EQ(b.exit_code, 0) << b.err;
-  EXPECT_NE(a.out, b.out);
+  render(kSeed, dir / "c.png", {"--set", "camera.fov=30"});
+  EXPECT_NE(fingerprint(dir / "a.png"), fingerprint(dir / "b.png"));
+  EXPECT_EQ(fingerprint(dir / "b.png"), fingerprint(dir / "c.png"));  // and is the same for the same override
+  render(kBall, dir / "d.png");
+  render(kBall, dir / "e.png", {"--uniform", "uRadius=1.3"});
+  EXPECT_NE(fingerprint(dir / "d.png"), fingerprint(dir / "e.png"));
 }
 
 struct BadFlag {

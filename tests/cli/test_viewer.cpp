@@ -180,6 +180,35 @@ TEST_F(Viewer, ScreenshotsAtWindowAndChosenSize) {
   EXPECT_EQ(window.height, 90);
 }
 
+// --set and --uniform (docs/usage.md#overrides) hold from the first frame
+// and across reloads: a save of the scene or the map keeps them.
+TEST_F(Viewer, OverridesHoldAcrossReloads) {
+  const std::string map =
+      "uniform float uR = 1.0; // range(0.5, 2.0)\n"
+      "vec2 map(vec3 p) { return vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), uR), MAT_BALL); }\n";
+  write_file(dir / "seed.glsl", map);
+  const std::vector<std::string> overrides = {"--set", "materials.floor.color=[0.1,0.2,0.9]", "--uniform", "uR=1.4"};
+  start(overrides);
+  const Image first = capture(0);
+  // `render` of the same scene with and without them, for what "held" means.
+  auto render = [&](const std::string& out, std::vector<std::string> more) {
+    std::vector<std::string> args = {"render", (dir / "seed.toml").string(), "--size", "160x90", "-o",
+                                     (dir / out).string()};
+    args.insert(args.end(), more.begin(), more.end());
+    EXPECT_EQ(run_marchstudio(args).exit_code, 0);
+    return read_image(dir / out);
+  };
+  const Image with = render("with.png", overrides), without = render("without.png", {});
+  // The viewer shows what `render` writes (0 here on llvmpipe), and they change it.
+  EXPECT_LT(mean_abs_diff(first, with), 1e-3) << "the first frame is not render's with the overrides";
+  EXPECT_GT(mean_abs_diff(first, without), 0.02) << "the overrides changed nothing";
+
+  ASSERT_EQ(save_and_wait(dir / "seed.toml", toml, 1).rfind("reload ok 1", 0), 0u);
+  ASSERT_EQ(save_and_wait(dir / "seed.glsl", "// saved again\n" + map, 2).rfind("reload ok 2", 0), 0u);
+  EXPECT_LT(mean_abs_diff(capture(1), first), 1e-3) << "a save of the scene dropped them";
+  EXPECT_LT(mean_abs_diff(capture(2), first), 1e-3) << "a save of the map dropped them";
+}
+
 // Before any window: a missing scene is bad input (2), no display is a
 // system failure (3); neither needs Xvfb.
 TEST(ViewerStart, ExitCodesWithoutAWindow) {
