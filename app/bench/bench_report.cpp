@@ -30,7 +30,8 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
   j["settings"] = {{"width", s.width},   {"height", s.height}, {"spp", s.spp},
                    {"frames", s.frames}, {"warmup", s.warmup}, {"time", s.time},
                    {"disable", subject.disable}, {"shader_cache", s.shader_cache},
-                   {"specialize", subject.specialize}, {"passes", s.fused_post ? 1 : 2}};
+                   {"specialize", subject.specialize}, {"passes", s.fused_post ? 1 : 2},
+                   {"overrides", subject.overrides}};
   j["machine"] = {{"backend", r.backend},
                   {"gl_renderer", r.gl_renderer},
                   {"gl_vendor", r.gl_vendor},

@@ -16,6 +16,7 @@ struct BenchSubject {
   std::string scene_name;
   std::vector<std::string> disable;  // effects switched off
   std::string specialize = "folded"; // the scene shader: "folded" (specialized) or "generic" (--no-specialize)
+  std::vector<std::string> overrides;  // --set and --uniform flags as given, in order
 };
 
 // The JSON document, pretty-printed, ending in a newline.

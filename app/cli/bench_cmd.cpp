@@ -113,7 +113,8 @@ int run_bench_command(const BenchArgs& a) {
     }));
     if (!bw.empty()) std::fprintf(stderr, "marchstudio: %s\n", bw.c_str());
   }
-  const BenchSubject subject{a.input, in.scene.name, a.disable, specialization_name(opts.specialize)};
+  const BenchSubject subject{a.input, in.scene.name, a.disable, specialization_name(opts.specialize),
+                             a.overrides.as_given};
   const std::string text = a.json ? bench_json(subject, s, r) : bench_table(subject, s, r);
   std::fputs(text.c_str(), stdout);
   if (r.cost.nonfinite_pixels > 0) {

@@ -122,7 +122,10 @@ void add_override_flags(CLI::App* cmd, Overrides& out) {
   cmd->add_option_function<std::vector<std::string>>(
          "--set",
          [&out](const std::vector<std::string>& v) {
-           for (const std::string& s : v) out.set.push_back(parse_set_flag(s));
+           for (const std::string& s : v) {
+             out.set.push_back(parse_set_flag(s));
+             out.as_given.push_back("--set " + s);
+           }
          },
          "Override a scene key before it is checked, e.g. camera.fov=30, materials.ball.color=[1,0,0], "
          "lights[0].intensity=3, quality.preset=fast (repeatable; docs/usage.md#overrides)")
@@ -130,7 +133,10 @@ void add_override_flags(CLI::App* cmd, Overrides& out) {
   cmd->add_option_function<std::vector<std::string>>(
          "--uniform",
          [&out](const std::vector<std::string>& v) {
-           for (const std::string& s : v) out.uniforms.push_back(parse_uniform_flag(s));
+           for (const std::string& s : v) {
+             out.uniforms.push_back(parse_uniform_flag(s));
+             out.as_given.push_back("--uniform " + s);
+           }
          },
          "Set a ranged uniform of the scene's shader (a viewer slider), e.g. uTwist=1.25 or uTint=[1,0.8,0.6]; "
          "checked against its type and range (repeatable)")

@@ -24,6 +24,7 @@ namespace ms {
 struct Overrides {
   SceneOverrides set;                 // in flag order: a later one wins
   std::vector<UniformValue> uniforms;
+  std::vector<std::string> as_given;  // "--set camera.fov=30", ...: for reports that record the command
 };
 
 // Both flags, repeatable, each parsed as it is read (bad input throws then).

@@ -77,6 +77,12 @@ std::string command_line(const SweepArgs& a) {
   }
   if (a.backend != "auto") c += " --backend " + a.backend;
   if (a.no_specialize) c += " --no-specialize";
+  for (const std::string& o : a.overrides.as_given) {  // "--set KEY=VALUE": the value quoted, brackets are shell globs
+    const size_t space = o.find(' ');
+    std::string value = o.substr(space + 1);
+    for (size_t at = 0; (at = value.find('\'', at)) != std::string::npos; at += 4) value.replace(at, 1, "'\\''");
+    c += " " + o.substr(0, space) + " '" + value + "'";
+  }
   return c;
 }
 

@@ -4,6 +4,7 @@
 // flag, exit 2, and write nothing. The TOML path logic itself:
 // tests/unit/test_scene_overrides.cpp.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
@@ -211,6 +212,26 @@ TEST(Overrides, EverySubcommandThatLoadsASceneTakesThem) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const fs::path copy = copy_scene(kSeed, dir.path(), edited(kSeed, "fov      = 45.0", "fov      = 30.0"));
   expect_same_pixels(ms::read_image(dir / "f_0.png"), render(copy, dir / "file.png"));
+}
+
+TEST(Overrides, BenchRecordsThemAndCountsTheVariant) {
+  auto bench = [](const fs::path& scene, std::vector<std::string> more) {
+    std::vector<std::string> args = {"bench", scene.string(), "--json", "--frames", "1", "--warmup", "0",
+                                     "--size", "32x18"};
+    args.insert(args.end(), more.begin(), more.end());
+    const RunResult r = run_marchstudio(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const nlohmann::json plain = bench(kSeed, {});
+  const nlohmann::json narrow = bench(kSeed, {"--set", "camera.fov=20", "--set", "camera.fov=30"});
+  EXPECT_EQ(plain["settings"]["overrides"], nlohmann::json::array());
+  EXPECT_EQ(narrow["settings"]["overrides"], (nlohmann::json{"--set camera.fov=20", "--set camera.fov=30"}));
+  // A narrower view fills more of the frame with the ball: more pixels hit.
+  EXPECT_GT(narrow["cost"]["hit_fraction"].get<double>(), plain["cost"]["hit_fraction"].get<double>());
+  const nlohmann::json big = bench(kBall, {"--uniform", "uRadius=1.5"});
+  EXPECT_EQ(big["settings"]["overrides"], (nlohmann::json{"--uniform uRadius=1.5"}));
+  EXPECT_GT(big["cost"]["hit_fraction"].get<double>(), bench(kBall, {})["cost"]["hit_fraction"].get<double>());
 }
 
 TEST(Overrides, SetNeedsASceneFile) {
