@@ -10,6 +10,7 @@ PACKAGES=(
   libegl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0   # headless GL: EGL + OSMesa, llvmpipe
   libglfw3-dev libglm-dev libimgui-dev   # the viewer: a window and its panel
   libopenimageio-dev openimageio-tools
+  libpng-dev libopenexr-dev         # io/direct_codec: PNG and EXR without loading OpenImageIO
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev
   glslang-tools                     # glslangValidator: shader tests and docs/specialization.md (skipped without)

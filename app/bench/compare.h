@@ -1,14 +1,13 @@
 // Image comparison metrics for `marchstudio compare` and `test`. Pure:
 // images in, numbers out; no files, no printing. All arithmetic over pixels
-// is OpenImageIO's ImageBufAlgo (compare, absdiff, maxchan,
-// color_range_check, computePixelStats, color_map), not loops of our own,
-// except LDR-FLIP, which OpenImageIO lacks (bench/flip.h).
+// is OpenImageIO's ImageBufAlgo (compare, absdiff, minchan,
+// computePixelStats, color_map, in the image module io/oiio/compare.cpp),
+// not loops of our own, except LDR-FLIP, which OpenImageIO lacks (bench/flip.h).
 #pragma once
 #include <cstdint>
 #include <limits>
 #include <string>
 
-#include <OpenImageIO/imagebuf.h>
 
 #include "io/image.h"
 
@@ -57,7 +56,6 @@ struct CompareMetrics {
 
 // Compare A (reference) and B. Throws bad_input when they differ in size or
 // channel count (the message names neither file: callers add that).
-CompareMetrics compare_images(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, const CompareOptions& opts = {});
 CompareMetrics compare_images(const Image& a, const Image& b, const CompareOptions& opts = {});
 
 // The metric's value (psnr in dB, the others as fractions of 1).
@@ -78,10 +76,7 @@ bool within_threshold(const CompareMetrics& m, Metric metric, double threshold);
 // scale <= 0 means the largest difference in the image, so even one-level
 // changes show. RGB float, sRGB-encoded display values (for EXR too: it is a
 // picture to look at, not data).
-Image diff_heatmap(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, float scale = 0.0f);
 Image diff_heatmap(const Image& a, const Image& b, float scale = 0.0f);
 
-// An ImageBuf that views (does not copy) an ms::Image's pixels; `img` must outlive it.
-OIIO::ImageBuf view_image(const Image& img);
 
 }  // namespace ms

@@ -5,14 +5,16 @@
 #include <cmath>
 #include <cstdio>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include <memory>
+
+#include "io/image_backend.h"
 
 namespace ms {
 namespace {
 
-namespace IBA = OIIO::ImageBufAlgo;
-using Color = std::array<float, 3>;
+using Color = ImageCanvas::Color;
+using AlignX = ImageCanvas::AlignX;
+using AlignY = ImageCanvas::AlignY;
 
 constexpr int kPanelW = 720, kPanelH = 520;
 constexpr int kLeft = 96, kRight = 24, kTop = 56, kBottom = 64;
@@ -20,23 +22,14 @@ constexpr Color kBlack{0.1f, 0.1f, 0.1f}, kGrid{0.88f, 0.88f, 0.88f}, kDot{0.55f
     kFront{0.1f, 0.35f, 0.85f}, kBaseline{0.85f, 0.15f, 0.1f}, kDefault{0.1f, 0.65f, 0.2f},
     kPreset{0.95f, 0.55f, 0.05f}, kReference{0.5f, 0.2f, 0.7f};
 
-// The first font that OpenImageIO can rasterise: DejaVu Sans by path (Debian's
-// fonts-dejavu-core), by name, then OIIO's default. Empty when none works.
-std::string find_font() {
-  for (const char* f : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "DejaVuSans", ""})
-    if (IBA::text_size("Ag", 14, f).defined()) return f[0] ? f : " ";
-  return {};
-}
-
+// The drawing primitives are the image module's (io/image_backend.h).
 struct Canvas {
-  OIIO::ImageBuf buf;
-  std::string font;  // empty: no text
-  void line(int x1, int y1, int x2, int y2, const Color& c) { IBA::render_line(buf, x1, y1, x2, y2, c); }
-  void box(int x1, int y1, int x2, int y2, const Color& c, bool fill) { IBA::render_box(buf, x1, y1, x2, y2, c, fill); }
-  void text(int x, int y, const std::string& s, int size, const Color& c,
-            IBA::TextAlignX ax = IBA::TextAlignX::Left, IBA::TextAlignY ay = IBA::TextAlignY::Baseline) {
-    if (font.empty()) return;
-    IBA::render_text(buf, x, y, s, size, font == " " ? "" : font, c, ax, ay);
+  std::unique_ptr<ImageCanvas> img;
+  void line(int x1, int y1, int x2, int y2, const Color& c) { img->line(x1, y1, x2, y2, c); }
+  void box(int x1, int y1, int x2, int y2, const Color& c, bool fill) { img->box(x1, y1, x2, y2, c, fill); }
+  void text(int x, int y, const std::string& s, int size, const Color& c, AlignX ax = AlignX::left,
+            AlignY ay = AlignY::baseline) {
+    img->text(x, y, s, size, c, ax, ay);
   }
   // A filled square of half-size r, outlined in black when `outline`.
   void dot(int x, int y, int r, const Color& c, bool outline) {
@@ -93,12 +86,12 @@ void panel(Canvas& cv, int ox, const SweepResult& r, bool same_spp, const std::s
   // Grid, axes, ticks.
   for (double t : log_ticks(tmin / 1.25, tmax * 1.25)) {
     cv.line(X(t), py0, X(t), py1, kGrid);
-    cv.text(X(t), py1 + 18, num(t), 13, kBlack, IBA::TextAlignX::Center);
+    cv.text(X(t), py1 + 18, num(t), 13, kBlack, AlignX::center);
   }
   const double step = (y1 - y0) > 40 ? 10.0 : 5.0;
   for (double p = y0; p <= y1 + 1e-9; p += step) {
     cv.line(px0, Y(p), px1, Y(p), kGrid);
-    cv.text(px0 - 6, Y(p), num(p), 13, kBlack, IBA::TextAlignX::Right, IBA::TextAlignY::Center);
+    cv.text(px0 - 6, Y(p), num(p), 13, kBlack, AlignX::right, AlignY::center);
   }
   cv.box(px0, py0, px1, py1, kBlack, false);
   const char* clock = r.clock == SweepClock::cpu    ? "process CPU"
@@ -106,8 +99,8 @@ void panel(Canvas& cv, int ox, const SweepResult& r, bool same_spp, const std::s
                       : r.gpu_timer                 ? "GPU"
                                                     : "wall";
   cv.text((px0 + px1) / 2, py1 + 44, std::string(clock) + " time per frame, ms (best round's median, log scale)", 14,
-          kBlack, IBA::TextAlignX::Center);
-  cv.text(ox + 10, (py0 + py1) / 2, "PSNR\n(dB)", 14, kBlack, IBA::TextAlignX::Left, IBA::TextAlignY::Center);
+          kBlack, AlignX::center);
+  cv.text(ox + 10, (py0 + py1) / 2, "PSNR\n(dB)", 14, kBlack, AlignX::left, AlignY::center);
   cv.text(px0, py0 - 12, heading, 15, kBlack);
 
   // Every row, then the front as a line through its points, then the marked rows on top.
@@ -136,21 +129,13 @@ void panel(Canvas& cv, int ox, const SweepResult& r, bool same_spp, const std::s
 
 SweepPlot plot_sweep(const SweepResult& r, const std::string& title) {
   Canvas cv;
-  const OIIO::ImageSpec spec(2 * kPanelW, kPanelH, 3, OIIO::TypeDesc::FLOAT);
-  cv.buf.reset(spec);
-  const float white[3] = {1.0f, 1.0f, 1.0f};
-  IBA::fill(cv.buf, white);
-  cv.font = find_font();
+  cv.img = image_backend().canvas(2 * kPanelW, kPanelH, {1.0f, 1.0f, 1.0f});
   cv.text(kLeft, 26, title, 18, kBlack);
   panel(cv, 0, r, true, "error vs converged reference, same spp (tracing error)");
   panel(cv, kPanelW, r, false, "error vs converged reference, supersampled (overall fidelity)");
   SweepPlot out;
-  out.has_text = !cv.font.empty();
-  out.image.width = spec.width;
-  out.image.height = spec.height;
-  out.image.channels = {"R", "G", "B"};
-  out.image.pixels.resize(static_cast<size_t>(spec.width) * spec.height * 3);
-  cv.buf.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, out.image.pixels.data());
+  out.has_text = cv.img->has_text();
+  out.image = cv.img->pixels();
   return out;
 }
 

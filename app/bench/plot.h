@@ -1,8 +1,8 @@
 // The sweep's picture: frame time (log scale) against PSNR, one panel per
 // reference (same spp, supersampled), every row a dot, each Pareto front a
 // line, the textbook baseline, the presets and the default preset marked.
-// Drawn with OpenImageIO's ImageBufAlgo (render_line, render_box,
-// render_text): no plotting dependency. Text needs a TrueType font (DejaVu
+// Drawn on the image module's canvas (io/image_backend.h: OpenImageIO's
+// render_line, render_box, render_text): no plotting dependency. Text needs a TrueType font (DejaVu
 // Sans on Debian); without one the plot is drawn without text.
 #pragma once
 #include <string>

@@ -1,4 +1,4 @@
-// Image files through OpenImageIO. 8-bit formats get display-encoded values
+// Image files through OpenImageIO, in the module io/image_backend.h loads. 8-bit formats get display-encoded values
 // (the renderer already applied tone map and sRGB); EXR stays float/linear.
 // Every write goes through io/atomic_file.h (verified, then renamed into
 // place) and every read through io/input_file.h (regular files only).
@@ -19,7 +19,7 @@ enum class ImageFormat { png, jpeg, tiff, exr };
 // From the file extension, case-insensitive. Throws bad_input on an unknown one.
 ImageFormat image_format_for(const std::filesystem::path& path);
 // True for formats stored as 8-bit display values (PNG, JPEG, TIFF).
-bool is_display_format(ImageFormat f);
+inline bool is_display_format(ImageFormat f) { return f != ImageFormat::exr; }
 
 // Check before any rendering that `path` can be written: known extension,
 // existing directory, write permission, a name within the file system's
@@ -54,6 +54,8 @@ struct ImageInfo {
 };
 // Reads the header only, from a regular file. Throws bad_input naming it.
 ImageInfo read_image_info(const std::filesystem::path& path);
+// fingerprint_from() over an info's attributes.
+std::string fingerprint_of(const ImageInfo& info);
 
 // Read any format OpenImageIO knows, as float, from a regular file (io/
 // input_file.h). Throws bad_input naming the file.

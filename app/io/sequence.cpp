@@ -2,8 +2,7 @@
 
 #include "io/image_io.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include "io/image_backend.h"
 
 #include <algorithm>
 #include <cctype>
@@ -146,25 +145,19 @@ bool frame_is_complete(const fs::path& path, int width, int height, std::string*
   } catch (const Error& e) {
     return no(e.info().what);
   }
-  OIIO::Filesystem::IOMemReader mem(bytes.data(), bytes.size());
-  OIIO::ImageSpec config;
-  auto in = OIIO::ImageInput::open(path.string(), &config, &mem);
-  if (!in) return no("unreadable: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width != width || spec.height != height)
+  // Decoding every pixel is what catches a file cut short by something
+  // other than our atomic writer (a copy, a full disk); a few ms per frame.
+  const ImageBackend& codec = image_backend();
+  if (std::string bad = codec.decode_problem(bytes, path); !bad.empty()) return no(bad);
+  const ImageInfo info = codec.read_info(bytes, path);
+  if (info.width != width || info.height != height)
     return no(std::to_string(width) + "x" + std::to_string(height) + " expected, file is " +
-              std::to_string(spec.width) + "x" + std::to_string(spec.height));
+              std::to_string(info.width) + "x" + std::to_string(info.height));
   if (!fingerprint.empty()) {
-    const std::string has = fingerprint_from(spec.get_string_attribute(kFingerprintKey),
-                                             spec.get_string_attribute("ImageDescription"));
+    const std::string has = fingerprint_of(info);
     if (has.empty()) return no(kNoFingerprint);
     if (has != fingerprint) return no(kOtherFingerprint);
   }
-  // Decoding every pixel is what catches a file cut short by something
-  // other than our atomic writer (a copy, a full disk); a few ms per frame.
-  std::vector<unsigned char> pixels(spec.image_bytes());
-  if (!in->read_image(0, 0, 0, spec.nchannels, spec.format, pixels.data()))
-    return no("cannot decode: " + in->geterror());
   return true;
 }
 

@@ -1,9 +1,6 @@
 #include "io/stored_pixels.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imageio.h>
-
-#include "core/error.h"
+#include "io/image_backend.h"
 
 namespace ms {
 
@@ -20,15 +17,8 @@ Image stored_pixels(const Image& image, ImageFormat format) {
   std::vector<float> src(npix * out_ch);
   for (size_t p = 0; p < npix; ++p)
     for (int c = 0; c < out_ch; ++c) src[p * out_ch + c] = image.pixels[p * nch + c];
-  // Float -> UINT8 and back through OpenImageIO's conversions, the same
-  // that write_image's encoder and read_image's decoder apply.
-  std::vector<unsigned char> bytes(src.size());
-  out.pixels.resize(src.size());
-  const auto n = static_cast<OIIO::imagesize_t>(src.size());
-  if (!OIIO::convert_pixel_values(OIIO::TypeDesc::FLOAT, src.data(), OIIO::TypeDesc::UINT8, bytes.data(), n) ||
-      !OIIO::convert_pixel_values(OIIO::TypeDesc::UINT8, bytes.data(), OIIO::TypeDesc::FLOAT, out.pixels.data(), n))
-    fail_system("cannot convert pixels to 8 bits");
-  return out;
+  out.pixels = std::move(src);
+  return image_backend().quantize_8bit(out);  // the codec's own float <-> UINT8
 }
 
 }  // namespace ms

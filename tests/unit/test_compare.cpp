@@ -166,16 +166,6 @@ TEST(Compare, ParseMetric) {
   }
 }
 
-TEST(Compare, ImageBufOverloadMatchesImageOverload) {
-  Image a = flat(6, 6, {"R", "G", "B"}, 0.5f), b = a;
-  px(b, 5, 5, 2) = 0.25f;
-  const CompareMetrics x = compare_images(a, b);
-  const CompareMetrics y = compare_images(view_image(a), view_image(b));
-  EXPECT_EQ(x.psnr, y.psnr);
-  EXPECT_EQ(x.max_abs, y.max_abs);
-  EXPECT_EQ(x.pixels_over, y.pixels_over);
-}
-
 TEST_F(OnePixel, HeatMapIsBrightestWhereTheImagesDiffer) {
   const Image heat = diff_heatmap(a, b);
   EXPECT_EQ(heat.width, 10);
