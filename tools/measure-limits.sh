@@ -75,6 +75,16 @@ chain() {  # $1 user files deep: the shader (level 1, the generated root include
   { echo '#include "c2.glsl"'; echo "$main"; } > main.glsl
 }
 
+buffered() {  # a Shadertoy project: Buffer A, which the Image pass shows
+  cat <<'JSON'
+{"Shader": {"info": {"name": "b"}, "renderpass": [
+  {"name": "Buffer A", "type": "buffer", "code": "void mainImage(out vec4 o, in vec2 f) { o = vec4(1.0); }",
+   "inputs": [], "outputs": [{"id": 257, "channel": 0}]},
+  {"name": "Image", "type": "image", "code": "void mainImage(out vec4 o, in vec2 f) { o = texelFetch(iChannel0, ivec2(f), 0); }",
+   "inputs": [{"id": 257, "ctype": "buffer", "channel": 0}], "outputs": []}]}}
+JSON
+}
+
 # The deepest sum accepted: the longest within the depth limit (50,000 levels).
 deepest=50000
 while (( deepest > 49900 )); do
@@ -104,7 +114,9 @@ case_ "compare with /dev/zero as the reference" '"$bin" render "$root/scenes/see
   "$bin" compare a.png /dev/zero
 case_ "--timeout 1e10 on a normal render (capped at a century)" ':' "$bin" render "$root/scenes/seed.toml" --size 64x36 --timeout 1e10 -o t.png
 case_ "--size 8192x8192, no AOVs (the largest square within 4 GiB)" ':' "$bin" render "$root/scenes/seed.toml" --size 8192x8192 -o big.png
-case_ "--size 8193x8193" ':' "$bin" render "$root/scenes/seed.toml" --size 8193x8193 -o big.png
+case_ "--size 8193x8193 (past the budget: drawn in tiles, streamed)" ':' "$bin" render "$root/scenes/seed.toml" --size 8193x8193 -o big.png
+case_ "--size 8193x8193, a shader with a buffer (needs it whole-frame)" 'buffered > b.json' \
+  "$bin" render b.json --size 8193x8193 -o big.png
 
 machine="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores, $(free -g | awk '/Mem:/ {print $2}') GiB"
 renderer=$("$bin" bench "$root/scenes/seed.toml" --size 8x8 --frames 1 --json | /usr/bin/python3 -c 'import json, sys; print(json.load(sys.stdin)["machine"]["gl_renderer"])')

@@ -1,6 +1,7 @@
 #include "cli/progress.h"
 
 #include <cmath>
+#include <utility>
 
 namespace ms {
 
@@ -13,7 +14,8 @@ std::string format_duration(double seconds) {
   return buf;
 }
 
-Progress::Progress(int total, bool tty, std::FILE* out) : total_(total), tty_(tty), out_(out) {}
+Progress::Progress(int total, bool tty, std::FILE* out, std::string unit)
+    : total_(total), tty_(tty), unit_(std::move(unit)), out_(out) {}
 
 void Progress::start() {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -40,6 +42,7 @@ void Progress::rendered(int frame, double seconds) {
     draw_locked(frame);
     return;
   }
+  if (unit_ != "frames") return;
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double fps = elapsed > 0 ? done_ / elapsed : 0.0;
   std::fprintf(out_, "marchstudio: frame %d rendered in %.3f s (%d/%d, %.2f frames/s, ETA %s)\n", frame, seconds,
@@ -55,8 +58,13 @@ void Progress::draw_locked(int frame) {
   std::string bar(static_cast<std::size_t>(filled), '#');
   bar.resize(kWidth, '.');
   // \r and "erase to end of line": the bar redraws over itself.
-  std::fprintf(out_, "\r[%s] %d/%d frames  %.2f fps  ETA %s  (frame %d)\x1b[K", bar.c_str(), done_, total_, fps,
-               format_duration(fps > 0 ? (total_ - done_) / fps : -1).c_str(), frame);
+  const std::string eta = format_duration(fps > 0 ? (total_ - done_) / fps : -1);
+  if (unit_ == "frames")
+    std::fprintf(out_, "\r[%s] %d/%d frames  %.2f fps  ETA %s  (frame %d)\x1b[K", bar.c_str(), done_, total_, fps,
+                 eta.c_str(), frame);
+  else
+    std::fprintf(out_, "\r[%s] %d/%d %s  %.2f %s/s  ETA %s\x1b[K", bar.c_str(), done_, total_, unit_.c_str(), fps,
+                 unit_.c_str(), eta.c_str());
   std::fflush(out_);
   bar_shown_ = true;
 }

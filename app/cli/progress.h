@@ -1,8 +1,8 @@
-// Progress of a sequence render on stderr: on a terminal one line redrawn
-// in place (a bar, frames done, frames per second, ETA); otherwise (logs,
-// CI, Slurm output files) one plain line per event, which is also what
-// tests read. Thread-safe: frames are reported from the render loop and
-// writes from the writer thread.
+// Progress of a sequence render, or of a tiled still's tiles, on stderr:
+// on a terminal one line redrawn in place (a bar, frames done, frames per
+// second, ETA); otherwise (logs, CI, Slurm output files) one plain line per
+// event, which is also what tests read. Thread-safe: frames are reported
+// from the render loop and writes from the writer thread.
 #pragma once
 #include <chrono>
 #include <cstdio>
@@ -17,7 +17,9 @@ std::string format_duration(double seconds);
 class Progress {
  public:
   // `total`: the frames this process will render (skipped ones excluded).
-  Progress(int total, bool tty, std::FILE* out = stderr);
+  // `unit` "tiles" counts a tiled still's tiles (render/tiled_still.h):
+  // the bar alone, on a terminal; a log gets no line per tile.
+  Progress(int total, bool tty, std::FILE* out = stderr, std::string unit = "frames");
 
   // Restart the clock for frames/s and ETA (when the first frame starts).
   void start();
@@ -39,6 +41,7 @@ class Progress {
 
   const int total_;
   const bool tty_;
+  const std::string unit_;
   std::FILE* const out_;
   std::mutex mutex_;
   int done_ = 0;

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -30,6 +31,7 @@
 #include "cli/flag_checks.h"
 #include "cli/fingerprint.h"
 #include "cli/input.h"
+#include "cli/tiled_render.h"
 #include "live/render_watch.h"
 
 namespace ms {
@@ -96,6 +98,10 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   cmd->add_option("--tile-size", a.tile_size, "Largest square one draw covers, pixels (0: the whole frame)")
       ->check(CLI::NonNegativeNumber)
       ->group("");  // tests and experiments: the image is the same for any value
+  cmd->add_option("--tile-still", a.tile_still,
+                  "Draw the still in tiles of at most SIDE pixels, streamed to the file (0: only past the limits)")
+      ->check(CLI::NonNegativeNumber)
+      ->group("");  // tests: a tiled still is bit-identical to a whole one (docs/usage.md#huge-stills)
   return cmd;
 }
 
@@ -203,9 +209,11 @@ int run_render(const RenderArgs& a) {
   fp.aovs = aovs;
   fp.deadline = deadline.limited() ? &deadline : nullptr;
   fp.tile_size = a.tile_size;
-  // Before the (slow) context: a frame over the memory budget is refused.
+  // Before the (slow) context: past the memory budget a still is drawn in
+  // tiles (cli/tiled_render.h), and one with buffers is refused.
   const int buffer_targets = 2 * (static_cast<int>(in.passes.size()) - 1);  // each buffer's two textures
-  check_frame_memory(frame_memory(fp.width, fp.height, (aovs ? 6 : 2) + buffer_targets, aovs), fp.width, fp.height);
+  const int gpu_targets = (aovs ? 6 : 2) + buffer_targets;
+  plan_render_tiling(in, fp, gpu_targets, a.tile_still, INT_MAX, INT_MAX);
   const float time = a.time_set ? static_cast<float>(a.time) : scene.render.time;
   const Scene posed = animated(scene, time);  // [[animation]] keyframes at this time
   fp.exposure = posed.render.exposure;
@@ -220,7 +228,9 @@ int run_render(const RenderArgs& a) {
       std::fprintf(stderr, "marchstudio: shader %s (%s)\n", specialization_name(opts.specialize),
                    describe(scene_features(scene, opts)).c_str());
   }
-  check_frame_size(ctx->info(), fp.width, fp.height, aovs ? 6 : 2);
+  const StillTiling tiling = plan_render_tiling(in, fp, gpu_targets, a.tile_still, gl_max_width(ctx->info()),
+                                                gl_max_height(ctx->info()));
+  if (!tiling.tiled()) check_frame_size(ctx->info(), fp.width, fp.height, aovs ? 6 : 2);
 
   PassGraph graph(in.passes);
   const Program post_prog(fullscreen_vertex_source(), post_src);
@@ -240,26 +250,36 @@ int run_render(const RenderArgs& a) {
   std::copy(std::begin(scene.shadertoy.mouse), std::end(scene.shadertoy.mouse), still.in.mouse);
   still.fps = scene.shadertoy.fps;
   still.params = fp;
-  Still out = render_still(renderer, graph, post_prog, still);
-  Image img = std::move(out.color);
-  // Pixels with NaN/Inf in any channel read back (colour, AOVs), and those
-  // a Shadertoy Image pass flagged.
-  const long long nonfinite = count_nonfinite_pixels(img, aovs ? &out.aovs : nullptr) + out.flagged;
-  if (aovs) img = append_channels(img, select_channels(out.aovs, aov_names));
-  // The NaN/Inf guard: counted over everything read back, before writing.
-  if (nonfinite > 0) {
+  // The NaN/Inf guard: pixels with NaN/Inf in any channel read back
+  // (colour, AOVs), and those a Shadertoy Image pass flagged, counted over
+  // everything before the file is made.
+  const auto check_nonfinite = [&](long long nonfinite) {
+    if (nonfinite <= 0) return;
     const std::string what = std::to_string(nonfinite) + " of " +
                              std::to_string(static_cast<long long>(fp.width) * fp.height) +
                              " pixels have NaN/Inf values";
     if (a.strict) throw Error({Exit::threshold, input.string(), 0, "--strict", what + "; nothing written", {}, {}});
     std::fprintf(stderr, "marchstudio: %s: warning: %s (--strict makes this an error)\n", input.string().c_str(),
                  what.c_str());
-  }
+  };
   ImageMetadata meta{{"Software", "marchstudio 0.1.0"},
                      {"ImageDescription", input.filename().string() + " t=" + std::to_string(time) +
                                               " spp=" + std::to_string(fp.spp)}};
   add_fingerprint(meta, frame_fingerprint(job_fingerprint(in, fp, post_src, aov_names, scene.shadertoy.fps), a.frame,
                                           time));
+  if (tiling.tiled()) {  // rendered and written band by band
+    render_tiled_file({output, aov_names, meta, watchdog ? &*watchdog : nullptr, &deadline, check_nonfinite},
+                      renderer, graph, post_prog, still, tiling);
+    if (a.verbose)
+      std::fprintf(stderr, "marchstudio: context %.1f ms, compile %.1f ms, render and write %.1f ms (tiles of %dx%d)\n",
+                   t_context * 1e3, t_compile * 1e3, clock.lap() * 1e3, tiling.tile_width, tiling.band_height);
+    std::printf("%s\n", output.string().c_str());
+    return 0;
+  }
+  Still out = render_still(renderer, graph, post_prog, still);
+  Image img = std::move(out.color);
+  check_nonfinite(count_nonfinite_pixels(img, aovs ? &out.aovs : nullptr) + out.flagged);
+  if (aovs) img = append_channels(img, select_channels(out.aovs, aov_names));
   const double t_render = clock.lap();
   deadline.check("the render");
   if (watchdog) watchdog->disarm();  // the write is atomic and must not be cut short

@@ -45,6 +45,7 @@ struct RenderArgs {
   std::vector<std::string> allow_include;  // more directories #include may read (shader/preprocess.h)
   double timeout = 0.0;      // seconds per image (each frame of --frames); 0: none (core/deadline.h)
   int tile_size = kTileSize; // hidden --tile-size: largest square per draw (render/tiles.h); 0: whole frame
+  int tile_still = 0;        // hidden --tile-still: draw and stream the still in tiles of this side (tests); 0: past the limits only
   ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
   Overrides overrides;       // --set, --uniform (cli/override_flags.h)
 };

@@ -1,0 +1,109 @@
+#include "cli/tiled_render.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <climits>
+#include <cstring>
+
+#include "bench/bench.h"
+#include "cli/progress.h"
+#include "core/error.h"
+#include "io/image_stream.h"
+#include "render/aov.h"
+#include "render/tiled_still.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The temporary's name where a signal handler can read it: a handler may
+// only call async-signal-safe functions (unlink, _exit).
+char g_temp[PATH_MAX];
+extern "C" void remove_temp_and_exit(int sig) {
+  ::unlink(g_temp);
+  ::_exit(128 + sig);
+}
+
+// While a tiled still streams (minutes, gigabytes), Ctrl-C and SIGTERM
+// (scancel, a farm's time limit) remove the temporary and end the process
+// with 130 / 143, as a sequence does; SIGKILL cannot be caught and leaves
+// only the temporary, never the target.
+class RemoveOnSignal {
+ public:
+  explicit RemoveOnSignal(const fs::path& temp) {
+    std::strncpy(g_temp, temp.c_str(), sizeof g_temp - 1);
+    struct sigaction sa {};
+    sa.sa_handler = remove_temp_and_exit;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int_);
+    sigaction(SIGTERM, &sa, &old_term_);
+  }
+  ~RemoveOnSignal() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  RemoveOnSignal(const RemoveOnSignal&) = delete;
+  RemoveOnSignal& operator=(const RemoveOnSignal&) = delete;
+
+ private:
+  struct sigaction old_int_ {}, old_term_ {};
+};
+
+}  // namespace
+
+StillTiling plan_render_tiling(const LoadedInput& in, const FrameParams& fp, int gpu_targets, int forced, int max_w,
+                               int max_h) {
+  if (!in.stateful()) return plan_still_tiling(fp.width, fp.height, max_w, max_h, gpu_targets, fp.aovs, forced);
+  const std::string size = std::to_string(fp.width) + "x" + std::to_string(fp.height);
+  const std::string why = "a shader with buffers needs them whole-frame, so it cannot be drawn in tiles";
+  if (forced > 0) fail_input(why, {}, 0, "--tile-still");
+  if (fp.width > max_w || fp.height > max_h)
+    fail_input("image size " + size + " exceeds this GL's limit of " + std::to_string(max_w) + "x" +
+                   std::to_string(max_h) + ", and " + why,
+               {}, 0, "--size", "render it smaller");
+  check_frame_memory(frame_memory(fp.width, fp.height, gpu_targets, fp.aovs), fp.width, fp.height, why);
+  return {};
+}
+
+void render_tiled_file(const TiledFile& job, FrameRenderer& renderer, PassGraph& graph, const Program& post,
+                       const StillFrame& still, const StillTiling& tiling) {
+  const FrameParams& fp = still.params;
+  std::vector<std::string> channels = {"R", "G", "B", "A"};
+  channels.insert(channels.end(), job.aov_names.begin(), job.aov_names.end());
+  ImageStreamWriter out(job.output, fp.width, fp.height, channels, job.meta);
+  const RemoveOnSignal on_signal(out.temp_path());
+  if (job.watchdog && job.deadline && job.deadline->limited())
+    job.watchdog->arm(*job.deadline, "the render", [temp = out.temp_path()] { ::unlink(temp.c_str()); });
+
+  Progress progress(static_cast<int>(still_tiles(fp.width, fp.height, tiling).size()), ::isatty(2) == 1, stderr,
+                    "tiles");
+  progress.start();
+  struct EndBar {  // an error's line then starts on a line of its own
+    Progress& p;
+    ~EndBar() { p.finish(); }
+  } end_bar{progress};
+  auto last = std::chrono::steady_clock::now();
+  long long nonfinite = 0;
+  render_still_tiled(
+      renderer, graph, post, still, tiling,
+      [&](StillBand& band) {
+        Still& s = band.pixels;
+        nonfinite += count_nonfinite_pixels(s.color, fp.aovs ? &s.aovs : nullptr) + s.flagged;
+        if (fp.aovs) s.color = append_channels(s.color, select_channels(s.aovs, job.aov_names));
+        out.write_rows(band.top, s.color);
+      },
+      [&](int done, int) {
+        const auto now = std::chrono::steady_clock::now();
+        progress.rendered(done, std::chrono::duration<double>(now - last).count());
+        last = now;
+      });
+  progress.finish();
+  if (job.watchdog) job.watchdog->disarm();  // the rename must not be cut short
+  if (job.check_nonfinite) job.check_nonfinite(nonfinite);
+  out.finish();
+}
+
+}  // namespace ms
