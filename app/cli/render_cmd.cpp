@@ -1,46 +1,40 @@
 #include "cli/render_cmd.h"
 
 #include <CLI/CLI.hpp>
-#include <unistd.h>
 
-#include <chrono>
-#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
-#include <regex>
 
-#include "bench/bench.h"
+#include "cli/batch.h"
+#include "cli/flag_checks.h"
+#include "cli/input.h"
+#include "cli/render_job.h"
 #include "cli/sequence_cmd.h"
 #include "cli/shader_dir.h"
+#include "cli/still_job.h"
 #include "core/error.h"
-#include "scene/quality.h"
-#include "gl/context.h"
-#include "io/image_io.h"
-#include "io/sequence.h"
-#include "render/aov.h"
-#include "render/bounds_check.h"
-#include "core/deadline.h"
-#include "render/frame.h"
-#include "render/graph.h"
-#include "render/still.h"
-#include "render/tiles.h"
-#include "render/uniforms.h"
-#include "scene/animation.h"
-#include "cli/flag_checks.h"
-#include "cli/fingerprint.h"
-#include "cli/input.h"
-#include "cli/tiled_render.h"
 #include "live/render_watch.h"
+#include "render/aov.h"
+#include "scene/quality.h"
 
 namespace ms {
 namespace fs = std::filesystem;
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene (.toml) or a Shadertoy shader (.glsl) to an image");
-  cmd->add_option("input", a.input, "Scene .toml or Shadertoy .glsl/.frag")->required();
+  cmd->add_option("input", a.inputs,
+                  "Scene .toml or Shadertoy .glsl/.frag/.json; several make a batch (see --output-dir)");
   cmd->add_option("-o,--output", a.output, "Output image: .png .jpg .tif (8-bit sRGB) or .exr (linear float)")
+      ->check(not_empty());
+  cmd->add_option("--output-dir", a.output_dir,
+                  "Render every input, in one process, to DIR/<stem>.<format> (docs/usage.md#batches)")
+      ->check(not_empty());
+  cmd->add_option("--format", a.format, "Extension of outputs named from the input: png (default), exr, tif, jpg")
+      ->check(one_of({"png", "exr", "tif", "jpg"}));
+  cmd->add_option("--jobs", a.jobs,
+                  "Render the stills listed in FILE, one JSON object per line with \"scene\", \"output\" and any "
+                  "flag without its dashes; the command line's flags are the defaults")
       ->check(not_empty());
   cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
   cmd->add_option("--time", a.time, "Scene time in seconds (default 0)")
@@ -105,21 +99,6 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   return cmd;
 }
 
-namespace {
-
-// Seconds since the last lap, for --verbose phase timings.
-struct Stopwatch {
-  std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last).count();
-    last = now;
-    return s;
-  }
-};
-
-}  // namespace
-
 // --watch: this same function without --watch, after every save; the files
 // to watch are whatever loading the input reads.
 static int run_render_watch(const RenderArgs& a) {
@@ -140,154 +119,34 @@ static int run_render_watch(const RenderArgs& a) {
   return live::watch_and_render(w);
 }
 
-int run_render(const RenderArgs& a) {
+int run_render(const RenderArgs& args) {
+  if (wants_batch(args)) return run_batch(args);
+  if (args.inputs.empty())
+    fail_input("no input: give a scene .toml or a shader, or --jobs FILE", {}, 0, "input",
+               "e.g. marchstudio render scenes/seed.toml -o seed.png");
+  RenderArgs a = args;
+  a.input = args.inputs.front();
   if (!std::isfinite(a.timeout) || a.timeout < 0)
     fail_input("--timeout must be a number of seconds >= 0 (0: no limit)", {}, 0, "--timeout");
   if (a.watch) return run_render_watch(a);
-  if (wants_sequence(a)) return run_sequence(a);
+  if (wants_sequence(a)) {
+    if (!a.format.empty()) fail_input("--format names a still's output; a sequence's is -o PATTERN", {}, 0, "--format");
+    return run_sequence(a);
+  }
   if (a.force)
     fail_input("--force needs --frames: a still always replaces its file", {}, 0, "--force",
                "it makes a sequence render again the frames it would keep");
-  // From here on the image has a.timeout seconds; the watchdog ends the
-  // process if a draw (or the driver's compile) never returns.
-  const Deadline deadline = Deadline::after(a.timeout);
-  std::optional<Watchdog> watchdog;
-  if (deadline.limited()) watchdog.emplace().arm(deadline, "the render");
-  if (!std::isfinite(a.time)) fail_input("--time must be a finite number", {}, 0, "--time");
-  if (a.spp < 0 || a.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
-  if (a.frame < 0) fail_input("--frame must be >= 0", {}, 0, "--frame");
-  const Backend backend = parse_backend(a.backend);
-  const fs::path input = a.input;
-  const fs::path output = a.output.empty() ? fs::path(input.stem().string() + ".png") : fs::path(a.output);
-  if (has_frame_field(output.string()))
-    fail_input("the output '" + output.string() + "' has a frame field but there is no --frames", {}, 0, "--frames",
-               "e.g. --frames 0..59 -o " + output.string() + "; for one image name a file without %d");
-  check_output_path(output);  // before any work: no file is ever half-made
-  const bool display = is_display_format(image_format_for(output));
-  const bool aovs = !a.aov.empty();
-  const std::vector<std::string> aov_names = aovs ? aov_channels(a.aov) : std::vector<std::string>{};
-  if (aovs && display)
-    fail_input("--aov needs an .exr output, not '" + output.filename().string() + "'", {}, 0, "--aov",
-               "AOVs are extra float channels, which only OpenEXR holds");
-
-  AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
-                       parse_allow_include(a.allow_include)};
-  if (aovs) for (const auto& d : aov_defines()) opts.defines.push_back(d);
-  opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  opts.uniforms = a.overrides.uniforms;
-  LoadedInput in = load_input_scene(input, a.disable, a.preset, a.overrides.set);
-  if (aovs && in.shadertoy)
-    fail_input("--aov needs a scene: a Shadertoy shader has no AOV outputs", input.string(), 0, "--aov");
-  apply_shadertoy_flags(in, a.shadertoy);
-  if (a.fps_set) {
-    if (!std::isfinite(a.fps) || a.fps <= 0) fail_input("--fps must be a positive number", {}, 0, "--fps");
-    in.scene.shadertoy.fps = a.fps;
-  }
-  const Scene& scene = in.scene;
-  FrameParams fp;
-  fp.width = scene.render.width;
-  fp.height = scene.render.height;
-  if (!a.size.empty()) {
-    const ImageSize s = parse_size_flag(a.size);
-    fp.width = s.width;
-    fp.height = s.height;
-  }
-  fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
-  const ShaderSource post_src = assemble_still(in, opts, fp.spp, aovs, display, fp.fused_post);
+  if (!a.format.empty() && !a.output.empty())
+    fail_input("--format names outputs made from the input's stem, and -o names the file", {}, 0, "--format",
+               "give the extension in -o");
+  const RenderJob job = make_render_job(a, a.input, a.output.empty() ? batch_output(a, a.input) : fs::path{});
   if (a.print_shader) {
-    for (const PassSource& pass : in.passes) {
-      if (in.passes.size() > 1) std::printf("// ==== marchstudio: pass %s ====\n", pass.name.c_str());
-      std::fputs(pass.source.text.c_str(), stdout);
-    }
+    print_job_shader(job);
     return 0;
   }
-  if (in.stateful() && a.frame != 0)
-    fail_input("--frame conflicts with a shader that has buffers: its still replays frames 0..N, N = round(time x fps)",
-               {}, 0, "--frame", "give --time (and --fps) instead");
-  report_input_warnings(in.warnings, input.string(), a.strict);
-  fp.exposure = scene.render.exposure;
-  fp.aovs = aovs;
-  fp.deadline = deadline.limited() ? &deadline : nullptr;
-  fp.tile_size = a.tile_size;
-  // Before the (slow) context: past the memory budget a still is drawn in
-  // tiles (cli/tiled_render.h), and one with buffers is refused.
-  const int buffer_targets = 2 * (static_cast<int>(in.passes.size()) - 1);  // each buffer's two textures
-  const int gpu_targets = (aovs ? 6 : 2) + buffer_targets;
-  plan_render_tiling(in, fp, gpu_targets, a.tile_still, INT_MAX, INT_MAX);
-  const float time = a.time_set ? static_cast<float>(a.time) : scene.render.time;
-  const Scene posed = animated(scene, time);  // [[animation]] keyframes at this time
-  fp.exposure = posed.render.exposure;
-
-  Stopwatch clock;
-  std::unique_ptr<Context> ctx = create_headless_context(backend);
-  const double t_context = clock.lap();
-  if (a.verbose) {
-    std::fprintf(stderr, "marchstudio: backend %s, GL_RENDERER %s, GL_VERSION %s\n", ctx->backend().c_str(),
-                 ctx->info().renderer.c_str(), ctx->info().version.c_str());
-    if (!in.shadertoy)
-      std::fprintf(stderr, "marchstudio: shader %s (%s)\n", specialization_name(opts.specialize),
-                   describe(scene_features(scene, opts)).c_str());
-  }
-  const StillTiling tiling = plan_render_tiling(in, fp, gpu_targets, a.tile_still, gl_max_width(ctx->info()),
-                                                gl_max_height(ctx->info()));
-  if (!tiling.tiled()) check_frame_size(ctx->info(), fp.width, fp.height, aovs ? 6 : 2);
-
-  PassGraph graph(in.passes);
-  const Program post_prog(fullscreen_vertex_source(), post_src);
-  const double t_compile = clock.lap();
-  report_input_warnings(unbound_warnings(graph), input.string(), a.strict);
-  if (a.verbose && !in.shadertoy) {  // does [bounds] hold what map() draws? (render/bounds_check.h)
-    const std::string w = bounds_warning(input.string(), check_bounds(posed, opts, [&](const Program& p) {
-      set_scene_uniforms(p, posed, fp.width, fp.height, time, a.frame);
-    }));
-    if (!w.empty()) std::fprintf(stderr, "marchstudio: %s\n", w.c_str());
-  }
-  FrameRenderer renderer(*ctx);
-  StillFrame still;
-  still.in.scene = &posed;
-  still.in.time = time;
-  still.in.frame = a.frame;
-  std::copy(std::begin(scene.shadertoy.mouse), std::end(scene.shadertoy.mouse), still.in.mouse);
-  still.fps = scene.shadertoy.fps;
-  still.params = fp;
-  // The NaN/Inf guard: pixels with NaN/Inf in any channel read back
-  // (colour, AOVs), and those a Shadertoy Image pass flagged, counted over
-  // everything before the file is made.
-  const auto check_nonfinite = [&](long long nonfinite) {
-    if (nonfinite <= 0) return;
-    const std::string what = std::to_string(nonfinite) + " of " +
-                             std::to_string(static_cast<long long>(fp.width) * fp.height) +
-                             " pixels have NaN/Inf values";
-    if (a.strict) throw Error({Exit::threshold, input.string(), 0, "--strict", what + "; nothing written", {}, {}});
-    std::fprintf(stderr, "marchstudio: %s: warning: %s (--strict makes this an error)\n", input.string().c_str(),
-                 what.c_str());
-  };
-  ImageMetadata meta{{"Software", "marchstudio 0.1.0"},
-                     {"ImageDescription", input.filename().string() + " t=" + std::to_string(time) +
-                                              " spp=" + std::to_string(fp.spp)}};
-  add_fingerprint(meta, frame_fingerprint(job_fingerprint(in, fp, post_src, aov_names, scene.shadertoy.fps), a.frame,
-                                          time));
-  if (tiling.tiled()) {  // rendered and written band by band
-    render_tiled_file({output, aov_names, meta, watchdog ? &*watchdog : nullptr, &deadline, check_nonfinite},
-                      renderer, graph, post_prog, still, tiling);
-    if (a.verbose)
-      std::fprintf(stderr, "marchstudio: context %.1f ms, compile %.1f ms, render and write %.1f ms (tiles of %dx%d)\n",
-                   t_context * 1e3, t_compile * 1e3, clock.lap() * 1e3, tiling.tile_width, tiling.band_height);
-    std::printf("%s\n", output.string().c_str());
-    return 0;
-  }
-  Still out = render_still(renderer, graph, post_prog, still);
-  Image img = std::move(out.color);
-  check_nonfinite(count_nonfinite_pixels(img, aovs ? &out.aovs : nullptr) + out.flagged);
-  if (aovs) img = append_channels(img, select_channels(out.aovs, aov_names));
-  const double t_render = clock.lap();
-  deadline.check("the render");
-  if (watchdog) watchdog->disarm();  // the write is atomic and must not be cut short
-  write_image(img, output, meta);
-  if (a.verbose)
-    std::fprintf(stderr, "marchstudio: context %.1f ms, compile %.1f ms, render %.1f ms, write %.1f ms\n",
-                 t_context * 1e3, t_compile * 1e3, t_render * 1e3, clock.lap() * 1e3);
-  std::printf("%s\n", output.string().c_str());
+  RenderSession session;
+  render_still_job(job, session);
+  std::printf("%s\n", job.output.string().c_str());
   return 0;
 }
 

@@ -14,9 +14,15 @@ class App;
 
 namespace ms {
 
+// The flags as given; cli/render_job.h turns them into RenderJobs, which is
+// all the still pipeline reads.
 struct RenderArgs {
-  std::string input;
+  std::vector<std::string> inputs;  // positional: one, or a batch of several (cli/batch.h)
+  std::string input;      // the one input of a still, a sequence or --watch (inputs[0])
   std::string output;     // empty: <input stem>.png in the current directory
+  std::string output_dir; // a batch's DIR/<stem>.<format>
+  std::string format;     // png (empty), exr, tif or jpg: outputs named from the input
+  std::string jobs;       // --jobs FILE: JSON lines, one still each (cli/job_list.h)
   std::string size;       // "WxH", empty: the scene's
   double time = 0.0;      // seconds; explicit default 0, never the wall clock
   bool time_set = false;

@@ -1,0 +1,140 @@
+#include "cli/batch.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <new>
+
+#include "cli/job_list.h"
+#include "cli/progress.h"
+#include "cli/render_cmd.h"
+#include "cli/sequence_cmd.h"
+#include "cli/still_job.h"
+#include "core/error.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Flags that make no sense for many stills: refused before anything runs.
+void check_batch_flags(const RenderArgs& a) {
+  if (wants_sequence(a))
+    fail_input("--frames (and --shard, --video, --no-write) render one input's sequence, not a batch", {}, 0,
+               "--frames", "run one `render --frames` per input");
+  if (!a.output.empty())
+    fail_input("-o names one file, and this batch has several", {}, 0, "-o",
+               "give --output-dir DIR (each input to DIR/<stem>.<format>), or an \"output\" per line of --jobs");
+  if (a.watch) fail_input("--watch renders one input, not a batch", {}, 0, "--watch");
+  if (a.print_shader) fail_input("--print-shader prints one input's shader, not a batch's", {}, 0, "--print-shader");
+}
+
+// The line printed for a job's error: prefixed with the job's name unless
+// the error already starts with it (a bad --jobs line is blamed on FILE:LINE).
+std::string job_error_line(const std::string& label, const Error& e) {
+  const std::string what = e.what();
+  if (what.rfind(label + ":", 0) == 0) return "marchstudio: " + what;
+  return "marchstudio: " + label + ": " + what;
+}
+
+std::vector<BatchEntry> batch_entries(const RenderArgs& a) {
+  std::vector<BatchEntry> entries;
+  for (const std::string& input : a.inputs) {
+    BatchEntry e;
+    e.label = input;
+    try {
+      e.job = make_render_job(a, input, batch_output(a, input));
+    } catch (const Error& err) {
+      e.error.emplace(err.info());
+    }
+    entries.push_back(std::move(e));
+  }
+  if (!a.jobs.empty())
+    for (BatchEntry& e : read_job_list(a.jobs, a, [&a](const fs::path& in) { return batch_output(a, in); }))
+      entries.push_back(std::move(e));
+  return entries;
+}
+
+// Two jobs writing one file would leave whichever finished last: refused.
+void refuse_shared_outputs(const std::vector<BatchEntry>& entries) {
+  std::map<fs::path, const BatchEntry*> by_output;
+  for (const BatchEntry& e : entries) {
+    if (!e.job) continue;
+    std::error_code ec;
+    fs::path key = fs::weakly_canonical(fs::absolute(e.job->output, ec), ec);
+    if (ec) key = e.job->output.lexically_normal();
+    const auto [it, fresh] = by_output.emplace(key, &e);
+    if (!fresh)
+      fail_input("'" + e.label + "' and '" + it->second->label + "' would both write " + e.job->output.string(), {},
+                 0, "--output-dir",
+                 "inputs of a batch need different stems; rename one, or list them in --jobs with an \"output\" each");
+  }
+}
+
+}  // namespace
+
+bool wants_batch(const RenderArgs& a) { return a.inputs.size() > 1 || !a.output_dir.empty() || !a.jobs.empty(); }
+
+fs::path batch_output(const RenderArgs& a, const fs::path& input) {
+  const std::string name = input.stem().string() + "." + (a.format.empty() ? std::string("png") : a.format);
+  return a.output_dir.empty() ? fs::path(name) : fs::path(a.output_dir) / name;
+}
+
+int run_batch(const RenderArgs& a) {
+  check_batch_flags(a);
+  std::error_code ec;
+  // A missing directory is made with the first file, as -o makes one.
+  if (!a.output_dir.empty() && fs::exists(a.output_dir, ec) && !fs::is_directory(a.output_dir, ec))
+    fail_input("not a directory", a.output_dir, 0, "--output-dir");
+  const std::vector<BatchEntry> entries = batch_entries(a);
+  if (entries.empty()) fail_input("the batch has no jobs", a.jobs, 0, "--jobs", "one JSON object per line");
+  refuse_shared_outputs(entries);
+
+  const int total = static_cast<int>(entries.size());
+  const bool tty = total > 1 && ::isatty(2) == 1;
+  const bool paths_on_bar = tty && ::isatty(1) == 1;  // one terminal: a path is printed over the bar
+  Progress progress(total, tty, stderr, "images");
+  const auto say = [&](const std::string& line) {
+    if (tty) progress.line(line.substr(std::string("marchstudio: ").size()));
+    else std::fprintf(stderr, "%s\n", line.c_str());
+  };
+  RenderSession session;
+  int failed = 0, worst = 0;
+  progress.start();
+  for (int i = 0; i < total; ++i) {
+    const BatchEntry& e = entries[static_cast<std::size_t>(i)];
+    const auto t0 = std::chrono::steady_clock::now();
+    int code = 0;
+    try {
+      if (e.error) throw *e.error;
+      render_still_job(*e.job, session);
+      if (paths_on_bar) std::fprintf(stderr, "\r\x1b[K");  // the bar redraws below the path
+      std::printf("%s\n", e.job->output.string().c_str());
+      std::fflush(stdout);
+    } catch (const Error& err) {
+      say(job_error_line(e.label, err));
+      if (!err.info().detail.empty() && a.verbose) std::fprintf(stderr, "%s", err.info().detail.c_str());
+      code = static_cast<int>(err.code());
+    } catch (const std::bad_alloc&) {
+      say("marchstudio: " + e.label + ": out of memory");
+      code = static_cast<int>(Exit::system);
+    }
+    if (code != 0) {
+      ++failed;
+      worst = std::max(worst, code);
+    }
+    progress.rendered(i, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  progress.finish();
+  if (a.verbose)
+    std::fprintf(stderr, "marchstudio: batch: %d images, %ld programs compiled, %ld from the cache\n", total - failed,
+                 session.cache.misses(), session.cache.hits());
+  if (failed > 0)
+    std::fprintf(stderr, "marchstudio: %d of %d job%s failed\n", failed, total, total == 1 ? "" : "s");
+  return worst;
+}
+
+}  // namespace ms

@@ -1,0 +1,50 @@
+// `render --jobs FILE`: a JSON-lines job list, one still per line, each an
+// object whose keys are render's long flags without the dashes:
+//
+//   {"scene": "scenes/seed.toml", "output": "out/a.png", "size": "320x180", "set": ["camera.fov=30"]}
+//
+// The command line's flags are every job's defaults: a scalar key (size,
+// spp, time, preset, ...) replaces the flag's value, a list key (set,
+// uniform, define, disable, aov, allow-include) adds to the flag's values,
+// after them (so a job's --set of a key the command line also sets wins).
+// Paths in a line (scene, output, shader-dir, media-dir, allow-include) are
+// relative to the job file's directory, so a list means the same from any
+// working directory. A line without "output" is named as the batch names
+// positional inputs (cli/batch.h). Blank lines are skipped.
+//
+// A bad line (not JSON, an unknown key, a value of the wrong type or out of
+// range) is not fatal: its entry carries the one-line error, blamed on
+// FILE:LINE and the key, and the batch renders the others.
+#pragma once
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/render_job.h"
+#include "core/error.h"
+
+namespace ms {
+
+struct RenderArgs;
+
+// One job of a batch, or why it cannot be one.
+struct BatchEntry {
+  std::string label;             // "jobs.jsonl:3", or the input as given
+  std::optional<RenderJob> job;  // empty when `error` says why
+  std::optional<Error> error;
+};
+
+// The output a job without "output" gets, from its input.
+using DefaultOutput = std::function<std::filesystem::path(const std::filesystem::path& input)>;
+
+// Every non-blank line of `file` as an entry. Throws (bad input, or system
+// when it cannot be read) only when the file itself cannot be read.
+std::vector<BatchEntry> read_job_list(const std::filesystem::path& file, const RenderArgs& defaults,
+                                      const DefaultOutput& default_output);
+
+// The keys a line may have, for docs and did-you-mean.
+const std::vector<std::string>& job_keys();
+
+}  // namespace ms

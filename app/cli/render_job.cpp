@@ -1,0 +1,85 @@
+#include "cli/render_job.h"
+
+#include <cmath>
+#include <string_view>
+
+#include "cli/flag_checks.h"
+#include "cli/render_cmd.h"
+#include "cli/shader_dir.h"
+#include "core/error.h"
+#include "io/image_io.h"
+#include "io/sequence.h"
+#include "render/aov.h"
+#include "scene/quality.h"
+#include "scene/suggest.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The flags' validators run on the command line; a --jobs line arrives
+// without them, so every named value is checked again here.
+void check_one_of(const std::string& value, const std::vector<std::string>& names, const std::string& flag) {
+  std::vector<std::string_view> views(names.begin(), names.end());
+  for (const auto& n : names)
+    if (n == value) return;
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  fail_input("'" + value + "' is not one of " + list, {}, 0, flag, did_you_mean(value, views));
+}
+
+}  // namespace
+
+RenderJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::path& output) {
+  RenderJob job;
+  job.label = input.string();
+  job.input = input;
+  if (!std::isfinite(a.timeout) || a.timeout < 0)
+    fail_input("--timeout must be a number of seconds >= 0 (0: no limit)", {}, 0, "--timeout");
+  job.timeout = a.timeout;
+  if (!std::isfinite(a.time)) fail_input("--time must be a finite number", {}, 0, "--time");
+  if (a.time_set) job.time = static_cast<float>(a.time);
+  if (a.spp < 0 || a.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
+  job.spp = a.spp;
+  if (a.frame < 0) fail_input("--frame must be >= 0", {}, 0, "--frame");
+  job.frame = a.frame;
+  if (a.fps_set) {
+    if (!std::isfinite(a.fps) || a.fps <= 0) fail_input("--fps must be a positive number", {}, 0, "--fps");
+    job.fps = a.fps;
+  }
+  if (a.tile_size < 0) fail_input("--tile-size must be >= 0", {}, 0, "--tile-size");
+  if (a.tile_still < 0) fail_input("--tile-still must be >= 0", {}, 0, "--tile-still");
+  job.tile_size = a.tile_size;
+  job.tile_still = a.tile_still;
+  job.backend = parse_backend(a.backend);
+  if (!a.size.empty()) job.size = parse_size_flag(a.size);
+  for (const std::string& d : a.disable) check_one_of(d, kEffectNames, "--disable");
+  job.disable = a.disable;
+  if (!a.preset.empty()) check_one_of(a.preset, quality_preset_names(), "--preset");
+  job.preset = a.preset;
+  for (const std::string& n : a.aov) check_one_of(n, kAovNames, "--aov");
+  if (!a.aov.empty()) job.aov_channels = aov_channels(a.aov);
+  job.defines = parse_defines(a.defines);
+  job.allow_include = parse_allow_include(a.allow_include);
+  job.shader_dir = resolve_shader_dir(a.shader_dir);
+  job.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
+  job.strict = a.strict;
+  job.verbose = a.verbose;
+  job.shadertoy = a.shadertoy;
+  job.overrides = a.overrides;
+
+  job.output = !output.empty()     ? output
+               : !a.output.empty() ? fs::path(a.output)
+                                   : fs::path(input.stem().string() + ".png");
+  if (has_frame_field(job.output.string()))
+    fail_input("the output '" + job.output.string() + "' has a frame field but there is no --frames", {}, 0,
+               "--frames", "e.g. --frames 0..59 -o " + job.output.string() + "; for one image name a file without %d");
+  check_output_path(job.output);  // before any work: no file is ever half-made
+  if (job.aovs() && is_display_format(image_format_for(job.output)))
+    fail_input("--aov needs an .exr output, not '" + job.output.filename().string() + "'", {}, 0, "--aov",
+               "AOVs are extra float channels, which only OpenEXR holds");
+  return job;
+}
+
+}  // namespace ms
