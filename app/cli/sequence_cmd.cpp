@@ -19,6 +19,8 @@
 #include "core/error.h"
 #include "gl/context.h"
 #include "io/frame_writer.h"
+#include "io/direct_codec.h"
+#include "io/image_backend.h"
 #include "io/image_io.h"
 #include "io/sequence.h"
 #include "io/video.h"
@@ -241,6 +243,10 @@ int run_sequence(const RenderArgs& a) {
   StopSignals signals;
   if (!todo.empty()) {
     std::unique_ptr<Context> ctx = create_headless_context(parse_backend(a.backend));
+    // A TIFF or JPEG needs the image module (PNG and EXR do not: io/direct_codec.h):
+    // it loads while the shaders compile and the frame renders, not before the
+    // context, whose driver dlopen would wait for it (io/image_backend.h).
+    if (!writes_directly(image_format_for(pattern.path(plan.range.first)))) preload_image_backend();
     if (a.verbose)
       std::fprintf(stderr, "marchstudio: backend %s, GL_RENDERER %s\n", ctx->backend().c_str(),
                    ctx->info().renderer.c_str());
