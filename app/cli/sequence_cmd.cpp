@@ -17,6 +17,7 @@
 #include "cli/render_cmd.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
+#include "core/signal_scope.h"
 #include "gl/context.h"
 #include "io/frame_writer.h"
 #include "io/direct_codec.h"
@@ -54,25 +55,11 @@ extern "C" void on_stop_signal(int sig) { g_stop_signal = sig; }
 
 class StopSignals {
  public:
-  StopSignals() {
-    g_stop_signal = 0;
-    struct sigaction sa {};
-    sa.sa_handler = on_stop_signal;
-    sa.sa_flags = SA_RESETHAND;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int_);
-    sigaction(SIGTERM, &sa, &old_term_);
-  }
-  ~StopSignals() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
+  StopSignals() : scope_(on_stop_signal, SA_RESETHAND) { g_stop_signal = 0; }
   int signal() const { return g_stop_signal; }
 
  private:
-  struct sigaction old_int_ {}, old_term_ {};
+  SignalScope scope_;
 };
 
 // One writer per four cores, at most 4: on a small machine the renderer

@@ -6,10 +6,12 @@
 #include <chrono>
 #include <climits>
 #include <cstring>
+#include <optional>
 
 #include "bench/bench.h"
 #include "cli/progress.h"
 #include "core/error.h"
+#include "core/signal_scope.h"
 #include "io/image_stream.h"
 #include "render/aov.h"
 #include "render/tiled_still.h"
@@ -34,22 +36,12 @@ extern "C" void remove_temp_and_exit(int sig) {
 class RemoveOnSignal {
  public:
   explicit RemoveOnSignal(const fs::path& temp) {
-    std::strncpy(g_temp, temp.c_str(), sizeof g_temp - 1);
-    struct sigaction sa {};
-    sa.sa_handler = remove_temp_and_exit;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int_);
-    sigaction(SIGTERM, &sa, &old_term_);
+    std::strncpy(g_temp, temp.c_str(), sizeof g_temp - 1);  // first: the handler may run at once
+    scope_.emplace(remove_temp_and_exit);
   }
-  ~RemoveOnSignal() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  RemoveOnSignal(const RemoveOnSignal&) = delete;
-  RemoveOnSignal& operator=(const RemoveOnSignal&) = delete;
 
  private:
-  struct sigaction old_int_ {}, old_term_ {};
+  std::optional<SignalScope> scope_;
 };
 
 }  // namespace
