@@ -26,6 +26,7 @@ struct PassGraph::Gpu {
   GLuint vao = 0;
   GLuint black = 0, keyboard = 0;
   std::map<const Image*, GLuint> textures;
+  std::map<const Volume*, GLuint> volumes;
   std::map<int, GLuint> samplers;  // by filter * 2 + wrap
   Buffer buffers[4];
   bool used[4] = {false, false, false, false};
@@ -70,6 +71,26 @@ GLuint upload(const GraphInput& in) {
   return tex;
 }
 
+// A volume as a GL_TEXTURE_3D, 8-bit as Shadertoy stores its volumes.
+GLuint upload(const Volume& v, const Sampler& sampler) {
+  const bool mips = sampler.filter == TexFilter::mipmap;
+  GLuint tex = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_3D, tex);
+  glTexStorage3D(GL_TEXTURE_3D, mips ? mip_levels(v.size, v.size) : 1, v.channels == 1 ? GL_R8 : GL_RGBA8, v.size,
+                 v.size, v.size);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, v.size, v.size, v.size, v.channels == 1 ? GL_RED : GL_RGBA,
+                  GL_UNSIGNED_BYTE, v.voxels.data());
+  if (mips) glGenerateMipmap(GL_TEXTURE_3D);
+  return tex;
+}
+
+// Where a channel's texture binds: its sampler type's target.
+GLenum gl_target(ChannelType t) {
+  return t == ChannelType::cube ? GL_TEXTURE_CUBE_MAP : t == ChannelType::tex3d ? GL_TEXTURE_3D : GL_TEXTURE_2D;
+}
+
 }  // namespace
 
 PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
@@ -101,12 +122,15 @@ PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
       const GLint wrap = w == 0 ? GL_CLAMP_TO_EDGE : GL_REPEAT;
       glSamplerParameteri(s, GL_TEXTURE_WRAP_S, wrap);
       glSamplerParameteri(s, GL_TEXTURE_WRAP_T, wrap);
+      glSamplerParameteri(s, GL_TEXTURE_WRAP_R, wrap);  // volumes (and cubemaps' third coordinate)
       g.samplers[f * 2 + w] = s;
     }
   for (const PassSource& p : passes_)
     for (const GraphInput& in : p.inputs)
       if (in.kind == InputKind::texture && in.image && !g.textures.count(in.image.get()))
         g.textures[in.image.get()] = upload(in);
+      else if (in.kind == InputKind::volume && in.volume && !g.volumes.count(in.volume.get()))
+        g.volumes[in.volume.get()] = upload(*in.volume, in.sampler);
   pass_ms_.assign(passes_.size(), 0.0);
 }
 
@@ -117,6 +141,7 @@ PassGraph::~PassGraph() {
     glDeleteTextures(2, b.tex);
   }
   for (auto& [img, tex] : g.textures) glDeleteTextures(1, &tex);
+  for (auto& [vol, tex] : g.volumes) glDeleteTextures(1, &tex);
   for (auto& [key, s] : g.samplers) glDeleteSamplers(1, &s);
   glDeleteTextures(1, &g.black);
   glDeleteTextures(1, &g.keyboard);
@@ -183,7 +208,7 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
   for (int c = 0; c < 4; ++c) {
     const GraphInput& in = passes_[pass].inputs[c];
     GLuint tex = g.black;
-    float rw = 0, rh = 0;
+    float rw = 0, rh = 0, rd = 1;
     switch (in.kind) {
       case InputKind::buffer:
         tex = g.buffers[in.buffer].tex[g.buffers[in.buffer].latest];  // as it stands now
@@ -200,17 +225,21 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
         rw = 256;
         rh = 3;
         break;
+      case InputKind::volume:
+        tex = g.volumes.at(in.volume.get());
+        rw = rh = rd = static_cast<float>(in.volume->size);
+        break;
       default:
         break;
     }
     glActiveTexture(GL_TEXTURE0 + c);
-    glBindTexture(GL_TEXTURE_2D, tex);
+    glBindTexture(gl_target(channel_type(in.kind)), tex);
     const int filter = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.filter);
     const int wrap = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.wrap);
     glBindSampler(c, in.kind == InputKind::none ? 0 : g.samplers.at(filter * 2 + wrap));
     res[c][0] = rw;
     res[c][1] = rh;
-    res[c][2] = in.kind == InputKind::none ? 0.0f : 1.0f;
+    res[c][2] = in.kind == InputKind::none ? 0.0f : rd;
   }
   glActiveTexture(GL_TEXTURE0);
 }

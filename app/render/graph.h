@@ -32,11 +32,19 @@
 
 namespace ms {
 
+// A cube of 8-bit voxels, `size` on each side: a volume input's contents.
+struct Volume {
+  int size = 0;
+  int channels = 1;                   // 1 (sampled (v, 0, 0, 1)) or 4
+  std::vector<std::uint8_t> voxels;   // channels per voxel; x fastest, then y, then z
+};
+
 // One channel as the GL binds it; made before any context exists.
 struct GraphInput {
-  InputKind kind = InputKind::none;  // none, buffer, texture or keyboard here
+  InputKind kind = InputKind::none;  // none, buffer, texture, keyboard or volume here
   int buffer = -1;                    // buffer: 0..3 (A..D)
   std::shared_ptr<const Image> image; // texture: decoded (top row first)
+  std::shared_ptr<const Volume> volume;  // volume: its voxels
   bool eight_bit = true;              // texture: stored as RGBA8 (PNG, JPEG), else as float (EXR, HDR)
   bool single_channel = false;        // texture: uploaded as one channel, sampled (v, 0, 0, 1)
   Sampler sampler;

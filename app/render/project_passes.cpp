@@ -60,11 +60,38 @@ Image media_standin(const std::string& src, MissingMedia kind) {
   return img;
 }
 
+std::uint8_t volume_noise_byte(int x, int y, int z, int c, int size) {
+  const std::uint32_t v = static_cast<std::uint32_t>(x + size * (y + size * z));
+  const std::uint32_t state = v * 747796405u + 2891336453u;
+  const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return static_cast<std::uint8_t>(((word >> 22u) ^ word) >> (8 * c));
+}
+
+Volume volume_standin(const ShadertoyMedia& m, MissingMedia kind) {
+  Volume v;
+  v.channels = m.single_channel ? 1 : 4;
+  if (kind == MissingMedia::black) {
+    v.size = 1;
+    v.voxels.assign(static_cast<size_t>(v.channels), 0);
+    if (v.channels == 4) v.voxels[3] = 255;
+    return v;
+  }
+  v.size = m.noise_size;
+  v.voxels.resize(static_cast<size_t>(v.size) * v.size * v.size * v.channels);
+  size_t i = 0;
+  for (int z = 0; z < v.size; ++z)
+    for (int y = 0; y < v.size; ++y)
+      for (int x = 0; x < v.size; ++x)
+        for (int c = 0; c < v.channels; ++c) v.voxels[i++] = volume_noise_byte(x, y, z, c, v.size);
+  return v;
+}
+
 std::vector<PassSource> shadertoy_passes(const ShaderProject& p, const ShadertoySettings& s, const AssembleOptions& opts,
                                          const fs::path& scene_file, std::vector<std::string>& warnings) {
   const std::string origin = display_path(scene_file.empty() ? p.origin : scene_file);
   warnings.insert(warnings.end(), p.warnings.begin(), p.warnings.end());
   std::map<fs::path, std::shared_ptr<const Image>> decoded;  // a file used twice is read once
+  std::map<std::string_view, std::shared_ptr<const Volume>> volumes;  // by hash: one upload per volume
   std::vector<PassSource> out;
   for (size_t i = 0; i < p.passes.size(); ++i) {
     const ProjectPass& pass = p.passes[i];
@@ -103,6 +130,23 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& p, const Shadertoy
           if (!img) img = std::make_shared<const Image>(read_image(f));
           g.image = img;
           g.eight_bit = !is_hdr(f);
+          break;
+        }
+        case InputKind::volume: {
+          const ShadertoyMedia* known = find_shadertoy_media(in.src);
+          if (!known || !known->volume)
+            fail_input(where + ": volume '" + in.src + "' is not one of Shadertoy's volumes", origin, 0, where,
+                       "marchstudio stands in for Gray Noise 3D and RGBA Noise 3D, by their /media/a/<hash>.bin");
+          const std::string what = where + ": volume '" + in.src + "' (" + std::string(known->name) + ")";
+          if (s.missing_media == MissingMedia::error)
+            fail_input(what + " is not read from files", origin, 0, where,
+                       "give --missing-media noise for a generated 32^3 stand-in (not Shadertoy's voxels), or "
+                       "--missing-media black");
+          const bool noise = s.missing_media == MissingMedia::noise;
+          warnings.push_back(what + ": " + (noise ? "generated noise stands in (not Shadertoy's voxels)" : "black stands in"));
+          auto& vol = volumes[known->hash];
+          if (!vol) vol = std::make_shared<const Volume>(volume_standin(*known, s.missing_media));
+          g.volume = vol;
           break;
         }
         default:

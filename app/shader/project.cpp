@@ -21,6 +21,14 @@ const char* input_kind_name(InputKind k) {
   return "?";
 }
 
+ChannelType channel_type(InputKind k) {
+  return k == InputKind::cubemap ? ChannelType::cube : k == InputKind::volume ? ChannelType::tex3d : ChannelType::tex2d;
+}
+
+const char* glsl_sampler_type(ChannelType t) {
+  return t == ChannelType::cube ? "samplerCube" : t == ChannelType::tex3d ? "sampler3D" : "sampler2D";
+}
+
 std::string buffer_letter(int buffer) { return std::string(1, static_cast<char>('A' + buffer)); }
 
 void check_project(const ShaderProject& p, const std::string& file) {

@@ -26,16 +26,22 @@ struct Sampler {
 };
 
 // What a channel reads. Shadertoy's ctypes; the ones marchstudio does not
-// run yet (cubemap, volume, audio, video, webcam, mic) are refused where the
+// run yet (cubemap, audio, video, webcam, mic) are refused where the
 // project is loaded, never bound as black.
 enum class InputKind { none, buffer, texture, keyboard, cubemap, volume, music, musicstream, mic, video, webcam };
 
 const char* input_kind_name(InputKind k);
 
+// The sampler type a channel is declared with follows what is bound to it
+// (buffers, textures, the keyboard and an empty channel are 2D).
+enum class ChannelType { tex2d, cube, tex3d };
+ChannelType channel_type(InputKind k);
+const char* glsl_sampler_type(ChannelType t);  // "sampler2D", "samplerCube", "sampler3D"
+
 struct ProjectInput {
   InputKind kind = InputKind::none;
   int buffer = -1;   // buffer: 0..3 for A..D
-  std::string src;   // texture: as given ("/media/a/<hash>.png", or a path from a scene file)
+  std::string src;   // texture, volume: as given ("/media/a/<hash>.png", or a path from a scene file)
   std::filesystem::path file;  // texture: the file found for src (load_media resolves it)
   Sampler sampler;
 };

@@ -144,7 +144,7 @@ class Loader {
 
   Sampler sampler(const json& in, InputKind kind, const std::string& path) const {
     Sampler s;
-    if (kind == InputKind::texture) {  // Shadertoy's defaults for a texture
+    if (kind == InputKind::texture || kind == InputKind::volume) {  // Shadertoy's defaults for a texture
       s.filter = TexFilter::mipmap;
       s.wrap = TexWrap::repeat;
       s.vflip = true;
@@ -190,6 +190,7 @@ class Loader {
       if (out.buffer < 0) fail(path, "a buffer input that names no buffer A..D", "its id is 257..260 (A..D)");
     }
     if (out.kind == InputKind::texture && src.empty()) fail(path, "a texture input without a src");
+    if (out.kind == InputKind::volume && src.empty()) fail(path, "a volume input without a src");
     out.sampler = sampler(in, out.kind, path);
     return out;
   }

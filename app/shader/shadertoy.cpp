@@ -32,8 +32,11 @@ std::string wrapper_head(const ProjectPass& pass) {
       "uniform float     iSampleRate;\n"
       "uniform float     iChannelTime[4];\n"
       "uniform vec3      iChannelResolution[4];\n";
+  // One line per channel whatever its type, so the wrapper's line count,
+  // and with it the #line mapping of errors, never depends on the bindings.
   for (size_t c = 0; c < pass.inputs.size(); ++c)
-    s += "uniform sampler2D iChannel" + std::to_string(c) + ";\n";  // 2D: buffers, textures, the keyboard
+    s += std::string("uniform ") + glsl_sampler_type(channel_type(pass.inputs[c].kind)) + " iChannel" +
+         std::to_string(c) + ";\n";
   s += "uniform vec2      uJitter;               // marchstudio: sub-pixel sample position\n"
        "uniform vec2      uPixelOffset;          // marchstudio: a tile's lower-left pixel in the image\n"
        "layout(location = 0) out vec4 outColor;\n"

@@ -14,6 +14,7 @@ struct ShadertoyMedia {
   std::string_view name;   // as the site names it ("Gray Noise Medium")
   bool single_channel;     // uploaded as R8
   int noise_size;          // > 0: a noise texture of this size, which marchstudio can stand in for
+  bool volume;             // a 3D texture (noise_size^3), read through a volume input
 };
 
 // The entry for a src ("/media/a/<hash>.png") or a bare file name, or null.
