@@ -13,6 +13,7 @@
 #include "io/input_file.h"
 #include "live/viewer.h"
 #include "scene/load.h"
+#include "scene/quality.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -28,6 +29,8 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
                   "Start in a debug view: 0 lit, 1 steps, 2 normals, 3 depth, 4 AO, 5 shadow, 6 material id")
       ->check(CLI::Range(0, 6));
   cmd->add_option("--time", a.time, "Start time in seconds (default: the scene's)")->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--preset", a.preset, "Quality preset to start with, as render --preset (default: the scene's)")
+      ->check(one_of(quality_preset_names()));
   cmd->add_flag("--paused", a.paused, "Start with time paused");
   cmd->add_option("--log", a.log, "Write event lines (reload ok/failed, captures, frame times) here, not stderr");
   cmd->add_option("--capture-dir", a.capture_dir,
@@ -94,6 +97,7 @@ int run_view(const ViewArgs& a) {
     o.shot_height = size.height;
   }
   o.debug_view = a.debug_view;
+  o.preset = a.preset;
   o.time = a.time;
   o.paused = a.paused;
   o.log_file = a.log;

@@ -8,6 +8,7 @@
 
 #include "gl/context.h"
 #include "live/input.h"
+#include "scene/quality.h"
 #include "shader/assemble.h"
 
 namespace ms::live {
@@ -46,11 +47,14 @@ void time_and_view(ViewState& s, Session& session) {
 
 void quality(ViewState& s, Session& session) {
   Quality& q = session.scene().quality;
-  int preset = static_cast<int>(session.preset());
-  const char* presets[] = {"fast", "balanced", "reference"};
-  if (ImGui::Combo("preset", &preset, presets, 3)) {
-    session.set_preset(static_cast<QualityPreset>(preset));
-    s.want_reassemble = true;
+  // The presets `render --preset` has (scene/quality.h), by the same names.
+  if (ImGui::BeginCombo("preset", session.preset().c_str())) {
+    for (const std::string& name : quality_preset_names())
+      if (ImGui::Selectable(name.c_str(), name == session.preset())) {
+        session.set_preset(name);
+        s.want_reassemble = true;
+      }
+    ImGui::EndCombo();
   }
   if (ImGui::Checkbox("shadows", &q.shadows)) s.want_reassemble = true;
   ImGui::SameLine();

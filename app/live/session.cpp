@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "render/project_passes.h"
+#include "scene/quality.h"
 #include "shader/shadertoy.h"
 
 namespace ms::live {
@@ -17,10 +18,11 @@ bool same_camera(const Camera& a, const Camera& b) {
 
 }  // namespace
 
-void Session::set_preset(QualityPreset p) {
-  preset_ = p;
+void Session::set_preset(const std::string& name) {
+  preset_ = name;
+  if (!disk_ok_) return;  // reload(true) applies it to what it reads
   const Quality cur = scene_.quality;
-  scene_.quality = apply_preset(file_scene_.quality, p);
+  scene_.quality = preset_.empty() ? file_scene_.quality : with_preset(file_scene_.quality, preset_);
   scene_.quality.shadows = cur.shadows;
   scene_.quality.ao = cur.ao;
   scene_.quality.reflections = cur.reflections;
@@ -43,7 +45,7 @@ ReloadResult Session::reload(bool from_disk) {
       disk_ok_ = true;
       file_scene_ = fresh;
       scene_ = fresh;  // a saved TOML replaces the panel's values
-      scene_.quality = apply_preset(fresh.quality, preset_);
+      if (!preset_.empty()) scene_.quality = with_preset(fresh.quality, preset_);
     }
     AssembleOptions opts = opts_.assemble;
     const bool specialized = !shadertoy() && opts.specialize != Specialization::generic;

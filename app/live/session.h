@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "live/presets.h"
 #include "live/scene_params.h"
 #include "render/graph.h"
 #include "render/program.h"
@@ -67,9 +66,13 @@ class Session {
   int generation() const { return generation_; }  // +1 per successful reload
   const std::string& error() const { return error_; }
 
-  // The preset applies to the file's [quality]; toggles survive a preset change.
-  void set_preset(QualityPreset p);
-  QualityPreset preset() const { return preset_; }
+  // A preset of scene/quality.h, re-based on the file's [quality] exactly as
+  // `render --preset` does (its explicit keys kept); toggles survive a
+  // preset change. Empty: the file's own preset. Applies at once when the
+  // file is loaded, else at the first reload.
+  void set_preset(const std::string& name);
+  // The preset in use: the one set, else the file's (default "balanced").
+  const std::string& preset() const { return preset_.empty() ? file_scene_.quality.preset : preset_; }
   // DEBUG_VIEW compiled into the current program (0 = lit), and the one to use next.
   int compiled_debug_view() const { return compiled_debug_view_; }
   int debug_view = 0;
@@ -91,7 +94,7 @@ class Session {
   SessionOptions opts_;
   Scene scene_, file_scene_;
   bool disk_ok_ = false;
-  QualityPreset preset_ = QualityPreset::balanced;
+  std::string preset_;  // empty: the file's
   std::shared_ptr<PassGraph> graph_;
   std::shared_ptr<const Program> post_;
   std::vector<std::string> warnings_;

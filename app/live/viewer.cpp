@@ -277,6 +277,7 @@ int Viewer::run() {
   s_.show_panel = !o_.hide_panel;
   s_.paused = o_.paused;
   s_.debug_view = session_.debug_view = std::clamp(o_.debug_view, 0, kDebugViews - 1);
+  session_.set_preset(o_.preset);
   reload(true, seconds_now(), 0, 1);  // the initial build is number 0 (frame_0.png)
   s_.shadertoy = session_.shadertoy();
   s_.start_time = o_.time >= 0.0 ? o_.time : session_.scene().render.time;

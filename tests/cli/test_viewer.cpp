@@ -209,6 +209,32 @@ TEST_F(Viewer, OverridesHoldAcrossReloads) {
   EXPECT_LT(mean_abs_diff(capture(2), first), 1e-3) << "a save of the map dropped them";
 }
 
+// One home for presets (issue 17): `view --preset NAME` starts from the
+// same values as `render --preset NAME`, textbook included, so its first
+// frame is render's image at that preset.
+TEST_F(Viewer, PresetsAreRendersPresets) {
+  auto render = [&](const std::string& preset) {
+    const fs::path out = dir / ("render_" + preset + ".png");
+    EXPECT_EQ(run_marchstudio({"render", (dir / "seed.toml").string(), "--size", "160x90", "--preset", preset, "-o",
+                               out.string()})
+                  .exit_code,
+              0);
+    return read_image(out);
+  };
+  const Image balanced = render("balanced");
+  double moved = 0;  // how far some preset moves render's image: the test can see a preset ignored
+  for (const std::string preset : {"fast", "balanced", "reference", "textbook"}) {
+    proc.reset();
+    fs::remove(log());
+    fs::remove_all(dir / "cap");
+    start({"--preset", preset});
+    const Image want = render(preset), got = capture(0);
+    EXPECT_LE(max_abs_diff(got, want), 1.0 / 255.0) << preset << ": the viewer's frame is not render's";
+    moved = std::max(moved, max_abs_diff(want, balanced));
+  }
+  EXPECT_GT(moved, 2.0 / 255.0) << "no preset changed render's image of the seed scene";
+}
+
 // Before any window: a missing scene is bad input (2), no display is a
 // system failure (3); neither needs Xvfb.
 TEST(ViewerStart, ExitCodesWithoutAWindow) {

@@ -6,7 +6,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -139,6 +141,16 @@ inline double mean_abs_diff(const Image& a, const Image& b) {
     for (int x = 0; x < a.width; ++x)
       for (int c = 0; c < 3; ++c) s += std::abs(a.at(x, y, c) - b.at(x, y, c));
   return s / (3.0 * a.width * a.height);
+}
+
+// The largest difference of any channel of any pixel (1e9 for other sizes).
+inline double max_abs_diff(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height) return 1e9;
+  double m = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x)
+      for (int c = 0; c < 3; ++c) m = std::max(m, static_cast<double>(std::abs(a.at(x, y, c) - b.at(x, y, c))));
+  return m;
 }
 
 // Replace a file the way vim and VS Code save it: write a temporary next to

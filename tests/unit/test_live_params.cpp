@@ -1,5 +1,5 @@
 // live/: the pure pieces of the viewer: ranged scene uniforms parsed from
-// GLSL, quality presets, and the frame-time medians.
+// GLSL and the frame-time medians.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +7,6 @@
 #include "live/frame_stats.h"
 #include "live/overlay.h"
 #include "live/panel.h"
-#include "live/presets.h"
 #include "live/scene_params.h"
 
 namespace ms::live {
@@ -78,40 +77,6 @@ TEST(LiveParams, CopiedDeclarationsReadBackTheSameValues) {
     EXPECT_EQ(back[i].hi, params[i].hi);
     EXPECT_EQ(back[i].color, params[i].color);
   }
-}
-
-TEST(LivePresets, ScaleTheFilesQuality) {
-  Quality q;
-  q.max_steps = 200;
-  q.shadow_steps = 64;
-  q.hit_tolerance = 0.5f;
-  q.ao_taps = 5;
-  q.bounces = 3;
-  const Quality fast = apply_preset(q, QualityPreset::fast);
-  EXPECT_EQ(fast.max_steps, 100);
-  EXPECT_EQ(fast.shadow_steps, 32);
-  EXPECT_FLOAT_EQ(fast.hit_tolerance, 1.0f);
-  EXPECT_EQ(fast.ao_taps, 3);
-  EXPECT_EQ(fast.bounces, 1);
-  const Quality bal = apply_preset(q, QualityPreset::balanced);
-  EXPECT_EQ(bal.max_steps, 200);
-  EXPECT_FLOAT_EQ(bal.hit_tolerance, 0.5f);
-  const Quality ref = apply_preset(q, QualityPreset::reference);
-  EXPECT_EQ(ref.max_steps, 800);
-  EXPECT_EQ(ref.shadow_steps, 256);
-  EXPECT_FLOAT_EQ(ref.hit_tolerance, 0.125f);
-  EXPECT_EQ(ref.ao_taps, 10);
-  EXPECT_EQ(ref.bounces, 3);
-}
-
-TEST(LivePresets, StayInsideTheLoadersRanges) {
-  Quality q;
-  q.max_steps = 1;
-  q.ao_taps = 60;
-  q.shadow_steps = 9000;
-  EXPECT_EQ(apply_preset(q, QualityPreset::fast).max_steps, 1);
-  EXPECT_EQ(apply_preset(q, QualityPreset::reference).ao_taps, 64);
-  EXPECT_EQ(apply_preset(q, QualityPreset::reference).shadow_steps, 10000);
 }
 
 TEST(LiveFrameStats, MedianOverTheLastSecond) {
