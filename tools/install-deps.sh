@@ -12,6 +12,8 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools
   libpng-dev libopenexr-dev         # io/direct_codec: PNG and EXR without loading OpenImageIO
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+  libsndfile1-dev libkissfft-dev    # Shadertoy music inputs: decode (dlopen'd) and the analyser's FFT
+  ffmpeg                            # render --video, and the tests that make video files
   libgtest-dev libgmock-dev
   glslang-tools                     # glslangValidator: shader tests and docs/specialization.md (skipped without)
   xvfb xauth                        # viewer tests get a real X window

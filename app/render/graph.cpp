@@ -7,6 +7,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "render/audio_texture.h"
 #include "render/tiles.h"
 #include "render/uniforms.h"
 #include "shader/assemble.h"
@@ -27,6 +28,7 @@ struct PassGraph::Gpu {
   GLuint black = 0, keyboard = 0;
   std::map<const Image*, GLuint> textures;
   std::map<const Volume*, GLuint> volumes;
+  std::map<const AudioClip*, GLuint> audio;  // 512x2 R8, rewritten each frame
   std::map<int, GLuint> samplers;  // by filter * 2 + wrap
   Buffer buffers[4];
   bool used[4] = {false, false, false, false};
@@ -131,6 +133,13 @@ PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
         g.textures[in.image.get()] = upload(in);
       else if (in.kind == InputKind::volume && in.volume && !g.volumes.count(in.volume.get()))
         g.volumes[in.volume.get()] = upload(*in.volume, in.sampler);
+      else if (in.audio && !g.audio.count(in.audio.get())) {
+        GLuint tex = 0;
+        glGenTextures(1, &tex);
+        glBindTexture(GL_TEXTURE_2D, tex);
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_R8, kAudioTexWidth, 2);
+        g.audio[in.audio.get()] = tex;
+      }
   pass_ms_.assign(passes_.size(), 0.0);
 }
 
@@ -142,6 +151,7 @@ PassGraph::~PassGraph() {
   }
   for (auto& [img, tex] : g.textures) glDeleteTextures(1, &tex);
   for (auto& [vol, tex] : g.volumes) glDeleteTextures(1, &tex);
+  for (auto& [clip, tex] : g.audio) glDeleteTextures(1, &tex);
   for (auto& [key, s] : g.samplers) glDeleteSamplers(1, &s);
   glDeleteTextures(1, &g.black);
   glDeleteTextures(1, &g.keyboard);
@@ -229,12 +239,19 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
         tex = g.volumes.at(in.volume.get());
         rw = rh = rd = static_cast<float>(in.volume->size);
         break;
+      case InputKind::music:
+      case InputKind::musicstream:
+        tex = g.audio.at(in.audio.get());
+        rw = kAudioTexWidth;
+        rh = 2;
+        break;
       default:
         break;
     }
     glActiveTexture(GL_TEXTURE0 + c);
     glBindTexture(gl_target(channel_type(in.kind)), tex);
-    const int filter = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.filter);
+    int filter = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.filter);
+    if (in.audio && in.sampler.filter == TexFilter::mipmap) filter = 1;  // no mip chain: Shadertoy offers none for audio
     const int wrap = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.wrap);
     glBindSampler(c, in.kind == InputKind::none ? 0 : g.samplers.at(filter * 2 + wrap));
     res[c][0] = rw;
@@ -311,8 +328,18 @@ void PassGraph::draw_buffer_pass(size_t pass, const FrameInputs& in, const Frame
   buf.latest = target;  // later passes, and the next frame, read this
 }
 
+void PassGraph::update_timed_inputs(const FrameInputs& in) {
+  for (auto& [clip, tex] : gpu_->audio) {
+    const AudioTexels t = audio_texels(*clip, in.time, in.time_delta);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kAudioTexWidth, 2, GL_RED, GL_UNSIGNED_BYTE, t.data());
+  }
+}
+
 void PassGraph::step_buffers(const FrameInputs& in, const FrameParams& p) {
   ensure_buffers(p.width, p.height);
+  update_timed_inputs(in);
   Gpu& g = *gpu_;
   if (in.keyboard) {
     glBindTexture(GL_TEXTURE_2D, g.keyboard);
@@ -329,7 +356,10 @@ void PassGraph::step_buffers(const FrameInputs& in, const FrameParams& p) {
 void PassGraph::draw(FrameRenderer& renderer, const Program& post, const FrameInputs& in, const FrameParams& p,
                      bool step) {
   if (step) step_buffers(in, p);
-  else ensure_buffers(p.width, p.height);
+  else {
+    ensure_buffers(p.width, p.height);
+    update_timed_inputs(in);
+  }
   const size_t last = passes_.size() - 1;
   const PassSource& frame_pass = passes_[last];
   const double t0 = timing_ ? finished_ms() : 0.0;

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "io/audio.h"
 #include "io/image_io.h"
 #include "io/input_file.h"
 #include "shader/shadertoy.h"
@@ -92,6 +93,7 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& p, const Shadertoy
   warnings.insert(warnings.end(), p.warnings.begin(), p.warnings.end());
   std::map<fs::path, std::shared_ptr<const Image>> decoded;  // a file used twice is read once
   std::map<std::string_view, std::shared_ptr<const Volume>> volumes;  // by hash: one upload per volume
+  std::map<fs::path, std::shared_ptr<const AudioClip>> clips;  // a file used twice is decoded once
   std::vector<PassSource> out;
   for (size_t i = 0; i < p.passes.size(); ++i) {
     const ProjectPass& pass = p.passes[i];
@@ -147,6 +149,24 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& p, const Shadertoy
           auto& vol = volumes[known->hash];
           if (!vol) vol = std::make_shared<const Volume>(volume_standin(*known, s.missing_media));
           g.volume = vol;
+          break;
+        }
+        case InputKind::music:
+        case InputKind::musicstream: {
+          // Found like a texture; missing: an error, or silence with a warning.
+          const fs::path f = find_media(in, s);
+          if (f.empty()) {
+            if (s.missing_media == MissingMedia::error)
+              fail_input(where + ": audio '" + in.src + "' is not in the media directory", origin, 0, where,
+                         (s.media_dir.empty() ? std::string("no media directory") : "looked in " + s.media_dir.string()) +
+                             "; give --media-dir DIR, or --missing-media noise|black for silence");
+            warnings.push_back(where + ": audio '" + in.src + "' is missing; silence stands in");
+            g.audio = std::make_shared<const AudioClip>(AudioClip{44100, {0.0f}});
+            break;
+          }
+          auto& clip = clips[f];
+          if (!clip) clip = std::make_shared<const AudioClip>(read_audio(f));
+          g.audio = clip;
           break;
         }
         default:

@@ -7,6 +7,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "render/audio_texture.h"
 #include "scene/camera_frame.h"
 #include "shader/specialize.h"
 
@@ -92,6 +93,7 @@ void set_shadertoy_uniforms(const Program& p, int width, int height, const Shade
   glUniform1i(p.loc("iFrame"), in.frame);
   glUniform4fv(p.loc("iMouse"), 1, in.mouse);
   glUniform4f(p.loc("iDate"), 2000.0f, 0.0f, 1.0f, in.time);
+  set1(p, "iSampleRate", kShadertoySampleRate);  // Shadertoy's constant, whatever audio is bound
   for (int i = 0; i < 4; ++i) {
     const std::string idx = std::to_string(i);
     glUniform1i(p.loc("iChannel" + idx), i);
