@@ -300,6 +300,8 @@ void PassGraph::draw_buffer_pass(size_t pass, const FrameInputs& in, const Frame
   float res[4][3];
   bind_inputs(pass, p.width, p.height, res);
   set_shadertoy_uniforms(prog, p.width, p.height, shadertoy_inputs(in, res));
+  if (passes_[pass].uniforms == PassUniforms::glslviewer)
+    set_glslviewer_uniforms(prog, p.width, p.height, shadertoy_inputs(in, res), passes_[pass].inputs);
   if (in.extra) (*in.extra)(prog);
   glUniform2f(prog.loc("uJitter"), 0.5f, 0.5f);
   // Tile by tile, as FrameRenderer draws: a bounded draw, a deadline check.
@@ -368,6 +370,10 @@ void PassGraph::draw(FrameRenderer& renderer, const Program& post, const FrameIn
     bind_inputs(last, p.width, p.height, res);
     if (frame_pass.uniforms == PassUniforms::shadertoy) {
       set_shadertoy_uniforms(prog, p.resolution_width(), p.resolution_height(), shadertoy_inputs(in, res));
+    } else if (frame_pass.uniforms == PassUniforms::glslviewer) {
+      set_shadertoy_uniforms(prog, p.resolution_width(), p.resolution_height(), shadertoy_inputs(in, res));
+      set_glslviewer_uniforms(prog, p.resolution_width(), p.resolution_height(), shadertoy_inputs(in, res),
+                              frame_pass.inputs);
     } else {
       if (!in.scene) fail_system("internal: a scene pass without its scene");
       set_scene_uniforms(prog, *in.scene, p.resolution_width(), p.resolution_height(), in.time, in.frame);
@@ -429,8 +435,9 @@ std::vector<std::string> PassGraph::unbound_sampled() const {
   std::vector<std::string> out;
   for (size_t i = 0; i < passes_.size(); ++i)
     for (int c = 0; c < 4; ++c)
-      if (passes_[i].inputs[c].kind == InputKind::none && programs_[i]->loc("iChannel" + std::to_string(c)) >= 0)
-        out.push_back(passes_[i].name + " iChannel" + std::to_string(c));
+      if (const GraphInput& in = passes_[i].inputs[c];
+          in.kind == InputKind::none && programs_[i]->loc(in.uniform.empty() ? "iChannel" + std::to_string(c) : in.uniform) >= 0)
+        out.push_back(passes_[i].name + " " + (in.uniform.empty() ? "iChannel" + std::to_string(c) : in.uniform));
   return out;
 }
 

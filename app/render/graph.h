@@ -50,9 +50,10 @@ struct GraphInput {
   bool eight_bit = true;              // texture: stored as RGBA8 (PNG, JPEG), else as float (EXR, HDR)
   bool single_channel = false;        // texture: uploaded as one channel, sampled (v, 0, 0, 1)
   Sampler sampler;
+  std::string uniform;                // glslViewer: the sampler's name (u_tex0); empty: iChannelN
 };
 
-enum class PassUniforms { scene, shadertoy };
+enum class PassUniforms { scene, shadertoy, glslviewer };  // glslviewer: Shadertoy's plus u_* (render/uniforms.h)
 
 struct PassSource {
   std::string name;     // "Buffer A", "Image", or the scene's name

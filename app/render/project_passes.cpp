@@ -7,6 +7,7 @@
 #include "io/audio.h"
 #include "io/image_io.h"
 #include "io/input_file.h"
+#include "shader/glslviewer.h"
 #include "shader/shadertoy.h"
 #include "shader/shadertoy_media.h"
 
@@ -87,8 +88,11 @@ Volume volume_standin(const ShadertoyMedia& m, MissingMedia kind) {
   return v;
 }
 
-std::vector<PassSource> shadertoy_passes(const ShaderProject& p, const ShadertoySettings& s, const AssembleOptions& opts,
-                                         const fs::path& scene_file, std::vector<std::string>& warnings) {
+std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const ShadertoySettings& s,
+                                         const AssembleOptions& opts, const fs::path& scene_file,
+                                         std::vector<std::string>& warnings) {
+  ShaderProject p = project;
+  bind_glslviewer_textures(p, s.textures, warnings);  // --texture: glslViewer's u_tex0..
   const std::string origin = display_path(scene_file.empty() ? p.origin : scene_file);
   warnings.insert(warnings.end(), p.warnings.begin(), p.warnings.end());
   std::map<fs::path, std::shared_ptr<const Image>> decoded;  // a file used twice is read once
@@ -99,15 +103,16 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& p, const Shadertoy
     const ProjectPass& pass = p.passes[i];
     PassSource ps;
     ps.name = pass.name;
-    ps.uniforms = PassUniforms::shadertoy;
+    ps.uniforms = p.glslviewer ? PassUniforms::glslviewer : PassUniforms::shadertoy;
     ps.output = pass.kind == PassKind::buffer ? pass.output : -1;
     for (size_t c = 0; c < 4; ++c) {
       const ProjectInput& in = pass.inputs[c];
-      const std::string where = pass.name + " iChannel" + std::to_string(c);
+      const std::string where = pass.name + " " + (in.uniform.empty() ? "iChannel" + std::to_string(c) : in.uniform);
       GraphInput& g = ps.inputs[c];
       g.kind = in.kind;
       g.buffer = in.buffer;
       g.sampler = in.sampler;
+      g.uniform = in.uniform;
       switch (in.kind) {
         case InputKind::none:
         case InputKind::buffer:

@@ -103,3 +103,30 @@ void set_shadertoy_uniforms(const Program& p, int width, int height, const Shade
 }
 
 }  // namespace ms
+
+namespace ms {
+
+void set_glslviewer_uniforms(const Program& p, int width, int height, const ShadertoyInputs& in,
+                             const std::array<GraphInput, 4>& inputs) {
+  glUniform2f(p.loc("u_resolution"), static_cast<float>(width), static_cast<float>(height));
+  glUniform1f(p.loc("u_time"), in.time);
+  glUniform1f(p.loc("u_delta"), in.time_delta);
+  glUniform1i(p.loc("u_frame"), in.frame);
+  glUniform2f(p.loc("u_mouse"), in.mouse[0], in.mouse[1]);
+  glUniform4f(p.loc("u_date"), 2000.0f, 0.0f, 1.0f, in.time);  // as iDate: never the wall clock
+  // A 2D canvas: glslViewer sets these to identity (u_model to (1, 1, 1)).
+  const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  for (const char* m : {"u_modelMatrix", "u_viewMatrix", "u_projectionMatrix", "u_modelViewProjectionMatrix"})
+    glUniformMatrix4fv(p.loc(m), 1, GL_FALSE, identity);
+  const float identity3[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  glUniformMatrix3fv(p.loc("u_view2d"), 1, GL_FALSE, identity3);
+  glUniform3f(p.loc("u_model"), 1.0f, 1.0f, 1.0f);
+  for (int c = 0; c < 4; ++c) {
+    if (inputs[c].uniform.empty()) continue;
+    glUniform1i(p.loc(inputs[c].uniform), c);
+    if (inputs[c].kind == InputKind::texture)
+      glUniform2f(p.loc(inputs[c].uniform + "Resolution"), in.channel_resolution[c][0], in.channel_resolution[c][1]);
+  }
+}
+
+}  // namespace ms

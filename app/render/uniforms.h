@@ -1,6 +1,9 @@
 // Per-frame uniforms for the two kinds of main program: a scene's (the
 // contract in docs/shader-library.md) and a Shadertoy shader's.
 #pragma once
+#include <array>
+
+#include "render/graph.h"
 #include "render/program.h"
 #include "scene/scene.h"
 
@@ -36,5 +39,13 @@ class BlackChannels {
 // the wall clock. iChannel0..3 are bound to a black 1x1 texture (the caller
 // provides it on units 0..3).
 void set_shadertoy_uniforms(const Program& prog, int width, int height, const ShadertoyInputs& in);
+
+// glslViewer's uniforms (docs/glslviewer.md), over Shadertoy's: u_resolution
+// (pixels), u_time, u_delta, u_frame, u_mouse (iMouse.xy: pixels, origin at
+// the lower left), u_date (as iDate), the 2D canvas's identity u_model*
+// matrices, and each named sampler on its channel's unit with
+// NAMEResolution for a texture.
+void set_glslviewer_uniforms(const Program& prog, int width, int height, const ShadertoyInputs& in,
+                             const std::array<GraphInput, 4>& inputs);
 
 }  // namespace ms

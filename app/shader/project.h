@@ -44,6 +44,7 @@ struct ProjectInput {
   std::string src;   // texture, volume: as given ("/media/a/<hash>.png", or a path from a scene file)
   std::filesystem::path file;  // texture: the file found for src (load_media resolves it)
   Sampler sampler;
+  std::string uniform;  // glslViewer: the sampler's own name (u_tex0, u_buffer1); empty: iChannelN
 };
 
 enum class PassKind { buffer, image };
@@ -56,6 +57,7 @@ struct ProjectPass {
   std::filesystem::path file;    // or the file it is in (a scene's [[passes]], a bare .glsl)
   std::string where;             // how errors name it: "x.json (Buffer A)" or the file's display path
   std::array<ProjectInput, 4> inputs{};
+  std::string define;            // glslViewer: the pass's #define (BUFFER_0, DOUBLE_BUFFER_1); empty for main
 };
 
 struct ShaderProject {
@@ -67,6 +69,7 @@ struct ShaderProject {
   // Buffer passes in the order Shadertoy runs them (A, B, C, D), then the
   // Image pass, last.
   std::vector<ProjectPass> passes;
+  bool glslviewer = false;           // a glslViewer file (shader/glslviewer.h): main(), gl_FragColor, u_* uniforms
   bool has_sound = false;            // a Sound pass was present and is not run (it never changes the image)
   std::vector<std::string> warnings; // for the caller to print: "x.json holds 2 shaders; rendering the first"
 
@@ -79,6 +82,12 @@ struct ShaderProject {
 // black (each with a warning).
 enum class MissingMedia { error, noise, black };
 
+// A glslViewer texture from the command line: u_tex0.. by order, or named.
+struct NamedTexture {
+  std::string name;             // the sampler2D it binds, e.g. u_tex0
+  std::filesystem::path file;
+};
+
 // Shadertoy settings of a scene file's [shadertoy] table or the flags.
 struct ShadertoySettings {
   std::filesystem::path media_dir;        // where "/media/a/<hash>.png" is looked up by file name
@@ -86,6 +95,7 @@ struct ShadertoySettings {
   float mouse[4] = {0, 0, 0, 0};          // iMouse, Shadertoy's semantics
   double fps = 60.0;                      // a still of a stateful shader runs round(time * fps) + 1 frames
   std::filesystem::path common_file;      // [[passes]]: the Common source
+  std::vector<NamedTexture> textures;     // --texture: a glslViewer shader's u_tex0.. (shader/glslviewer.h)
 };
 
 // "A".."D" for 0..3.

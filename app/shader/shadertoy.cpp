@@ -8,6 +8,7 @@
 #include "io/input_file.h"
 #include "shader/es_compat.h"
 #include "shader/glsl_scan.h"
+#include "shader/glslviewer.h"
 #include "shader/project_json.h"
 
 namespace ms {
@@ -131,6 +132,8 @@ ShaderProject load_shadertoy_file(const fs::path& file, const AssembleOptions& o
   ShaderProject p;
   if (abs.extension() == ".json" || looks_like_json(text)) {
     p = load_shadertoy_json(text, display_path(abs));
+  } else if (looks_like_glslviewer(text)) {
+    p = load_glslviewer(text, abs);
   } else {
     ProjectPass image;
     image.kind = PassKind::image;
@@ -148,6 +151,7 @@ ShaderSource assemble_shadertoy_pass(const ShaderProject& p, size_t index, const
                                      const fs::path& scene_file) {
   const ProjectPass& pass = p.passes.at(index);
   const std::vector<fs::path> roots = project_roots(p, opts, scene_file);
+  if (p.glslviewer) return assemble_glslviewer_pass(p, index, opts, roots);
   const std::string origin = display_path(scene_file.empty() ? p.origin : scene_file);
   PreprocessOptions popts;
   popts.include_dirs = {opts.shader_dir};
