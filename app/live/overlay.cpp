@@ -29,7 +29,7 @@ constexpr ImGuiWindowFlags kOverlayFlags = ImGuiWindowFlags_NoDecoration | ImGui
                                            ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                            ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
 
-void draw_error(const std::string& error, bool have_frame) {
+void draw_error(const std::string& error, const std::string& log, bool have_frame) {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(10.0f, size.y - 10.0f), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
   ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(size.x - 20.0f, size.y * 0.5f));
@@ -43,6 +43,16 @@ void draw_error(const std::string& error, bool have_frame) {
   ImGui::PushTextWrapPos(size.x - 40.0f);
   ImGui::TextUnformatted(error.c_str());
   ImGui::PopTextWrapPos();
+  // The first error is above; the rest of the log is one click away, not
+  // just "+N more" (a newcomer should not need -v and a terminal).
+  const int lines = static_cast<int>(std::count(log.begin(), log.end(), '\n'));
+  if (lines > 1 && ImGui::TreeNode("##log", "full compiler log (%d lines)", lines)) {
+    const float h = std::min(ImGui::GetTextLineHeightWithSpacing() * (lines + 1), size.y * 0.35f);
+    ImGui::BeginChild("##logtext", ImVec2(size.x - 50.0f, h), false, ImGuiWindowFlags_HorizontalScrollbar);
+    ImGui::TextUnformatted(log.c_str());
+    ImGui::EndChild();
+    ImGui::TreePop();
+  }
   ImGui::End();
   ImGui::PopStyleColor(2);
 }
@@ -97,7 +107,7 @@ void draw_overlay(const ViewState& s, const Session& session) {
     if (view == 1) draw_legend(session.scene());
     ImGui::End();
   }
-  if (!session.error().empty()) draw_error(session.error(), session.generation() > 0);
+  if (!session.error().empty()) draw_error(session.error(), session.error_log(), session.generation() > 0);
   if (!s.message.empty() && s.now < s.message_until) {
     ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 10.0f - (session.error().empty() ? 0.0f : 90.0f)),
                             ImGuiCond_Always, ImVec2(0.5f, 1.0f));

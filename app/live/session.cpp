@@ -91,12 +91,15 @@ ReloadResult Session::reload(bool from_disk) {
     compiled_debug_view_ = view;
     ++generation_;
     error_.clear();
+    error_log_.clear();
     error_file_.clear();
     r.ok = true;
   } catch (const Error& e) {
     error_ = format_error(e.info());
+    error_log_ = e.info().detail;
     error_file_ = e.info().file;
     r.error = error_;
+    r.log = error_log_;
   }
   r.compile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return r;

@@ -30,6 +30,7 @@ struct SessionOptions {
 struct ReloadResult {
   bool ok = false;
   std::string error;           // "file:line: message (hint)" when !ok
+  std::string log;             // when !ok: the compiler's whole log, mapped to file:line (what "+N more" stands for)
   bool camera_changed = false; // the file's [camera] differs from the previous read
   double compile_ms = 0.0;     // load + assemble + compile + link
   bool cached = false;         // the main program came from the cache: nothing compiled
@@ -65,6 +66,9 @@ class Session {
   const std::vector<std::string>& warnings() const { return warnings_; }
   int generation() const { return generation_; }  // +1 per successful reload
   const std::string& error() const { return error_; }
+  // The whole mapped compiler log of the last failed build (empty when it
+  // failed before compiling, or did not fail): the panel shows it.
+  const std::string& error_log() const { return error_log_; }
 
   // A preset of scene/quality.h, re-based on the file's [quality] exactly as
   // `render --preset` does (its explicit keys kept); toggles survive a
@@ -103,7 +107,7 @@ class Session {
   FeatureSet features_;    // of the last program built or tried, when specialized
   int generation_ = 0;
   int compiled_debug_view_ = 0;
-  std::string error_, error_file_;
+  std::string error_, error_log_, error_file_;
   std::vector<std::filesystem::path> deps_;
   std::vector<SceneParam> params_;
 };

@@ -79,6 +79,7 @@ class Viewer {
 
  private:
   void reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event);
+  void report_failure(const ReloadResult& r);
   void poll_files();
   void after_frame();
   void serve_requests();
@@ -137,7 +138,24 @@ void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long it
   // broken, any source-like file next to the watched ones counts.
   watcher_.watch(session_.watched_files());
   watcher_.set_match_any(!r.ok);
-  if (!r.ok) std::fprintf(stderr, "marchstudio: %s\n", r.error.c_str());
+  if (!r.ok) report_failure(r);
+}
+
+// The one-line error on stderr, and the compiler's whole log after it, on
+// stderr and as compile_log lines in the event log (the panel shows it too).
+void Viewer::report_failure(const ReloadResult& r) {
+  std::fprintf(stderr, "marchstudio: %s\n", r.error.c_str());
+  size_t at = 0;
+  while (at < r.log.size()) {
+    size_t end = r.log.find('\n', at);
+    if (end == std::string::npos) end = r.log.size();
+    const std::string line = r.log.substr(at, end - at);
+    if (!line.empty()) {
+      std::fprintf(stderr, "  %s\n", line.c_str());
+      if (!log_.to_stderr()) log_.line("compile_log " + line);
+    }
+    at = end + 1;
+  }
 }
 
 void Viewer::poll_files() {
@@ -161,7 +179,7 @@ void Viewer::poll_files() {
               std::to_string(session_.compiled_debug_view()) + " compile_ms=" + fmt("%.1f", r.compile_ms) +
               (r.cached ? " cached" : "") +
               (r.ok ? "" : " -- " + r.error));
-    if (!r.ok) std::fprintf(stderr, "marchstudio: %s\n", r.error.c_str());
+    if (!r.ok) report_failure(r);
   }
 }
 

@@ -209,6 +209,31 @@ TEST_F(Viewer, OverridesHoldAcrossReloads) {
   EXPECT_LT(mean_abs_diff(capture(2), first), 1e-3) << "a save of the map dropped them";
 }
 
+// A failed build shows the whole compiler log, not just "+N more" (issue
+// 17 item 7): the event log carries it as compile_log lines, each mapped to
+// the map file's line, and the panel's error window shows the same text.
+TEST_F(Viewer, FailedBuildCarriesTheWholeLog) {
+  start();
+  const std::string broken =
+      "vec2 map(vec3 p) {\n"
+      "  float a = undefinedOne(p);\n"
+      "  float b = undefinedTwo(p);\n"
+      "  return vec2(a + b, MAT_FLOOR);\n"
+      "}\n";
+  save_by_rename(dir / "seed.glsl", broken);
+  const std::string line = wait_for_line(log(), "^reload failed 1 ", 20);
+  ASSERT_FALSE(line.empty()) << read_file(log());
+  EXPECT_NE(line.find("more"), std::string::npos) << "two errors should give a '+N more' hint: " << line;
+  const std::string map = (dir / "seed.glsl").string();
+  bool one = false, two = false;
+  for (const std::string& l : file_lines(log())) {
+    if (l.rfind("compile_log ", 0) != 0) continue;
+    one = one || (l.find(map + ":2:") != std::string::npos && l.find("undefinedOne") != std::string::npos);
+    two = two || (l.find(map + ":3:") != std::string::npos && l.find("undefinedTwo") != std::string::npos);
+  }
+  EXPECT_TRUE(one && two) << read_file(log());
+}
+
 // One home for presets (issue 17): `view --preset NAME` starts from the
 // same values as `render --preset NAME`, textbook included, so its first
 // frame is render's image at that preset.
