@@ -174,6 +174,12 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
           g.audio = clip;
           break;
         }
+        case InputKind::mic:
+        case InputKind::webcam:
+          // A live device has no meaning for an offline, reproducible render.
+          fail_input(where + " reads a " + std::string(input_kind_name(in.kind)) +
+                         " input, a live device that an offline render cannot have",
+                     origin, 0, where, "bind a music or video file instead (docs/shadertoy.md#support)");
         default:
           fail_input(where + " reads a " + std::string(input_kind_name(in.kind)) + " input, which marchstudio does not run yet",
                      origin, 0, where, "docs/shadertoy.md lists what is supported");

@@ -224,7 +224,7 @@ TEST(Multipass, BadInputIsAOneLineErrorAndNoFile) {
   write_file(dir / "range.json", shader({pass("Image", "image", 0, kShowA, "{\"ctype\": \"keyboard\", \"channel\": 7}")}));
   write_file(dir / "twice.json", shader({pass("Buffer A", "buffer", 257, kCounterA), pass("Buffer B", "buffer", 257, kCounterA),
                                          pass("Image", "image", 0, kShowA)}));
-  write_file(dir / "music.json", shader({pass("Image", "image", 0, kShowA, "{\"ctype\": \"music\", \"channel\": 1, \"src\": \"/media/a/x.mp3\"}")}));
+  write_file(dir / "mic.json", shader({pass("Image", "image", 0, kShowA, "{\"ctype\": \"mic\", \"channel\": 1}")}));
   const struct {
     const char* file;
     std::string says;
@@ -233,7 +233,7 @@ TEST(Multipass, BadInputIsAOneLineErrorAndNoFile) {
                {"media.json", "Image iChannel0: texture '/media/a/tex.png' is not in the media directory"},
                {"range.json", "channel 7 is out of range"},
                {"twice.json", "two passes write Buffer A"},
-               {"music.json", "Image iChannel1 reads a music input, which marchstudio does not run yet"}};
+               {"mic.json", "Image iChannel1 reads a mic input, a live device that an offline render cannot have"}};
   for (const auto& c : cases) {
     const RunResult r = run_marchstudio({"render", c.file, "-o", "x.png"}, dir.path());
     EXPECT_EQ(r.exit_code, 2) << c.file << ": " << r.err;
