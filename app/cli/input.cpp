@@ -124,7 +124,7 @@ void assemble_input(LoadedInput& in, const AssembleOptions& opts) {
 void apply_shadertoy_flags(LoadedInput& in, const ShadertoyFlags& f) {
   if (!in.shadertoy) {
     const char* flag = !f.media_dir.empty() ? "--media-dir" : !f.missing_media.empty() ? "--missing-media"
-                       : !f.mouse.empty() ? "--mouse" : nullptr;
+                       : !f.mouse.empty() ? "--mouse" : !f.textures.empty() ? "--texture" : nullptr;
     if (flag)
       fail_input(std::string(flag) + " has no effect on an SDF scene", in.path.string(), 0, flag,
                  "it sets a Shadertoy shader's inputs");
@@ -142,6 +142,25 @@ void apply_shadertoy_flags(LoadedInput& in, const ShadertoyFlags& f) {
   if (f.missing_media == "black") s.missing_media = MissingMedia::black;
   if (f.mouse.size() == 4) std::copy(f.mouse.begin(), f.mouse.end(), s.mouse);
   if (f.fps > 0) s.fps = f.fps;
+  for (const NamedTexture& t : f.textures) check_input_file(t.file, "texture", "--texture");
+  s.textures = f.textures;
+}
+
+NamedTexture parse_texture_flag(const std::string& text, int unnamed_before) {
+  static const std::regex named(R"(^([A-Za-z_][A-Za-z0-9_]*)=(.+)$)");
+  std::smatch m;
+  NamedTexture t;
+  if (std::regex_match(text, m, named)) {
+    t.name = m[1];
+    t.file = m[2].str();
+  } else {
+    t.name = "u_tex" + std::to_string(unnamed_before);  // glslViewer's order for positional images
+    t.file = text;
+  }
+  if (t.file.empty()) fail_input("invalid --texture '" + text + "'", {}, 0, "--texture", "FILE or NAME=FILE");
+  std::error_code ec;
+  t.file = fs::absolute(t.file, ec);
+  return t;
 }
 
 void add_shadertoy_flags(CLI::App* cmd, ShadertoyFlags& f) {
@@ -155,6 +174,21 @@ void add_shadertoy_flags(CLI::App* cmd, ShadertoyFlags& f) {
   cmd->add_option_function<std::string>(
          "--mouse", [&f](const std::string& v) { f.mouse = parse_mouse_flag(v); },
          "iMouse of a Shadertoy shader: X,Y,Z,W in pixels (default: the scene's, else 0,0,0,0)");
+  cmd->add_option_function<std::vector<std::string>>(
+         "--texture",
+         [&f](const std::vector<std::string>& v) {
+           int unnamed = 0;  // FILE alone: glslViewer's positional order, u_tex0, u_tex1, ..
+           for (const std::string& one : v) {
+             f.textures.push_back(parse_texture_flag(one, unnamed));
+             const std::string& name = f.textures.back().name;
+             if (one.compare(0, name.size() + 1, name + "=") != 0) ++unnamed;
+           }
+         },
+         "A glslViewer shader's texture: FILE binds u_tex0, u_tex1, .. in order; NAME=FILE binds the sampler2D NAME "
+         "(repeatable)")
+      ->allow_extra_args(false)
+      ->type_size(1)
+      ->expected(1, CLI::detail::expected_max_vector_size);
 }
 
 void report_input_warnings(const std::vector<std::string>& warnings, const std::string& input, bool strict) {

@@ -41,6 +41,7 @@ struct ShadertoyFlags {
   std::string missing_media;  // error, noise, black
   std::vector<float> mouse;   // 4 values
   double fps = 0.0;
+  std::vector<NamedTexture> textures;  // --texture [NAME=]FILE, in order: u_tex0.. unless named
 };
 // On an SDF scene, --media-dir, --missing-media and --mouse are errors: they
 // would do nothing.
@@ -55,6 +56,9 @@ void report_input_warnings(const std::vector<std::string>& warnings, const std::
 std::vector<std::string> unbound_warnings(const PassGraph& graph);
 // "X,Y,Z,W" as iMouse. Throws bad_input naming --mouse.
 std::vector<float> parse_mouse_flag(const std::string& text);
+// One --texture: "NAME=FILE" binds NAME, "FILE" binds u_tex<unnamed_before>;
+// the file made absolute (it is checked when applied).
+NamedTexture parse_texture_flag(const std::string& text, int unnamed_before);
 
 // A "WxH" flag value (render/bench --size, view --size/--shot-size); each
 // side at least 1. Whether the GL can make it is checked later, with a context.

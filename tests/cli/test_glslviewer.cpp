@@ -5,6 +5,7 @@
 // marchstudio does not run is one line naming file:line, exit 2, no file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -80,6 +81,73 @@ TEST(GlslViewer, DoubleBufferFeedbackMatchesShadertoyBuffer) {
   const Image st = render(dir.path() / "fb.json", dir.path() / "st.png", "0.1");
   expect_same_bytes(gv, st);
   EXPECT_GT(gv.at(10, 10, 0), 5.0 / 64.0) << "the double buffer did not carry its state";
+}
+
+// A 4x2 texture whose texels differ: red = 40 (x + 4 y) / 255, green = x / 3,
+// blue = y. Written by the test.
+void write_texture(const fs::path& p) {
+  Image t;
+  t.width = 4;
+  t.height = 2;
+  t.channels = {"R", "G", "B", "A"};
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x)
+      for (float v : {40.0f * (x + 4 * y) / 255.0f, x / 3.0f, static_cast<float>(y), 1.0f}) t.pixels.push_back(v);
+  write_image(t, p);
+}
+
+TEST(GlslViewer, TexturesFromTheCommandLineMatchShadertoyTextures) {
+  TempDir dir;
+  write_texture(dir.path() / "tex.png");
+  write_texture(dir.path() / "other.png");
+  // u_tex0 by order and a named sampler, with glslViewer's <name>Resolution.
+  write_file(dir.path() / "t.frag",
+             "uniform sampler2D u_tex0;\nuniform sampler2D u_mine;\nuniform vec2 u_tex0Resolution;\n"
+             "uniform vec2 u_resolution;\n"
+             "void main() {\n"
+             "  vec2 st = gl_FragCoord.xy / u_resolution.xy * 1.5;\n"
+             "  gl_FragColor = vec4(texture2D(u_tex0, st).rg, texture2D(u_mine, st.yx).b * 0.5 + u_tex0Resolution.x / 16.0, 1.0);\n"
+             "}\n");
+  // Shadertoy's form: both textures linear, repeat and flipped, as glslViewer loads them.
+  const std::string image =
+      "void mainImage(out vec4 o, in vec2 f) {\\n  vec2 st = f / iResolution.xy * 1.5;\\n"
+      "  o = vec4(texture(iChannel0, st).rg, texture(iChannel1, st.yx).b * 0.5 + iChannelResolution[0].x / 16.0, 1.0);\\n}\\n";
+  const std::string sampler = "\"sampler\": {\"filter\": \"linear\", \"wrap\": \"repeat\", \"vflip\": \"true\", \"srgb\": \"false\"}";
+  write_file(dir.path() / "t.json",
+             "{\"Shader\": {\"info\": {\"name\": \"t\"}, \"renderpass\": ["
+             "{\"name\": \"Image\", \"type\": \"image\", \"code\": \"" + image + "\", \"inputs\": ["
+             "{\"id\": 1, \"src\": \"/media/a/tex.png\", \"ctype\": \"texture\", \"channel\": 0, " + sampler + "},"
+             "{\"id\": 2, \"src\": \"/media/a/other.png\", \"ctype\": \"texture\", \"channel\": 1, " + sampler + "}"
+             "], \"outputs\": []}]}}");
+  const fs::path gv_out = dir.path() / "gv.png";
+  RunResult r = run_marchstudio({"render", "t.frag", "--texture", "tex.png", "--texture", "u_mine=other.png", "--strict",
+                                 "--size", "48x32", "-o", gv_out.string()},
+                                dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_marchstudio({"render", "t.json", "--media-dir", ".", "--size", "48x32", "-o", "st.png"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Image gv = read_image(gv_out), st = read_image(dir.path() / "st.png");
+  expect_same_bytes(gv, st);
+  // The picture is really there: red spans the texture's texels, blue carries the 4-texel width.
+  float lo = 1, hi = 0;
+  for (int x = 0; x < gv.width; ++x) lo = std::min(lo, gv.at(x, 20, 0)), hi = std::max(hi, gv.at(x, 20, 0));
+  EXPECT_GT(hi - lo, 0.3f);
+  EXPECT_GE(gv.at(0, 0, 2), 0.25f - 1.0f / 255.0f);
+
+  // A missing file names it and --texture; one that binds nothing is a warning --strict refuses.
+  r = run_marchstudio({"render", "t.frag", "--texture", "gone.png", "--size", "8x8", "-o", "x.png"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("gone.png: --texture: texture not found"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  r = run_marchstudio({"render", "t.frag", "--texture", "u_nope=tex.png", "--strict", "--size", "8x8", "-o", "x.png"},
+                      dir.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("the shader declares no sampler2D u_nope"), std::string::npos) << r.err;
+  // On a Shadertoy shader it would do nothing: an error.
+  r = run_marchstudio({"render", "t.json", "--media-dir", ".", "--texture", "tex.png", "-o", "x.png"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--texture has no effect"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "x.png"));
 }
 
 TEST(GlslViewer, RefusedFeatureIsOneLineAtItsLine) {
