@@ -191,7 +191,8 @@ vec3 renderSample(vec2 pix, out int primarySteps) {
 }
 
 #if DEBUG_VIEW
-// The debug view's linear colour (the post pass still tone maps it). Misses
+// The debug view's value, shown as it is (the viewer's post pass for a debug
+// view has no exposure, tone map or sRGB encode). Misses
 // are black except in the steps view, where their steps are real cost.
 vec3 debugViewColor(int primarySteps) {
   PrimaryAov a = msPrimary;

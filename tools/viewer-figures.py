@@ -14,8 +14,11 @@
 - watch-log: what `render --watch` prints for a start, one save and Ctrl+C.
 - images/viewer/panel.png: the window with its panel under Xvfb, on
   tests/data/bounds/ball.toml, whose map has a ranged uniform (`uRadius`).
+- images/viewer/debug_N_<name>.png: the seed scene's window in each debug
+  view, 480x270, without the panel (the overlay and its legend show).
 
-Needs xvfb-run. Usage: /usr/bin/python3 tools/viewer-figures.py [path/to/marchstudio]
+Needs xvfb-run. Usage: /usr/bin/python3 tools/viewer-figures.py [--images] [path/to/marchstudio]
+(--images: only the pictures, not the timings)
 """
 import datetime
 import os
@@ -32,7 +35,10 @@ import time
 from doc_markers import put  # tools/doc_markers.py: this directory is on sys.path
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'))
-BIN = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, 'build', 'marchstudio'))
+ARGS = [a for a in sys.argv[1:] if a != '--images']
+IMAGES_ONLY = '--images' in sys.argv[1:]
+BIN = os.path.abspath(ARGS[0] if ARGS else os.path.join(ROOT, 'build', 'marchstudio'))
+DEBUG_VIEWS = ['steps', 'normals', 'depth', 'ao', 'shadow', 'material']
 SIZES = ['160x90', '320x180', '640x360', '1280x720']
 SAVES = 4
 ENV = dict(os.environ, LIBGL_ALWAYS_SOFTWARE='1', MARCH_SHADER_DIR=os.path.join(ROOT, 'sdf_shaders'))
@@ -117,19 +123,42 @@ def watch_log(work):
 def panel(work):
     for f in ('ball.toml', 'ball.glsl'):
         shutil.copy(os.path.join(ROOT, 'tests', 'data', 'bounds', f), work)
+    window_shot(work, ['ball.toml'], '960x600', os.path.join(ROOT, 'docs', 'images', 'viewer', 'panel.png'))
+
+
+def window_shot(work, args, size, out):
     shots = os.path.join(work, 'shots')
-    subprocess.run(['xvfb-run', '-a', '-s', '-screen 0 1920x1080x24', BIN, 'view', 'ball.toml', '--size', '960x600',
-                    '--paused', '--shot-frame', '20', '--shot-dir', shots, '--max-frames', '25'],
+    shutil.rmtree(shots, ignore_errors=True)
+    subprocess.run(['xvfb-run', '-a', '-s', '-screen 0 1920x1080x24', BIN, 'view'] + args +
+                   ['--size', size, '--paused', '--shot-frame', '20', '--shot-dir', shots, '--max-frames', '25'],
                    cwd=work, env=ENV, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=120)
     win = [f for f in os.listdir(shots) if '_window_' in f]
     if len(win) != 1:
         raise SystemExit('viewer-figures: expected one window screenshot, found %s' % os.listdir(shots))
-    shutil.copy(os.path.join(shots, win[0]), os.path.join(ROOT, 'docs', 'images', 'viewer', 'panel.png'))
+    shutil.copy(os.path.join(shots, win[0]), out)
+
+
+def debug_views(work):
+    for f in ('seed.toml', 'seed.glsl'):
+        shutil.copy(os.path.join(ROOT, 'scenes', f), work)
+    for n, name in enumerate(DEBUG_VIEWS, 1):
+        window_shot(work, ['seed.toml', '--no-panel', '--debug-view', str(n)], '480x270',
+                    os.path.join(ROOT, 'docs', 'images', 'viewer', 'debug_%d_%s.png' % (n, name)))
+
+
+def images():
+    with tempfile.TemporaryDirectory() as work:
+        panel(work)
+    with tempfile.TemporaryDirectory() as work:
+        debug_views(work)
+    print('wrote docs/images/viewer/panel.png and debug_*.png', file=sys.stderr)
 
 
 def main():
     if not shutil.which('xvfb-run'):
         raise SystemExit('viewer-figures: needs xvfb-run')
+    if IMAGES_ONLY:
+        return images()
     doc = os.path.join(ROOT, 'docs', 'viewer.md')
     renderer = subprocess.run([BIN, 'bench', os.path.join(ROOT, 'scenes', 'seed.toml'), '--size', '16x16', '--frames', '1',
                                '--json'], env=ENV, capture_output=True, text=True, check=True).stdout
@@ -160,9 +189,8 @@ def main():
     put(doc, 'watch-log', ['```text', '$ marchstudio render --watch seed.toml -o out/seed.png --size 320x180',
                            '(one save of seed.glsl, then Ctrl+C)'] + lines +
         ['```', 'Exit status %d. Printed by `tools/viewer-figures.py`, %s.' % (rc, date)])
-    with tempfile.TemporaryDirectory() as work:
-        panel(work)
-    print('wrote docs/viewer.md and docs/images/viewer/panel.png', file=sys.stderr)
+    images()
+    print('wrote docs/viewer.md', file=sys.stderr)
 
 
 if __name__ == '__main__':

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <imgui.h>
 
@@ -11,14 +14,6 @@
 
 namespace ms::live {
 namespace {
-
-float display(float c, Tonemap tm) {  // post.frag for 8-bit output
-  c = std::max(c, 0.0f);
-  if (tm == Tonemap::reinhard) c = c / (1.0f + c);
-  if (tm == Tonemap::aces) c = std::clamp((c * (2.51f * c + 0.03f)) / (c * (2.43f * c + 0.59f) + 0.14f), 0.0f, 1.0f);
-  c = std::clamp(c, 0.0f, 1.0f);
-  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
 
 ImU32 to_imgui(glm::vec3 c) {
   return IM_COL32(static_cast<int>(c.r * 255.0f + 0.5f), static_cast<int>(c.g * 255.0f + 0.5f),
@@ -57,42 +52,64 @@ void draw_error(const std::string& error, const std::string& log, bool have_fram
   ImGui::PopStyleColor(2);
 }
 
-// Inside the status window, under the view's name.
-void draw_legend(const Scene& scene) {
+// A colour bar with labelled ticks; colour(x) for x in [0,1] along it.
+template <class ColourAt, class Tick>
+void draw_bar(const char* title, ColourAt colour, const std::vector<Tick>& ticks) {
   ImGui::Separator();
-  ImGui::TextUnformatted("primary ray steps (log scale)");
+  ImGui::TextUnformatted(title);
   const float w = 240.0f, h = 16.0f;
   const ImVec2 p = ImGui::GetCursorScreenPos();
   ImDrawList* dl = ImGui::GetWindowDrawList();
   constexpr int kSlices = 64;
   for (int i = 0; i < kSlices; ++i) {
     const float x0 = static_cast<float>(i) / kSlices, x1 = static_cast<float>(i + 1) / kSlices;
-    dl->AddRectFilled(ImVec2(p.x + x0 * w, p.y), ImVec2(p.x + x1 * w + 1.0f, p.y + h),
-                      to_imgui(heat_display_color(0.5f * (x0 + x1), scene.render.exposure, scene.render.tonemap)));
+    dl->AddRectFilled(ImVec2(p.x + x0 * w, p.y), ImVec2(p.x + x1 * w + 1.0f, p.y + h), to_imgui(colour(0.5f * (x0 + x1))));
   }
-  // Ticks where the ramp's stops are (render/aov.h mirrors the shader's scale).
-  const int ticks[] = {0, 3, 15, 63, 255};
-  for (int s : ticks) {
-    const float x = p.x + steps_heat_position(static_cast<float>(s)) * w;
+  for (const Tick& t : ticks) {
+    const float x = p.x + t.first * w;
     dl->AddLine(ImVec2(x, p.y + h), ImVec2(x, p.y + h + 4.0f), IM_COL32_WHITE);
-    const std::string label = s == 255 ? "255+" : std::to_string(s);
-    const float tw = ImGui::CalcTextSize(label.c_str()).x;
-    dl->AddText(ImVec2(std::clamp(x - tw * 0.5f, p.x, p.x + w - tw), p.y + h + 5.0f), IM_COL32_WHITE,
-                label.c_str());
+    const float tw = ImGui::CalcTextSize(t.second.c_str()).x;
+    dl->AddText(ImVec2(std::clamp(x - tw * 0.5f, p.x, p.x + w - tw), p.y + h + 5.0f), IM_COL32_WHITE, t.second.c_str());
   }
   ImGui::Dummy(ImVec2(w, h + 5.0f + ImGui::GetTextLineHeight()));
+}
+
+// Inside the status window, under the view's name: the steps ramp's stops.
+void draw_steps_legend(const Scene& scene) {
+  std::vector<std::pair<float, std::string>> ticks;
+  for (int s : {0, 3, 15, 63, 255})
+    ticks.emplace_back(steps_heat_position(static_cast<float>(s)), s == 255 ? "255+" : std::to_string(s));
+  draw_bar("primary ray steps (log scale)", [](float x) { return heat_ramp(x); }, ticks);
   ImGui::Text("MAX_STEPS = %d (misses count too)", scene.quality.max_steps);
+}
+
+// The depth view's grey against ray distance, near (white) on the left.
+void draw_depth_legend(const Scene& scene) {
+  const float far = scene.quality.max_distance;
+  std::vector<std::pair<float, std::string>> ticks;
+  for (float t : depth_legend_ticks(far)) {
+    char label[32];
+    std::snprintf(label, sizeof label, "%g", t);
+    ticks.emplace_back(1.0f - depth_shade(t, far), label);
+  }
+  draw_bar("ray distance (log scale, world units)",
+           [far](float x) { return glm::vec3(1.0f - x); }, ticks);
+  ImGui::Text("black: MAX_DIST = %g, and misses", far);
 }
 
 }  // namespace
 
-glm::vec3 heat_display_color(float x, float exposure, Tonemap tonemap) {
-  const glm::vec3 lin = heat_ramp(x) * exposure;
-  return {display(lin.r, tonemap), display(lin.g, tonemap), display(lin.b, tonemap)};
-}
+glm::vec3 heat_legend_color(float steps) { return heat_ramp(steps_heat_position(steps)); }
 
-glm::vec3 heat_legend_color(float steps, float exposure, Tonemap tonemap) {
-  return heat_display_color(steps_heat_position(steps), exposure, tonemap);
+std::vector<float> depth_legend_ticks(float max_dist) {
+  // 0, then 1, 3, 10, 30, ... below max_dist, then max_dist: at most 6.
+  std::vector<float> out = {0.0f};
+  for (float decade = 1.0f; decade < max_dist; decade *= 10.0f)
+    for (float m : {1.0f, 3.0f})
+      if (m * decade < max_dist * 0.8f) out.push_back(m * decade);
+  while (out.size() > 5) out.erase(out.begin() + 1);  // keep the far ones: near ones crowd at the left
+  out.push_back(max_dist);
+  return out;
 }
 
 void draw_overlay(const ViewState& s, const Session& session) {
@@ -104,7 +121,8 @@ void draw_overlay(const ViewState& s, const Session& session) {
     ImGui::Begin("##view", nullptr, kOverlayFlags);
     if (view > 0) ImGui::Text("debug view %d: %s", view, debug_view_name(view));
     if (s.paused) ImGui::Text("paused at t = %.3f s", s.time);
-    if (view == 1) draw_legend(session.scene());
+    if (view == 1) draw_steps_legend(session.scene());
+    if (view == 3) draw_depth_legend(session.scene());
     ImGui::End();
   }
   if (!session.error().empty()) draw_error(session.error(), session.error_log(), session.generation() > 0);

@@ -2,6 +2,8 @@
 // panel: the compile error box (file:line: message), the steps heat-map
 // legend, the debug view's name, transient messages and the key help.
 #pragma once
+#include <vector>
+
 #include <glm/vec3.hpp>
 
 #include "live/session.h"
@@ -11,11 +13,12 @@ namespace ms::live {
 
 void draw_overlay(const ViewState& state, const Session& session);
 
-// The heat map's colour on screen for a step count: the ramp of
-// sdf_shaders/aov.glsl (mirrored in render/aov.h) through the same exposure,
-// tone map and sRGB encode as the post pass, so the legend matches the image.
-glm::vec3 heat_legend_color(float steps, float exposure, Tonemap tonemap);
-// The same for a position x in [0,1] along the legend.
-glm::vec3 heat_display_color(float x, float exposure, Tonemap tonemap);
+// Debug views are shown as values (no exposure, tone map or sRGB encode:
+// live/session.h display_exposure()), so the legend is the shader's ramp as
+// it is: the heat map's colour for a step count, the ramp of
+// sdf_shaders/aov.glsl (mirrored in render/aov.h).
+glm::vec3 heat_legend_color(float steps);
+// The distances the depth view's legend labels, ascending, from 0 to max_dist.
+std::vector<float> depth_legend_ticks(float max_dist);
 
 }  // namespace ms::live

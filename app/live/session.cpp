@@ -76,7 +76,9 @@ ReloadResult Session::reload(bool from_disk) {
     deps_.clear();  // preprocessing worked: these are the files now
     for (const PassSource& p : passes) deps_.insert(deps_.end(), p.source.dependencies.begin(), p.source.dependencies.end());
     const ShaderSource& main_src = passes.back().source;
-    const ShaderSource post_src = assemble_post(scene_.render.tonemap, !shadertoy(), opts_.assemble, shadertoy());
+    // A debug view shows values, not radiance: its post pass stores them as
+    // they are (no tone map, no sRGB encode; exposure 1, display_exposure()).
+    const ShaderSource post_src = assemble_post(scene_.render.tonemap, !shadertoy() && view == 0, opts_.assemble, shadertoy());
     r.cached = cache_.contains(fullscreen_vertex_source(), main_src);
     auto graph = std::make_shared<PassGraph>(passes, &cache_);
     auto post = cache_.get(fullscreen_vertex_source(), post_src);

@@ -79,6 +79,9 @@ class Session {
   const std::string& preset() const { return preset_.empty() ? file_scene_.quality.preset : preset_; }
   // DEBUG_VIEW compiled into the current program (0 = lit), and the one to use next.
   int compiled_debug_view() const { return compiled_debug_view_; }
+  // The exposure the post pass is given: the scene's, or 1 in a debug view,
+  // whose values are stored as they are (0.5 N + 0.5 as bytes).
+  float display_exposure() const { return compiled_debug_view_ > 0 ? 1.0f : scene_.render.exposure; }
   int debug_view = 0;
 
   // Delete the GL programs now, while the context is still current (the

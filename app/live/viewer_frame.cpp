@@ -99,7 +99,7 @@ bool FrameDrawer::draw(long frame, double dt, const std::function<void()>& ui) {
     fp.width = rw_;
     fp.height = rh_;
     fp.spp = 1;  // interactive: one sample per pixel; screenshots use the scene's spp
-    fp.exposure = session_.scene().render.exposure;
+    fp.exposure = session_.display_exposure();
     gpu_.begin();
     try {
       const Scene view = posed(static_cast<float>(s_.time));
@@ -168,7 +168,7 @@ void FrameDrawer::screenshot(const fs::path& path, int w, int h) {
   fp.width = w;
   fp.height = h;
   fp.spp = std::max(1, session_.scene().render.spp);
-  fp.exposure = session_.scene().render.exposure;
+  fp.exposure = session_.display_exposure();
   // A screenshot draws the frame as it stands: the buffers are not stepped
   // (they hold the window's size; a different size starts them afresh).
   const Scene view = posed(static_cast<float>(s_.time));

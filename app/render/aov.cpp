@@ -86,6 +86,10 @@ float steps_heat_position(float steps) {
   return std::clamp(std::log2(std::max(steps, 0.0f) + 1.0f) / 8.0f, 0.0f, 1.0f);
 }
 
+float depth_shade(float t, float max_dist) {
+  return 1.0f - std::clamp(std::log2(1.0f + std::max(t, 0.0f)) / std::log2(1.0f + max_dist), 0.0f, 1.0f);
+}
+
 glm::vec3 heat_ramp(float x) {
   static const glm::vec3 stops[5] = {{0.0f, 0.0f, 0.25f}, {0.0f, 0.35f, 1.0f}, {0.0f, 0.85f, 0.2f},
                                      {1.0f, 0.9f, 0.0f},  {1.0f, 0.0f, 0.0f}};

@@ -47,5 +47,8 @@ float steps_heat_position(float steps);
 // heatRamp(): 5 linear stops at 0, .25, .5, .75, 1 (dark blue, blue, green,
 // yellow, red), linear colour.
 glm::vec3 heat_ramp(float x);
+// DEBUG_VIEW 3's grey, exactly as depthShade() in aov.glsl: 1 at t = 0, 0 at
+// max_dist, 1 - log2(1 + t) / log2(1 + max_dist). For the legend and tests.
+float depth_shade(float t, float max_dist);
 
 }  // namespace ms

@@ -4,10 +4,12 @@
 // reload latency counted in frames, and every debug view.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
 #include "io/image_io.h"
+#include "render/aov.h"
 #include "run.h"
 #include "test_viewer_util.h"
 
@@ -258,6 +260,47 @@ TEST_F(Viewer, PresetsAreRendersPresets) {
     moved = std::max(moved, max_abs_diff(want, balanced));
   }
   EXPECT_GT(moved, 2.0 / 255.0) << "no preset changed render's image of the seed scene";
+}
+
+// Debug views show values: normals as 0.5 N + 0.5, depth as the legend's
+// grey, AO as itself, stored without exposure, tone map or sRGB encode.
+// Checked against render --aov of the same frame, where rays hit.
+TEST_F(Viewer, DebugViewsShowValuesNotRadiance) {
+  write_file(dir / "seed.glsl", map_glsl("MAT_BALL"));
+  write_file(dir / "seed.toml", toml + "\n[quality]\nmax_distance = 40.0\n");
+  const fs::path aov = dir / "aov.exr";
+  const RunResult r = run_marchstudio({"render", (dir / "seed.toml").string(), "--size", "160x90", "--aov",
+                                       "normal,depth,ao", "-o", aov.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Image a = read_image(aov);
+  auto channel = [&](const std::string& name) {
+    const auto it = std::find(a.channels.begin(), a.channels.end(), name);
+    EXPECT_NE(it, a.channels.end()) << name;
+    return static_cast<int>(it - a.channels.begin());
+  };
+  const int hit = channel("hit"), z = channel("Z"), nx = channel("N.x"), ao = channel("ao");
+  for (const int view : {2, 3, 4}) {
+    proc.reset();
+    fs::remove(log());
+    fs::remove_all(dir / "cap");
+    start({"--debug-view", std::to_string(view), "--max-frames", "2"});
+    const Image got = capture(0);
+    ASSERT_EQ(got.width, a.width);
+    int compared = 0, off = 0;
+    for (int y = 0; y < a.height; ++y)
+      for (int x = 0; x < a.width; ++x) {
+        if (a.at(x, y, hit) != 1.0f) continue;  // misses are black; edges mix samples
+        for (int c = 0; c < 3; ++c) {
+          const float want = view == 2   ? 0.5f * a.at(x, y, nx + c) + 0.5f
+                             : view == 3 ? depth_shade(a.at(x, y, z), 40.0f)
+                                         : a.at(x, y, ao);
+          off += std::abs(got.at(x, y, c) - want) > 1.0f / 255.0f;
+          ++compared;
+        }
+      }
+    EXPECT_GT(compared, 3 * 160 * 90 / 4) << "view " << view;
+    EXPECT_LE(off, compared / 1000) << "debug view " << view << " does not show the AOV's values";
+  }
 }
 
 // Before any window: a missing scene is bad input (2), no display is a

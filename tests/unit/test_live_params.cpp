@@ -2,10 +2,13 @@
 // GLSL and the frame-time medians.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "live/frame_stats.h"
 #include "live/overlay.h"
+#include "render/aov.h"
 #include "live/panel.h"
 #include "live/scene_params.h"
 
@@ -99,18 +102,33 @@ TEST(LiveFrameStats, KeepsOnlyTheCapacity) {
   EXPECT_EQ(s.values(), (std::vector<float>{7, 8, 9}));
 }
 
-// The legend shows what the post pass makes of the shader's ramp: with no
-// tone map, the stops' linear colours sRGB-encoded.
-TEST(LiveLegend, MatchesThePostPassOfTheRamp) {
-  const glm::vec3 red = heat_legend_color(255.0f, 1.0f, Tonemap::none);
-  EXPECT_NEAR(red.r, 1.0f, 1e-5f);
-  EXPECT_NEAR(red.g, 0.0f, 1e-5f);
-  const glm::vec3 green = heat_legend_color(15.0f, 1.0f, Tonemap::none);  // the middle stop (0, .85, .2)
-  EXPECT_NEAR(green.g, 1.055f * std::pow(0.85f, 1.0f / 2.4f) - 0.055f, 1e-4f);
-  EXPECT_NEAR(green.r, 0.0f, 1e-5f);
-  // ACES darkens the same stop; exposure brightens it.
-  EXPECT_LT(heat_legend_color(15.0f, 1.0f, Tonemap::aces).g, green.g);
-  EXPECT_GT(heat_legend_color(15.0f, 2.0f, Tonemap::aces).g, heat_legend_color(15.0f, 1.0f, Tonemap::aces).g);
+// Debug views are shown as values, so the legend is the shader's ramp
+// itself: its stops exactly, whatever the scene's exposure or tone map.
+TEST(LiveLegend, IsTheShadersRampAsStored) {
+  const glm::vec3 red = heat_legend_color(255.0f);
+  EXPECT_NEAR(red.r, 1.0f, 1e-6f);
+  EXPECT_NEAR(red.g, 0.0f, 1e-6f);
+  const glm::vec3 green = heat_legend_color(15.0f);  // the middle stop (0, .85, .2)
+  EXPECT_NEAR(green.g, 0.85f, 1e-6f);
+  EXPECT_NEAR(green.b, 0.2f, 1e-6f);
+  EXPECT_NEAR(heat_legend_color(3.0f).g, 0.35f, 1e-6f);  // the second stop
+}
+
+// The depth legend's ticks: ascending, 0 first and MAX_DIST last, where the
+// shader's grey is 1 and 0.
+TEST(LiveLegend, DepthTicksSpanTheShadersScale) {
+  for (float far : {5.0f, 20.0f, 100.0f, 1000.0f}) {
+    const std::vector<float> t = depth_legend_ticks(far);
+    ASSERT_GE(t.size(), 2u);
+    EXPECT_LE(t.size(), 6u);
+    EXPECT_EQ(t.front(), 0.0f);
+    EXPECT_EQ(t.back(), far);
+    EXPECT_TRUE(std::is_sorted(t.begin(), t.end()));
+    EXPECT_FLOAT_EQ(depth_shade(t.front(), far), 1.0f);
+    EXPECT_FLOAT_EQ(depth_shade(t.back(), far), 0.0f);
+  }
+  EXPECT_EQ(depth_legend_ticks(100.0f), (std::vector<float>{0, 1, 3, 10, 30, 100}));
+  EXPECT_NEAR(depth_shade(std::sqrt(101.0f) - 1.0f, 100.0f), 0.5f, 1e-5f);  // halfway on the log scale
 }
 
 }  // namespace
