@@ -125,9 +125,19 @@ void draw_overlay(const ViewState& s, const Session& session) {
     if (view == 3) draw_depth_legend(session.scene());
     ImGui::End();
   }
+  const float above_error = session.error().empty() ? 0.0f : 90.0f;
+  const bool bounds = !s.bounds_warning.empty() && !session.shadertoy();
+  if (bounds) {
+    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 10.0f - above_error), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, IM_COL32(90, 60, 0, 220));
+    ImGui::Begin("##bounds", nullptr, kOverlayFlags);
+    ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f), "geometry crosses [bounds] and is cut off there: grow [bounds] (details on the terminal)");
+    ImGui::End();
+    ImGui::PopStyleColor();
+  }
   if (!session.error().empty()) draw_error(session.error(), session.error_log(), session.generation() > 0);
   if (!s.message.empty() && s.now < s.message_until) {
-    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 10.0f - (session.error().empty() ? 0.0f : 90.0f)),
+    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 10.0f - above_error - (bounds ? 34.0f : 0.0f)),
                             ImGuiCond_Always, ImVec2(0.5f, 1.0f));
     ImGui::SetNextWindowBgAlpha(0.7f);
     ImGui::Begin("##message", nullptr, kOverlayFlags);

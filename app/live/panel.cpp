@@ -178,9 +178,19 @@ std::string param_declarations(const std::vector<SceneParam>& params) {
   return out;
 }
 
+PanelLayout panel_layout(float width, float height) {
+  PanelLayout l;
+  l.width = std::clamp(0.4f * width, 160.0f, 380.0f);
+  l.collapsed = width < 960.0f || height < 540.0f;
+  l.height = std::max(100.0f, (l.collapsed ? 0.8f : 1.0f) * height - 20.0f);  // its size once opened
+  return l;
+}
+
 void draw_panel(ViewState& s, Session& session, const GlInfo& gl) {
+  const PanelLayout layout = panel_layout(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y);
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(380, std::max(100.0f, ImGui::GetIO().DisplaySize.y - 20.0f)), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(layout.width, layout.height), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(layout.collapsed, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
   if (!ImGui::Begin("marchstudio", &s.show_panel)) {
     ImGui::End();

@@ -19,6 +19,16 @@ namespace ms::live {
 
 void draw_panel(ViewState& state, Session& session, const GlInfo& gl);
 
+// Where the panel first opens in a window of `width` x `height` pixels: at
+// most 40 % of the width, and collapsed to its title bar in a small window
+// (under 960x540), so a 640x360 image stays visible; a click opens it.
+struct PanelLayout {
+  float width = 380.0f;
+  float height = 0.0f;
+  bool collapsed = false;
+};
+PanelLayout panel_layout(float width, float height);
+
 // The scene parameters' current values as GLSL declarations with their
 // annotations, ready to paste back into the map file.
 std::string param_declarations(const std::vector<SceneParam>& params);

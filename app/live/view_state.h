@@ -49,6 +49,9 @@ struct ViewState {
   // Shown at the bottom of the window for a few seconds.
   std::string message;
   double message_until = 0.0;
+  // Shown at the top while it holds (a slider can push geometry out of
+  // [bounds], where it is cut off): empty when the bounds hold.
+  std::string bounds_warning;
 
   // Frame times: GPU (timer query), CPU (our work per frame, before the
   // swap), frame (swap to swap).

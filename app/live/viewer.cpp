@@ -124,10 +124,10 @@ void Viewer::watch_bounds(double now) {
   }
   if (w == bounds_warning_) return;
   bounds_warning_ = w;
+  s_.bounds_warning = w;
   log_.line(w.empty() ? "bounds ok" : "bounds " + w);
   if (w.empty()) return;
-  std::fprintf(stderr, "marchstudio: %s\n", w.c_str());
-  s_.say("geometry crosses [bounds]: it is cut off (see the terminal)");
+  std::fprintf(stderr, "marchstudio: %s\n", w.c_str());  // the overlay shows it while it holds
 }
 
 void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event) {

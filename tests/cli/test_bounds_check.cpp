@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/image_io.h"
 #include "run.h"
 #include "test_viewer_util.h"
 
@@ -72,6 +73,38 @@ TEST(BoundsCheck, TheViewerWarnsAfterAReload) {
   EXPECT_NE(read_file(dir / "err.txt").find(kWarning), std::string::npos) << "and on stderr";
   save_by_rename(dir / "ball.glsl", read_file(data("ball.glsl")));
   EXPECT_FALSE(wait_for_line(log, "^bounds ok$", 20).empty()) << read_file(log);
+}
+
+// While the bounds do not hold, the window says so on screen (the amber box
+// at the bottom), not only in the log: a window shot with the grown ball
+// has it, one with the ball inside its bounds has none.
+int amber_pixels(const fs::path& dir, const std::string& glsl) {
+  write_file(dir / "ball.toml", read_file(data("ball.toml")));
+  write_file(dir / "ball.glsl", read_file(data(glsl)));
+  const fs::path shots = dir / ("shots_" + glsl);
+  BackgroundProcess proc({"xvfb-run", "-a", "-n", std::to_string(200 + getpid() % 20000), "-s", "-screen 0 640x480x24",
+                          MARCH_BIN, "view", (dir / "ball.toml").string(), "--size", "640x360", "--paused", "--no-panel",
+                          "--shot-frame", "8", "--shot-dir", shots.string(), "--max-frames", "10", "--exit-after", "60"},
+                         dir / "out.txt", dir / "err.txt");
+  EXPECT_EQ(proc.wait_exit(90), 0) << read_file(dir / "err.txt");
+  int n = -1;
+  for (const auto& e : fs::directory_iterator(shots)) {
+    if (e.path().filename().string().find("_window_") == std::string::npos) continue;
+    const Image img = read_image(e.path());
+    n = 0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x)
+        n += std::abs(img.at(x, y, 0) - 109 / 255.0f) < 12 / 255.0f &&  // the box's amber over the floor
+             std::abs(img.at(x, y, 1) - 83 / 255.0f) < 12 / 255.0f && std::abs(img.at(x, y, 2) - 31 / 255.0f) < 12 / 255.0f;
+  }
+  return n;
+}
+
+TEST(BoundsCheck, TheViewerShowsItOnScreen) {
+  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+  TempDir dir;
+  EXPECT_GT(amber_pixels(dir.path(), "ball_big.glsl"), 3000) << "no warning box on screen";
+  EXPECT_EQ(amber_pixels(dir.path(), "ball.glsl"), 0) << "a warning box where the bounds hold";
 }
 
 }  // namespace
