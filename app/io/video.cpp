@@ -52,9 +52,6 @@ void check_video_path(const fs::path& out) {
   check_output_directory(out.parent_path().empty() ? fs::path(".") : out.parent_path(), "--video");
 }
 
-namespace {
-
-// Ends ffmpeg: SIGTERM, two seconds to finish, then SIGKILL; reaped.
 void end_child(pid_t pid) {
   ::kill(pid, SIGTERM);
   int status = 0;
@@ -66,8 +63,6 @@ void end_child(pid_t pid) {
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
 }
-
-}  // namespace
 
 bool encode_video(const VideoJob& job) {
   const fs::path tmp = temp_path_for(job.output, ::getpid(), true);  // ffmpeg picks the container by the extension

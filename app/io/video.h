@@ -2,6 +2,8 @@
 // installed. ffmpeg is found on PATH and run directly (no shell), so
 // patterns and paths need no quoting.
 #pragma once
+#include <sys/types.h>
+
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -14,6 +16,9 @@ namespace ms {
 // The full path of `program` in a PATH directory (executable regular
 // file), or empty when there is none.
 std::filesystem::path find_on_path(const std::string& program);
+
+// Ends a child (ffmpeg): SIGTERM, two seconds to finish, then SIGKILL; reaped.
+void end_child(pid_t pid);
 
 // Check before rendering that `out` can be written: a file name with an
 // extension (ffmpeg picks the container by it), an existing writable

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "render/audio_texture.h"
 #include "render/tiles.h"
+#include "render/video_texture.h"
 #include "render/uniforms.h"
 #include "shader/assemble.h"
 
@@ -29,6 +30,7 @@ struct PassGraph::Gpu {
   std::map<const Image*, GLuint> textures;
   std::map<const Volume*, GLuint> volumes;
   std::map<const AudioClip*, GLuint> audio;  // 512x2 R8, rewritten each frame
+  VideoTextures videos;  // RGBA8, the frame at iTime
   std::map<int, GLuint> samplers;  // by filter * 2 + wrap
   Buffer buffers[4];
   bool used[4] = {false, false, false, false};
@@ -139,6 +141,8 @@ PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
         glBindTexture(GL_TEXTURE_2D, tex);
         glTexStorage2D(GL_TEXTURE_2D, 1, GL_R8, kAudioTexWidth, 2);
         g.audio[in.audio.get()] = tex;
+      } else if (in.video) {
+        g.videos.add(in.video, in.sampler);
       }
   pass_ms_.assign(passes_.size(), 0.0);
 }
@@ -245,6 +249,11 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
         rw = kAudioTexWidth;
         rh = 2;
         break;
+      case InputKind::video:
+        tex = g.videos.texture(in.video.get());
+        rw = static_cast<float>(in.video->info().width);
+        rh = static_cast<float>(in.video->info().height);
+        break;
       default:
         break;
     }
@@ -330,7 +339,8 @@ void PassGraph::draw_buffer_pass(size_t pass, const FrameInputs& in, const Frame
   buf.latest = target;  // later passes, and the next frame, read this
 }
 
-void PassGraph::update_timed_inputs(const FrameInputs& in) {
+void PassGraph::update_timed_inputs(const FrameInputs& in, const FrameParams& p) {
+  gpu_->videos.update(in.time, p.deadline);
   for (auto& [clip, tex] : gpu_->audio) {
     const AudioTexels t = audio_texels(*clip, in.time, in.time_delta);
     glBindTexture(GL_TEXTURE_2D, tex);
@@ -341,7 +351,7 @@ void PassGraph::update_timed_inputs(const FrameInputs& in) {
 
 void PassGraph::step_buffers(const FrameInputs& in, const FrameParams& p) {
   ensure_buffers(p.width, p.height);
-  update_timed_inputs(in);
+  update_timed_inputs(in, p);
   Gpu& g = *gpu_;
   if (in.keyboard) {
     glBindTexture(GL_TEXTURE_2D, g.keyboard);
@@ -360,7 +370,7 @@ void PassGraph::draw(FrameRenderer& renderer, const Program& post, const FrameIn
   if (step) step_buffers(in, p);
   else {
     ensure_buffers(p.width, p.height);
-    update_timed_inputs(in);
+    update_timed_inputs(in, p);
   }
   const size_t last = passes_.size() - 1;
   const PassSource& frame_pass = passes_[last];

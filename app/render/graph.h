@@ -24,6 +24,7 @@
 
 #include "io/audio.h"
 #include "io/image.h"
+#include "io/video_input.h"
 #include "render/frame.h"
 #include "render/program.h"
 #include "render/program_cache.h"
@@ -47,6 +48,7 @@ struct GraphInput {
   std::shared_ptr<const Image> image; // texture: decoded (top row first)
   std::shared_ptr<const Volume> volume;  // volume: its voxels
   std::shared_ptr<const AudioClip> audio;  // music, musicstream: the decoded clip (render/audio_texture.h per frame)
+  std::shared_ptr<VideoStream> video;      // video: its decoder (render/video_texture.h per frame)
   bool eight_bit = true;              // texture: stored as RGBA8 (PNG, JPEG), else as float (EXR, HDR)
   bool single_channel = false;        // texture: uploaded as one channel, sampled (v, 0, 0, 1)
   Sampler sampler;
@@ -129,7 +131,7 @@ class PassGraph {
   void ensure_buffers(int w, int h);
   void bind_inputs(size_t pass, int w, int h, float channel_res[4][3]);
   void draw_buffer_pass(size_t pass, const FrameInputs& in, const FrameParams& p);
-  void update_timed_inputs(const FrameInputs& in);  // inputs that follow iTime (audio), once per frame
+  void update_timed_inputs(const FrameInputs& in, const FrameParams& p);  // inputs that follow iTime (audio, video), once per frame
 
   std::vector<PassSource> passes_;
   std::vector<std::shared_ptr<const Program>> programs_;

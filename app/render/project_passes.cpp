@@ -2,11 +2,13 @@
 
 #include <map>
 #include <memory>
+#include <tuple>
 
 #include "core/error.h"
 #include "io/audio.h"
 #include "io/image_io.h"
 #include "io/input_file.h"
+#include "io/video_input.h"
 #include "shader/glslviewer.h"
 #include "shader/shadertoy.h"
 #include "shader/shadertoy_media.h"
@@ -98,6 +100,7 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
   std::map<fs::path, std::shared_ptr<const Image>> decoded;  // a file used twice is read once
   std::map<std::string_view, std::shared_ptr<const Volume>> volumes;  // by hash: one upload per volume
   std::map<fs::path, std::shared_ptr<const AudioClip>> clips;  // a file used twice is decoded once
+  std::map<std::tuple<fs::path, bool, bool>, std::shared_ptr<VideoStream>> videos;  // one decoder per file, vflip, sRGB
   std::vector<PassSource> out;
   for (size_t i = 0; i < p.passes.size(); ++i) {
     const ProjectPass& pass = p.passes[i];
@@ -172,6 +175,26 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
           auto& clip = clips[f];
           if (!clip) clip = std::make_shared<const AudioClip>(read_audio(f));
           g.audio = clip;
+          break;
+        }
+        case InputKind::video: {
+          // Found like a texture; missing: an error, or the texture's stand-in with a warning.
+          const fs::path f = find_media(in, s);
+          if (f.empty()) {
+            if (s.missing_media == MissingMedia::error)
+              fail_input(where + ": video '" + in.src + "' is not in the media directory", origin, 0, where,
+                         (s.media_dir.empty() ? std::string("no media directory") : "looked in " + s.media_dir.string()) +
+                             "; give --media-dir DIR, or --missing-media noise|black to stand in for it");
+            const bool noise = s.missing_media == MissingMedia::noise;
+            warnings.push_back(where + ": video '" + in.src + "' is missing; " +
+                               (noise ? "a still of generated noise stands in" : "black stands in"));
+            g.kind = InputKind::texture;  // a still image, bound as a texture is
+            g.image = std::make_shared<const Image>(media_standin(in.src, s.missing_media));
+            break;
+          }
+          auto& v = videos[{f, in.sampler.vflip, in.sampler.srgb}];
+          if (!v) v = open_video(f, where);  // ffmpeg missing, a file it cannot decode: one line
+          g.video = v;
           break;
         }
         case InputKind::mic:

@@ -26,8 +26,10 @@ struct Sampler {
 };
 
 // What a channel reads. Shadertoy's ctypes; the ones marchstudio does not
-// run yet (cubemap, audio, video, webcam, mic) are refused where the
-// project is loaded, never bound as black.
+// run (the live devices webcam and mic, and what docs/shadertoy.md#support
+// lists as not yet) are refused where the project is loaded, never bound
+// as black. Video is decoded through ffmpeg (io/video_input.h), music
+// through libsndfile (io/audio.h).
 enum class InputKind { none, buffer, texture, keyboard, cubemap, volume, music, musicstream, mic, video, webcam };
 
 const char* input_kind_name(InputKind k);

@@ -149,6 +149,7 @@ class Loader {
       s.wrap = TexWrap::repeat;
       s.vflip = true;
     }
+    if (kind == InputKind::video) s.vflip = true;  // Shadertoy's video default: linear, clamp, vflip
     if (!in.contains("sampler")) return s;
     const json& j = in["sampler"];
     const std::string p = path + ".sampler";
