@@ -247,7 +247,7 @@ std::shared_ptr<VideoStream> open_video(const fs::path& file, const std::string&
   const fs::path ffmpeg = find_on_path("ffmpeg");
   if (ffmpeg.empty())
     fail_input(where + ": video inputs need ffmpeg, which is not on PATH", file.string(), 0, {},
-               "install ffmpeg (tools/install-deps.sh lists it)");
+               "install ffmpeg; tools/install-deps.sh lists it");
   const std::string problem = input_file_problem(file);
   if (!problem.empty()) fail_input("cannot read the video file: " + problem, file.string());
   const fs::path ffprobe = find_on_path("ffprobe");
