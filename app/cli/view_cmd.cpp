@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdlib>
 #include <cmath>
 #include <regex>
 
@@ -31,6 +32,19 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_option("--time", a.time, "Start time in seconds (default: the scene's)")->check(CLI::Range(0.0, 1e9));
   cmd->add_option("--preset", a.preset, "Quality preset to start with, as render --preset (default: the scene's)")
       ->check(one_of(quality_preset_names()));
+  cmd->add_option_function<std::string>(
+         "--accumulate",
+         [&a](const std::string& v) {
+           if (v == "unlimited") return void(a.accumulate = 0);
+           char* end = nullptr;
+           const long n = std::strtol(v.c_str(), &end, 10);
+           if (v.empty() || *end != '\0' || n < 1 || n > 1 << 20)
+             fail_input("invalid --accumulate '" + v + "'", {}, 0, "--accumulate",
+                        "a number of samples 1..1048576 (1: off), or unlimited");
+           a.accumulate = static_cast<int>(n);
+         },
+         "While nothing changes, add jittered samples up to N (render --spp N's), or without limit (unlimited); "
+         "1: off (default: the scene's [render] spp)");
   cmd->add_flag("--paused", a.paused, "Start with time paused");
   cmd->add_option("--log", a.log, "Write event lines (reload ok/failed, captures, frame times) here, not stderr");
   cmd->add_option("--capture-dir", a.capture_dir,
@@ -97,6 +111,7 @@ int run_view(const ViewArgs& a) {
     o.shot_height = size.height;
   }
   o.debug_view = a.debug_view;
+  o.accumulate = a.accumulate;
   o.preset = a.preset;
   o.time = a.time;
   o.paused = a.paused;

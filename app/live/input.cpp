@@ -74,6 +74,8 @@ void on_key(GLFWwindow* w, int key, int, int action, int mods) {
     case GLFW_KEY_F1: s.show_panel = !s.show_panel; break;
     case GLFW_KEY_H: s.show_help = !s.show_help; break;
     case GLFW_KEY_F5: s.want_disk_reload = true; break;
+    case GLFW_KEY_O: s.accumulate = s.accumulate == 0 ? s.accumulate_default : 0; break;  // 0: no limit
+    case GLFW_KEY_K: s.want_accumulated_shot = true; break;
     case GLFW_KEY_P:
     case GLFW_KEY_F12:
       if (shift) s.want_window_shot = true;
@@ -151,6 +153,8 @@ const char* const kHelp[] = {
     "0..6, V, Shift+V debug view: lit, steps, normals, depth, AO, shadow, material",
     "P, F12           screenshot of the frame (--shot-size for larger)",
     "Shift+P          screenshot of the window with the panel",
+    "O                accumulate samples without limit / up to the target",
+    "K                save the accumulated frame as it stands",
     "F5               reload everything from disk",
     "Tab, F1          show / hide the panel;  H  this help",
     "Esc              quit",

@@ -115,12 +115,15 @@ std::vector<float> depth_legend_ticks(float max_dist) {
 void draw_overlay(const ViewState& s, const Session& session) {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   const int view = session.compiled_debug_view();
-  if (view > 0 || s.paused) {
+  const bool accumulating = s.samples_target != 1 && s.samples > 0;
+  if (view > 0 || s.paused || accumulating) {
     ImGui::SetNextWindowPos(ImVec2(size.x - 10.0f, 10.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.6f);
     ImGui::Begin("##view", nullptr, kOverlayFlags);
     if (view > 0) ImGui::Text("debug view %d: %s", view, debug_view_name(view));
     if (s.paused) ImGui::Text("paused at t = %.3f s", s.time);
+    if (accumulating && s.samples_target == 0) ImGui::Text("samples %d (no limit; O: up to the target)", s.samples);
+    else if (accumulating) ImGui::Text("samples %d / %d%s", s.samples, s.samples_target, s.samples >= s.samples_target ? " (converged)" : "");
     if (view == 1) draw_steps_legend(session.scene());
     if (view == 3) draw_depth_legend(session.scene());
     ImGui::End();

@@ -43,8 +43,17 @@ struct ViewState {
   bool want_rewind = false;       // Home: time and iFrame to the start, buffers to 0
   bool want_shot = false;         // P: the frame, through the render capture path
   bool want_window_shot = false;  // Shift+P: the window with the UI
+  bool want_accumulated_shot = false;  // K: the accumulated frame as it stands
   bool want_write_camera = false; // C
   bool want_write_values = false; // Ctrl+S / panel button
+
+  // Progressive accumulation (live/accumulation.h): the samples to reach
+  // while nothing changes: kSceneSpp (the scene's [render] spp), N, or
+  // Accumulation::kNoLimit (0). O toggles no limit. The count is shown.
+  static constexpr int kSceneSpp = -1;
+  int accumulate = kSceneSpp;
+  int accumulate_default = kSceneSpp;  // --accumulate: what O returns to
+  int samples = 0, samples_target = 1;  // as drawn, for the overlay
 
   // Shown at the bottom of the window for a few seconds.
   std::string message;

@@ -197,12 +197,36 @@ void Viewer::after_frame() {
               (r.ok ? "" : " -- " + r.error));
     if (!o_.capture_dir.empty()) drawer_->capture(o_.capture_dir, pending_.number, log_);
   }
+  if (drawer_->just_converged()) {
+    const int n = drawer_->samples();
+    log_.line("converged " + std::to_string(n));
+    if (!o_.capture_dir.empty()) {
+      std::error_code ec;
+      fs::create_directories(o_.capture_dir, ec);
+      try {
+        drawer_->save_accumulated(o_.capture_dir / ("converged_" + std::to_string(n) + ".png"), log_);
+      } catch (const Error& e) {
+        log_.line(std::string("accumulated_shot failed -- ") + e.what());
+      }
+    }
+  }
 }
 
 void Viewer::serve_requests() {
   if (s_.want_shot) {
     s_.want_shot = false;
     screenshot();
+  }
+  if (s_.want_accumulated_shot) {
+    s_.want_accumulated_shot = false;
+    try {
+      const fs::path path = next_free_path(o_.shot_dir, o_.input.stem().string() + "_accumulated");
+      drawer_->save_accumulated(path, log_);
+      s_.say("saved " + path.string() + " (" + std::to_string(drawer_->samples()) + " samples)");
+    } catch (const Error& e) {
+      std::fprintf(stderr, "marchstudio: %s\n", e.what());
+      s_.say(std::string("not saved: ") + e.what());
+    }
   }
   if (s_.want_write_camera) {
     s_.want_write_camera = false;
@@ -294,6 +318,7 @@ int Viewer::run() {
 
   s_.show_panel = !o_.hide_panel;
   s_.paused = o_.paused;
+  s_.accumulate = s_.accumulate_default = o_.accumulate;
   s_.debug_view = session_.debug_view = std::clamp(o_.debug_view, 0, kDebugViews - 1);
   session_.set_preset(o_.preset);
   reload(true, seconds_now(), 0, 1);  // the initial build is number 0 (frame_0.png)

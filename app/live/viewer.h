@@ -19,6 +19,7 @@ struct ViewerOptions {
   AssembleOptions assemble;          // the shader dir
   int width = 0, height = 0;         // window size; 0: the scene's, at most 1280x720
   int debug_view = 0;                // DEBUG_VIEW at start (0 = lit)
+  int accumulate = -1;               // samples to accumulate while nothing changes: -1 the scene's spp, 0 no limit, N
   std::string preset;                // a quality preset at start (scene/quality.h); empty: the file's
   bool paused = false;
   double time = -1.0;                // start time; < 0: the scene's [render] time

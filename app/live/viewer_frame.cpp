@@ -17,6 +17,7 @@
 #include "render/still.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
+#include "scene/writeback.h"
 
 namespace ms::live {
 namespace fs = std::filesystem;
@@ -77,6 +78,27 @@ Scene FrameDrawer::posed(float time) const {
   return view;
 }
 
+Accumulation::Step FrameDrawer::accumulation_step(const PassGraph& graph, const Scene& view) {
+  const Program& main = graph.program(graph.size() - 1);
+  // Buffers step every frame, and a debug view's steps or a moving time
+  // change the image: those never accumulate past the one sample.
+  int target = s_.accumulate == ViewState::kSceneSpp ? std::max(1, session_.scene().render.spp) : s_.accumulate;
+  if (graph.stateful()) target = 1;
+  const bool timed = session_.shadertoy() || !view.animation.empty() || main.loc("uTime") >= 0;
+  AccumulationKey key;
+  key.generation = session_.generation();
+  key.debug_view = session_.compiled_debug_view();
+  key.width = rw_;
+  key.height = rh_;
+  key.camera = view.camera;
+  key.time = timed ? s_.time : 0.0;
+  if (main.loc("uFrame") >= 0 && !s_.paused) key.time = static_cast<double>(frame_) + 0.5;  // a new frame each time
+  for (const SceneParam& p : session_.params()) key.params.insert(key.params.end(), p.value.begin(), p.value.end());
+  const bool scene_changed = !scene_value_edits(accum_scene_, session_.scene()).empty();
+  if (scene_changed) accum_scene_ = session_.scene();
+  return accum_.next(key, scene_changed, target);
+}
+
 bool FrameDrawer::draw(long frame, double dt, const std::function<void()>& ui) {
   glfwGetFramebufferSize(window_, &fbw_, &fbh_);
   if (fbw_ <= 0 || fbh_ <= 0) return false;
@@ -98,22 +120,38 @@ bool FrameDrawer::draw(long frame, double dt, const std::function<void()>& ui) {
     FrameParams fp;
     fp.width = rw_;
     fp.height = rh_;
-    fp.spp = 1;  // interactive: one sample per pixel; screenshots use the scene's spp
+    fp.spp = 1;  // interactive: one sample per pixel, more while nothing changes; screenshots use the scene's spp
     fp.exposure = session_.display_exposure();
-    gpu_.begin();
+    just_converged_ = false;
     try {
       const Scene view = posed(static_cast<float>(s_.time));
-      const UniformFn extra = uniforms(rw_, rh_);
-      // Paused, a shader's buffers hold still: only the image is drawn.
-      graph->draw(renderer_, *post, inputs(view, &extra), fp, !s_.paused);
-      if (!s_.paused) ++sim_frame_;
-      rendered = true;
+      const Accumulation::Step step = accumulation_step(*graph, view);
+      if (step.draw) {
+        fp.spp = step.spp;
+        fp.sample_begin = step.begin;
+        fp.sample_end = step.end;
+        fp.open_ended = step.open_ended;
+        const UniformFn extra = uniforms(rw_, rh_);
+        // Paused, a shader's buffers hold still: only the image is drawn.
+        gpu_.begin();
+        struct EndQuery {
+          GpuTimer& t;
+          ~EndQuery() { t.end(); }
+        } end_query{gpu_};
+        graph->draw(renderer_, *post, inputs(view, &extra), fp, !s_.paused);
+        accum_.drawn();
+        just_converged_ = accum_.converged();
+        if (!s_.paused) ++sim_frame_;
+      }
+      s_.samples = accum_.samples();
+      s_.samples_target = accum_.target();
+      rendered = step.draw || have_frame_;  // converged: the buffer already holds the frame
       last_error_.clear();
     } catch (const Error& e) {
+      accum_.restart();
       if (last_error_ != e.what()) std::fprintf(stderr, "marchstudio: %s\n", e.what());
       last_error_ = e.what();
     }
-    gpu_.end();
   }
   have_frame_ = have_frame_ || rendered;
 
@@ -174,6 +212,7 @@ void FrameDrawer::screenshot(const fs::path& path, int w, int h) {
   const Scene view = posed(static_cast<float>(s_.time));
   const UniformFn extra = uniforms(w, h);
   graph->draw(renderer_, *post, inputs(view, &extra), fp, false);
+  accum_.restart();  // the frame's buffers now hold the screenshot
   Image img = renderer_.read_color();
   take_flagged(img);
   write_image(img, path,
@@ -181,6 +220,18 @@ void FrameDrawer::screenshot(const fs::path& path, int w, int h) {
                {"ImageDescription", session_.scene().name + " t=" + std::to_string(s_.time) +
                                         " spp=" + std::to_string(fp.spp) + " debug_view=" +
                                         std::to_string(session_.compiled_debug_view())}});
+}
+
+void FrameDrawer::save_accumulated(const fs::path& path, LiveLog& log) {
+  if (!have_frame_) fail_input("no frame to save: the scene has not compiled yet");
+  check_output_path(path);
+  const int n = std::max(1, accum_.samples());
+  write_image(renderer_.read_color(), path,
+              {{"Software", "marchstudio 0.1.0 view"},
+               {"ImageDescription", session_.scene().name + " t=" + std::to_string(s_.time) + " spp=" +
+                                        std::to_string(n) + " accumulated debug_view=" +
+                                        std::to_string(session_.compiled_debug_view())}});
+  log.line("accumulated_shot " + std::to_string(n) + " " + path.string());
 }
 
 void FrameDrawer::window_shot(const fs::path& path, LiveLog& log) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gl/context.h"
+#include "live/accumulation.h"
 #include "live/live_log.h"
 #include "live/session.h"
 #include "live/view_state.h"
@@ -38,6 +39,12 @@ class FrameDrawer {
   // Re-render the current view at w x h with the scene's spp and write it,
   // the way `render` does. Throws ms::Error.
   void screenshot(const std::filesystem::path& path, int w, int h);
+  // The accumulated frame as it stands (post output, render size), its
+  // sample count in the file's description; logs "accumulated_shot <n> <path>".
+  void save_accumulated(const std::filesystem::path& path, LiveLog& log);
+  // True for the frame whose sample reached the accumulation's target.
+  bool just_converged() const { return just_converged_; }
+  int samples() const { return accum_.samples(); }
   // The window's back buffer with the UI (call between draw() and the swap).
   void window_shot(const std::filesystem::path& path, LiveLog& log);
 
@@ -61,6 +68,8 @@ class FrameDrawer {
   FrameInputs inputs(const Scene& posed, const UniformFn* extra) const;
   // The scene as drawn at `time`: animation applied, the interactive camera.
   Scene posed(float time) const;
+  // What this frame adds to the accumulation (live/accumulation.h).
+  Accumulation::Step accumulation_step(const PassGraph& graph, const Scene& view);
 
   GLFWwindow* window_;
   const Context& ctx_;
@@ -73,6 +82,9 @@ class FrameDrawer {
   long frame_ = 0;
   double dt_ = 0.0;
   bool have_frame_ = false;
+  Accumulation accum_;
+  bool just_converged_ = false;
+  Scene accum_scene_;  // the panel values the accumulation was started with
   std::string last_error_;
 };
 

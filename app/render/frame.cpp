@@ -103,7 +103,9 @@ FrameRenderer::~FrameRenderer() { glDeleteVertexArrays(1, &vao_); }  // targets 
 
 void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, const Program& post,
                          const FrameParams& p) {
-  if (p.fused_post && (p.spp != 1 || p.aovs))
+  const int end = p.sample_end < 0 ? std::max(p.spp, 1) : p.sample_end;
+  const int begin = std::clamp(p.sample_begin, 0, end);
+  if (p.fused_post && (p.spp != 1 || p.aovs || end != 1))
     fail_system("internal: a fused post pass needs one sample per pixel and no AOVs");
   const int attachments = p.aovs ? 1 + kAovTargets : 1;
   check_frame_size(ctx_.info(), p.width, p.height, attachments + 1);
@@ -115,7 +117,7 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   }
   if (!p.fused_post && (!accum_ || accum_->count() != attachments))
     accum_ = std::make_unique<RenderTarget>(p.width, p.height, attachments);
-  spp_ = std::max(p.spp, 1);
+  spp_ = std::max(end, 1);
   aovs_ = p.aovs;
   glBindVertexArray(vao_);
   glViewport(0, 0, p.width, p.height);
@@ -127,9 +129,11 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   // no clear and no blending, which on llvmpipe read back the whole float
   // buffer (about 15% of a fast frame at 1280x720).
   glBindFramebuffer(GL_FRAMEBUFFER, p.fused_post ? result_->fbo : accum_->fbo);
-  if (spp_ > 1) {
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT);
+  if (end - begin > 1 || begin > 0) {
+    if (begin == 0) {
+      glClearColor(0, 0, 0, 0);
+      glClear(GL_COLOR_BUFFER_BIT);
+    }
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
@@ -146,7 +150,11 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   // covers more than a tile. A flush per tile submits it on its own (a GPU
   // watchdog times single submissions); with a deadline each draw is waited
   // for and the deadline checked, the finest point llvmpipe can stop at.
-  const std::vector<glm::vec2> samples = stratified_samples(p.spp);
+  std::vector<glm::vec2> samples = p.open_ended ? open_samples(begin, end) : stratified_samples(p.spp);
+  if (!p.open_ended) {
+    samples.resize(std::min<size_t>(samples.size(), static_cast<size_t>(end)));
+    samples.erase(samples.begin(), samples.begin() + std::min<size_t>(samples.size(), static_cast<size_t>(begin)));
+  }
   glEnable(GL_SCISSOR_TEST);
   for (const Tile& t : split_tiles(p.width, p.height, p.tile_size)) {
     glScissor(t.x, t.y, t.width, t.height);
@@ -176,7 +184,7 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, accum_->tex[0]);
     glUniform1i(post.loc("uAccum"), 0);
-    glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(p.spp));
+    glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(spp_));
     glUniform1f(post.loc("uExposure"), p.exposure);
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }

@@ -38,6 +38,16 @@ struct FrameParams {
   int offset_x = 0, offset_y = 0;
   int resolution_width() const { return image_width > 0 ? image_width : width; }
   int resolution_height() const { return image_height > 0 ? image_height : height; }
+  // Progressive accumulation (the viewer): draw only samples
+  // [sample_begin, sample_end) of the frame's sequence, adding them to what
+  // the draws before left in the accumulation buffer (sample_begin 0
+  // starts afresh); post then averages over sample_end samples. After draws
+  // of 0..1, 1..2, ..., N-1..N the frame equals one draw of all N (the same
+  // samples, added in the same order). The sequence is stratified_samples(spp),
+  // or with open_ended open_samples() (no limit). -1: all spp samples.
+  int sample_begin = 0;
+  int sample_end = -1;
+  bool open_ended = false;
   // When set, every draw is waited for (glFinish) and the deadline checked
   // after it: draw() throws the --timeout error (Exit::system) once it passed.
   const Deadline* deadline = nullptr;

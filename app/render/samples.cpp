@@ -1,5 +1,6 @@
 #include "render/samples.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -38,6 +39,21 @@ std::vector<glm::vec2> stratified_samples(int spp) {
     const int s = strata[i];
     const float jx = rng.unit(), jy = rng.unit();
     out.emplace_back((static_cast<float>(s % k) + jx) / k, (static_cast<float>(s / k) + jy) / k);
+  }
+  return out;
+}
+
+std::vector<glm::vec2> open_samples(int begin, int end) {
+  // g: the plastic number, x^3 = x + 1; a = (1/g, 1/g^2) (Roberts 2018).
+  const double g = 1.32471795724474602596, a1 = 1.0 / g, a2 = 1.0 / (g * g);
+  std::vector<glm::vec2> out;
+  for (int n = std::max(begin, 0); n < end; ++n) {
+    if (n == 0) {
+      out.emplace_back(0.5f);
+      continue;
+    }
+    const double x = 0.5 + a1 * n, y = 0.5 + a2 * n;
+    out.emplace_back(static_cast<float>(x - std::floor(x)), static_cast<float>(y - std::floor(y)));
   }
   return out;
 }

@@ -12,4 +12,10 @@ namespace ms {
 // chosen in a fixed shuffled order and jittered inside each with a fixed seed.
 std::vector<glm::vec2> stratified_samples(int spp);
 
+// Samples [begin, end) of an endless sequence in [0,1)^2 for accumulation
+// without a limit: sample 0 is the pixel centre, then Roberts' R2 sequence
+// (the plastic number's additive recurrence), low-discrepancy at every
+// prefix, so the image refines evenly however long it runs.
+std::vector<glm::vec2> open_samples(int begin, int end);
+
 }  // namespace ms

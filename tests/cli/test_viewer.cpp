@@ -345,6 +345,43 @@ TEST(ViewerPanel, CollapsesInASmallWindowAndOpensInALargeOne) {
   EXPECT_LT(large, 0.45);
 }
 
+// Progressive accumulation: paused, each frame adds one of render --spp N's
+// samples; the converged frame is render --spp N's image, and a reload
+// starts again from one sample.
+TEST_F(Viewer, AccumulationConvergesToRenderSpp) {
+  write_file(dir / "seed.glsl", map_glsl("MAT_BALL"));
+  start({"--accumulate", "4", "--max-frames", "40"});
+  ASSERT_FALSE(wait_for_line(log(), "^converged 4$", 30).empty()) << read_file(log());
+  ASSERT_FALSE(wait_for_line(log(), "^accumulated_shot 4 ", 10).empty()) << read_file(log());
+  auto render = [&](const std::string& spp, const std::string& name) {
+    const fs::path out = dir / name;
+    const RunResult r = run_marchstudio({"render", (dir / "seed.toml").string(), "--size", "160x90", "--spp", spp,
+                                         "-o", out.string()});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return read_image(out);
+  };
+  const Image converged = read_image(dir / "cap" / "converged_4.png");
+  const Image want = render("4", "spp4.png");
+  EXPECT_LE(max_abs_diff(converged, want), 1.0 / 255.0) << "the converged frame is not render --spp 4";
+  // The first frame is one of those samples alone (jittered: not render --spp 1's pixel centres).
+  EXPECT_GT(max_abs_diff(capture(0), want), 8.0 / 255.0) << "one sample looks like 4: the test cannot see accumulation";
+  // A reload restarts it: converged again, to the new map's image.
+  proc.reset();
+  fs::remove(log());
+  fs::remove_all(dir / "cap");
+  start({"--accumulate", "4"});
+  ASSERT_FALSE(wait_for_line(log(), "^converged 4$", 30).empty()) << read_file(log());
+  save_by_rename(dir / "seed.glsl", map_glsl("MAT_BALL", "0.8"));
+  ASSERT_FALSE(wait_for_line(log(), "^reload ok 1 ", 20).empty()) << read_file(log());
+  auto converged_lines = [&] {
+    const std::vector<std::string> l = file_lines(log());
+    return std::count(l.begin(), l.end(), std::string("converged 4"));
+  };
+  for (int i = 0; i < 200 && converged_lines() < 2; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  const std::vector<std::string> all = file_lines(log());
+  EXPECT_EQ(std::count(all.begin(), all.end(), std::string("converged 4")), 2) << read_file(log());
+}
+
 // Before any window: a missing scene is bad input (2), no display is a
 // system failure (3); neither needs Xvfb.
 TEST(ViewerStart, ExitCodesWithoutAWindow) {
