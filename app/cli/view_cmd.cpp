@@ -12,6 +12,8 @@
 #include "core/error.h"
 #include "gl/context.h"
 #include "io/input_file.h"
+#include "io/sequence.h"
+#include "io/video.h"
 #include "live/viewer.h"
 #include "scene/load.h"
 #include "scene/quality.h"
@@ -45,6 +47,15 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
          },
          "While nothing changes, add jittered samples up to N (render --spp N's), or without limit (unlimited); "
          "1: off (default: the scene's [render] spp)");
+  cmd->add_option("--record-dir", a.record_dir,
+                  "Where F9's recording writes frame_%04d.png (default: <input stem>_frames)")
+      ->check(not_empty());
+  cmd->add_option("--record-fps", a.record_fps, "Frames per second of a recording (default 24; a Shadertoy shader's 60)")
+      ->check(CLI::Range(0.001, 1000.0));
+  cmd->add_option("--record", a.record_frames, "Record frames A..B at start, as render --frames A..B would (scripts)")
+      ->check(not_empty());
+  cmd->add_option("--record-video", a.record_video, "Encode each recording into this file with ffmpeg (e.g. out.mp4)")
+      ->check(not_empty());
   cmd->add_flag("--paused", a.paused, "Start with time paused");
   cmd->add_option("--log", a.log, "Write event lines (reload ok/failed, captures, frame times) here, not stderr");
   cmd->add_option("--capture-dir", a.capture_dir,
@@ -112,6 +123,22 @@ int run_view(const ViewArgs& a) {
   }
   o.debug_view = a.debug_view;
   o.accumulate = a.accumulate;
+  o.record.dir = a.record_dir.empty() ? fs::path(fs::path(a.input).stem().string() + "_frames") : fs::path(a.record_dir);
+  o.record.fps = a.record_fps;
+  if (!a.record_frames.empty()) {
+    FrameRange r;
+    try {
+      r = parse_frame_range(a.record_frames);
+    } catch (const Error&) {  // its message names --frames
+      fail_input("invalid --record '" + a.record_frames + "'", {}, 0, "--record", "frames A..B, as render --frames");
+    }
+    o.record.first = r.first;
+    o.record.last = r.last;
+  }
+  if (!a.record_video.empty()) {
+    check_video_path(a.record_video);
+    o.record.video = a.record_video;
+  }
   o.preset = a.preset;
   o.time = a.time;
   o.paused = a.paused;

@@ -18,7 +18,9 @@ struct ViewArgs {
   std::string shader_dir;
   std::vector<std::string> defines;  // -D NAME[=VALUE]
   int debug_view = 0;
-  int accumulate = -1;  // --accumulate: -1 the scene's spp, 0 no limit (unlimited), N
+  int accumulate = -1;
+  std::string record_dir, record_frames, record_video;  // --record-dir, --record A..B, --record-video
+  double record_fps = 0.0;  // --accumulate: -1 the scene's spp, 0 no limit (unlimited), N
   std::string preset;
   double time = -1.0;        // < 0: the scene's
   bool paused = false;

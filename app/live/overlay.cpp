@@ -116,11 +116,12 @@ void draw_overlay(const ViewState& s, const Session& session) {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   const int view = session.compiled_debug_view();
   const bool accumulating = s.samples_target != 1 && s.samples > 0;
-  if (view > 0 || s.paused || accumulating) {
+  if (view > 0 || s.paused || accumulating || s.recording_frame >= 0) {
     ImGui::SetNextWindowPos(ImVec2(size.x - 10.0f, 10.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.6f);
     ImGui::Begin("##view", nullptr, kOverlayFlags);
     if (view > 0) ImGui::Text("debug view %d: %s", view, debug_view_name(view));
+    if (s.recording_frame >= 0) ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.3f, 1.0f), "REC frame %d (F9 stops)", s.recording_frame);
     if (s.paused) ImGui::Text("paused at t = %.3f s", s.time);
     if (accumulating && s.samples_target == 0) ImGui::Text("samples %d (no limit; O: up to the target)", s.samples);
     else if (accumulating) ImGui::Text("samples %d / %d%s", s.samples, s.samples_target, s.samples >= s.samples_target ? " (converged)" : "");

@@ -44,6 +44,8 @@ struct ViewState {
   bool want_shot = false;         // P: the frame, through the render capture path
   bool want_window_shot = false;  // Shift+P: the window with the UI
   bool want_accumulated_shot = false;  // K: the accumulated frame as it stands
+  bool want_record_toggle = false;     // F9: start / stop recording (live/recording.h)
+  int recording_frame = -1;            // the frame being recorded, for the overlay; -1: not recording
   bool want_write_camera = false; // C
   bool want_write_values = false; // Ctrl+S / panel button
 

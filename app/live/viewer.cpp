@@ -21,6 +21,7 @@
 #include "live/live_log.h"
 #include "live/overlay.h"
 #include "live/panel.h"
+#include "live/recording.h"
 #include "live/session.h"
 #include "live/viewer_frame.h"
 #include "live/watcher.h"
@@ -74,7 +75,7 @@ struct PendingReload {
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& o)
-      : o_(o), log_(o.log_file), session_(SessionOptions{o.load, o.assemble}) {}
+      : o_(o), log_(o.log_file), session_(SessionOptions{o.load, o.assemble}), recorder_(o.record) {}
   int run();
 
  private:
@@ -98,6 +99,7 @@ class Viewer {
   long frames_ = 0, iterations_ = 0;
   int reloads_ = 0;
   PendingReload pending_;
+  Recorder recorder_;
   // The bounds check (render/bounds_check.h): after each reload, when a
   // slider moves, and once a second for animation; reported when it changes.
   ProgramCache bounds_cache_{2};
@@ -342,7 +344,15 @@ int Viewer::run() {
       s_.time = s_.start_time;
       drawer.rewind();
     }
-    if (!s_.paused) s_.time += dt * s_.speed;
+    if (s_.want_record_toggle || (iterations_ == 1 && o_.record.first >= 0)) {  // F9, or --record A..B at start
+      s_.want_record_toggle = false;
+      const bool stateful = session_.graph() && session_.graph()->stateful();
+      s_.say(recorder_.active() ? recorder_.stop(log_)
+                                : recorder_.start(s_.time, session_.shadertoy(), stateful, log_), 6.0);
+    }
+    if (recorder_.active()) s_.time = recorder_.time();  // exact frame times, not the clock
+    else if (!s_.paused) s_.time += dt * s_.speed;
+    s_.recording_frame = recorder_.active() ? recorder_.frame() : -1;
 
     const bool window_shot = s_.want_window_shot || frames_ + 1 == o_.shot_frame;
     s_.want_window_shot = false;
@@ -363,6 +373,10 @@ int Viewer::run() {
       drawer.poll_gpu_time(t1);
       after_frame();
       watch_bounds(t1);
+      const int w = o_.shot_width > 0 ? o_.shot_width : drawer.render_width();
+      const int h = o_.shot_height > 0 ? o_.shot_height : drawer.render_height();
+      const std::string stopped = recorder_.frame(drawer, w, h, log_);
+      if (!stopped.empty()) s_.say(stopped, 6.0);
       if (frames_ == o_.shot_frame) s_.want_shot = true;
     }
     serve_requests();

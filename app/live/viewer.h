@@ -8,6 +8,7 @@
 #include <functional>
 #include <string>
 
+#include "live/recording.h"
 #include "scene/scene.h"
 #include "shader/assemble.h"
 
@@ -32,6 +33,7 @@ struct ViewerOptions {
   long max_frames = 0;               // 0: no limit
   int debounce_ms = 10;              // quiet time that ends a save (editors write in steps)
   bool hide_panel = false;
+  RecordOptions record;              // F9 and --record (live/recording.h)
 };
 
 // Runs until the window closes, Esc, --exit-after or --max-frames. Returns

@@ -382,6 +382,25 @@ TEST_F(Viewer, AccumulationConvergesToRenderSpp) {
   EXPECT_EQ(std::count(all.begin(), all.end(), std::string("converged 4")), 2) << read_file(log());
 }
 
+// Recording: --record A..B writes frames at exactly f / fps through the
+// screenshot path, so they equal render --frames A..B of an animated map,
+// whatever the window's own clock did.
+TEST_F(Viewer, RecordingEqualsRenderFrames) {
+  write_file(dir / "seed.glsl", map_glsl("MAT_BALL", "(0.7 + 0.3 * sin(uTime * 6.0))"));
+  start({"--record", "2..6", "--record-fps", "12", "--record-dir", (dir / "rec").string()});
+  ASSERT_FALSE(wait_for_line(log(), "^record done 5 frames ", 60).empty()) << read_file(log());
+  const RunResult r = run_marchstudio({"render", (dir / "seed.toml").string(), "--size", "160x90", "--frames", "2..6",
+                                       "--fps", "12", "-o", (dir / "want" / "frame_%04d.png").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"frame_0002.png", "frame_0003.png", "frame_0004.png", "frame_0005.png", "frame_0006.png"})
+    EXPECT_LE(max_abs_diff(read_image(dir / "rec" / f), read_image(dir / "want" / f)), 1.0 / 255.0) << f;
+  EXPECT_FALSE(fs::exists(dir / "rec" / "frame_0001.png"));
+  EXPECT_FALSE(fs::exists(dir / "rec" / "frame_0007.png"));
+  EXPECT_GT(max_abs_diff(read_image(dir / "want" / "frame_0002.png"), read_image(dir / "want" / "frame_0004.png")),
+            8.0 / 255.0)
+      << "the frames do not move: the test cannot tell times apart";
+}
+
 // Before any window: a missing scene is bad input (2), no display is a
 // system failure (3); neither needs Xvfb.
 TEST(ViewerStart, ExitCodesWithoutAWindow) {
