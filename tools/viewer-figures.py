@@ -17,8 +17,15 @@
 - images/viewer/debug_N_<name>.png: the seed scene's window in each debug
   view, 480x270, without the panel (the overlay and its legend show).
 
-Needs xvfb-run. Usage: /usr/bin/python3 tools/viewer-figures.py [--images] [path/to/marchstudio]
-(--images: only the pictures, not the timings)
+- reload-split: for each scene in scenes/, where the first build's time
+  goes, from the `reload ok 0` line: `assemble_ms` (ours: reading,
+  preprocessing, assembly), `gl_ms` (the driver's compile and link) and
+  `first_draw_ms` (the first frame, waited for: llvmpipe JIT-compiles the
+  shader there), against a warm frame (the median `frame_ms` of the last
+  second). Mesa's disk cache starts empty.
+
+Needs xvfb-run. Usage: /usr/bin/python3 tools/viewer-figures.py [--images|--split] [path/to/marchstudio]
+(--images: only the pictures; --split: only the reload split)
 """
 import datetime
 import os
@@ -35,8 +42,10 @@ import time
 from doc_markers import put  # tools/doc_markers.py: this directory is on sys.path
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'))
-ARGS = [a for a in sys.argv[1:] if a != '--images']
+ARGS = [a for a in sys.argv[1:] if a not in ('--images', '--split')]
 IMAGES_ONLY = '--images' in sys.argv[1:]
+SPLIT_ONLY = '--split' in sys.argv[1:]
+SPLIT = re.compile(r'compile_ms=([\d.]+) assemble_ms=([\d.]+) gl_ms=([\d.]+) first_draw_ms=([\d.]+)')
 BIN = os.path.abspath(ARGS[0] if ARGS else os.path.join(ROOT, 'build', 'marchstudio'))
 DEBUG_VIEWS = ['steps', 'normals', 'depth', 'ao', 'shadow', 'material']
 SIZES = ['160x90', '320x180', '640x360', '1280x720']
@@ -146,6 +155,52 @@ def debug_views(work):
                     os.path.join(ROOT, 'docs', 'images', 'viewer', 'debug_%d_%s.png' % (n, name)))
 
 
+TINY = 'void mainImage(out vec4 o, in vec2 f) { o = vec4(f.x / iResolution.x, 0.0, 0.0, 1.0); }\n'
+
+
+def reload_split(date, cpu, renderer):
+    rows = []
+    inputs = [os.path.join(ROOT, 'scenes', f) for f in sorted(os.listdir(os.path.join(ROOT, 'scenes'))) if f.endswith('.toml')]
+    for path in [None] + inputs:  # None: a one-line shader, the first frame's fixed cost (the UI's, the post pass)
+        with tempfile.TemporaryDirectory() as work:
+            log = os.path.join(work, 'log.txt')
+            if path is None:
+                path = os.path.join(work, 'one_line.glsl')
+                open(path, 'w').write(TINY)
+            toml = os.path.basename(path).rsplit('.', 1)[0] + '.'
+            subprocess.run(['xvfb-run', '-a', '-s', '-screen 0 1920x1080x24', BIN, 'view',
+                            path, '--size', '640x360', '--paused', '--no-panel',
+                            '--log', log, '--exit-after', '3.5'],
+                           env=dict(ENV, MESA_SHADER_CACHE_DIR=os.path.join(work, 'mesa-cache')), check=True,
+                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=120)
+            text = open(log).read()
+        m = SPLIT.search(re.search(r'^reload ok 0 .*$', text, re.M).group(0))
+        frame = [float(x) for x in re.findall(r'frame_ms=([\d.]+)', text)]
+        rows.append('| %s | %s | %s | %s | %s | %s |' % (toml[:-1], m.group(2), m.group(3), m.group(4), m.group(1),
+                                                       '%.0f' % frame[-1] if frame else '-'))
+        print('split %s' % toml, file=sys.stderr)
+    return ['Measured by `tools/viewer-figures.py --split` on %s (%d cores), Xvfb, `GL_RENDERER` = `%s`, %s: the'
+            % (cpu, os.cpu_count(), renderer, date),
+            'first build of each scene at 640x360, paused, Mesa\'s disk shader cache empty. *ours*: reading, preprocessing',
+            'and assembly; *GL*: glCompileShader and glLinkProgram; *first draw*: the first frame waited for with',
+            'glFinish, where llvmpipe JIT-compiles the shader; *warm frame*: the median frame time of the last second.',
+            '`one_line` is a one-line Shadertoy shader: its first draw is the fixed cost of any first frame (the',
+            'panel\'s font texture and shaders, the post pass), to subtract from the scenes\' to get their own JIT.',
+            '',
+            '| scene | ours (ms) | GL compile + link (ms) | first draw, JIT (ms) | load to program (ms) | warm frame (ms) |',
+            '|---|---|---|---|---|---|'] + rows
+
+
+def machine():
+    renderer = subprocess.run([BIN, 'bench', os.path.join(ROOT, 'scenes', 'seed.toml'), '--size', '16x16', '--frames', '1',
+                               '--json'], env=ENV, capture_output=True, text=True, check=True).stdout
+    renderer = re.search(r'"gl_renderer":\s*"([^"]*)"', renderer).group(1)
+    with open('/proc/cpuinfo') as f:
+        cpu = next((l.split(':', 1)[1].strip() for l in f if l.startswith('model name')), platform.machine())
+    date = datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d')
+    return date, cpu, renderer
+
+
 def images():
     with tempfile.TemporaryDirectory() as work:
         panel(work)
@@ -160,12 +215,10 @@ def main():
     if IMAGES_ONLY:
         return images()
     doc = os.path.join(ROOT, 'docs', 'viewer.md')
-    renderer = subprocess.run([BIN, 'bench', os.path.join(ROOT, 'scenes', 'seed.toml'), '--size', '16x16', '--frames', '1',
-                               '--json'], env=ENV, capture_output=True, text=True, check=True).stdout
-    renderer = re.search(r'"gl_renderer":\s*"([^"]*)"', renderer).group(1)
-    with open('/proc/cpuinfo') as f:
-        cpu = next((l.split(':', 1)[1].strip() for l in f if l.startswith('model name')), platform.machine())
-    date = datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d')
+    date, cpu, renderer = machine()
+    put(doc, 'reload-split', reload_split(date, cpu, renderer))
+    if SPLIT_ONLY:
+        return
     table = ['Measured by `tools/viewer-figures.py` on %s (%d cores), Xvfb, `GL_RENDERER` = `%s`, %s: the seed'
              % (cpu, os.cpu_count(), renderer, date),
              'scene, spp 1, %d saves of each kind per window size, one second apart. *save to log line*: wall time from'

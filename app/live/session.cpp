@@ -80,8 +80,11 @@ ReloadResult Session::reload(bool from_disk) {
     // they are (no tone map, no sRGB encode; exposure 1, display_exposure()).
     const ShaderSource post_src = assemble_post(scene_.render.tonemap, !shadertoy() && view == 0, opts_.assemble, shadertoy());
     r.cached = cache_.contains(fullscreen_vertex_source(), main_src);
+    const auto t_gl = std::chrono::steady_clock::now();
+    r.assemble_ms = std::chrono::duration<double, std::milli>(t_gl - t0).count();
     auto graph = std::make_shared<PassGraph>(passes, &cache_);
     auto post = cache_.get(fullscreen_vertex_source(), post_src);
+    r.gl_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_gl).count();
     for (const std::string& u : graph->unbound_sampled()) warnings.push_back(u + " is sampled but nothing is bound to it");
     if (graph_) graph->adopt_buffers(*graph_);  // buffers evolve on across a reload of a pass
     graph_ = std::move(graph);

@@ -33,6 +33,8 @@ struct ReloadResult {
   std::string log;             // when !ok: the compiler's whole log, mapped to file:line (what "+N more" stands for)
   bool camera_changed = false; // the file's [camera] differs from the previous read
   double compile_ms = 0.0;     // load + assemble + compile + link
+  double assemble_ms = 0.0;    // of which ours: reading the files, preprocessing and assembly
+  double gl_ms = 0.0;          // of which the driver's: compile and link (llvmpipe JITs later, at the first draw)
   bool cached = false;         // the main program came from the cache: nothing compiled
 };
 

@@ -70,6 +70,7 @@ struct PendingReload {
   double t_event = 0.0;
   long frame_at_event = 0, iteration_at_event = 0;
   ReloadResult result;
+  double first_draw_ms = 0.0;  // the first frame with the new program, waited for: llvmpipe JITs it here
 };
 
 class Viewer {
@@ -194,7 +195,9 @@ void Viewer::after_frame() {
     const std::string latency = " frames=" + std::to_string(frames_ - pending_.frame_at_event) +
                                 " iterations=" + std::to_string(iterations_ - pending_.iteration_at_event + 1) +
                                 " ms=" + fmt("%.1f", (seconds_now() - pending_.t_event) * 1e3) +
-                                " compile_ms=" + fmt("%.1f", r.compile_ms);
+                                " compile_ms=" + fmt("%.1f", r.compile_ms) + " assemble_ms=" +
+                                fmt("%.1f", r.assemble_ms) + " gl_ms=" + fmt("%.1f", r.gl_ms) +
+                                " first_draw_ms=" + fmt("%.1f", pending_.first_draw_ms);
     log_.line("reload " + std::string(r.ok ? "ok " : "failed ") + std::to_string(pending_.number) + latency +
               (r.ok ? "" : " -- " + r.error));
     if (!o_.capture_dir.empty()) drawer_->capture(o_.capture_dir, pending_.number, log_);
@@ -356,10 +359,15 @@ int Viewer::run() {
 
     const bool window_shot = s_.want_window_shot || frames_ + 1 == o_.shot_frame;
     s_.want_window_shot = false;
+    const double t_draw = seconds_now();
     const bool drawn = drawer.draw(frames_, dt, [&] {
       if (s_.show_panel) draw_panel(s_, session_, ctx->info());
       draw_overlay(s_, session_);
     });
+    if (drawn && pending_.active) {  // where a reload's time goes: the first draw, JIT included
+      glFinish();
+      pending_.first_draw_ms = (seconds_now() - t_draw) * 1e3;
+    }
     if (drawn && window_shot) drawer.window_shot(next_free_path(o_.shot_dir, o_.input.stem().string() + "_window"), log_);
     keyboard_frame_done(s_.keys);  // "pressed this frame" lasted its frame
     const double t_cpu = seconds_now();

@@ -79,6 +79,11 @@ class Viewer : public ::testing::Test {
     if (line.empty()) return line;
     EXPECT_GE(field(line, "frames"), 1);
     EXPECT_LE(field(line, "frames"), kMaxLatencyFrames) << line;
+    // The split of its time (docs/viewer.md): ours and the driver's within the total, the first draw timed.
+    EXPECT_GE(field(line, "assemble_ms"), 0.0) << line;
+    EXPECT_GE(field(line, "gl_ms"), 0.0) << line;
+    EXPECT_LE(field(line, "assemble_ms") + field(line, "gl_ms"), field(line, "compile_ms") + 0.2) << line;
+    EXPECT_GT(field(line, "first_draw_ms"), 0.0) << line;
     EXPECT_FALSE(wait_for_line(log(), "^capture " + std::to_string(k) + " ", 10).empty());
     // For docs/viewer.md: save -> log line, as a person would see it.
     std::cout << "[ latency ] reload " << k << ": " << wall_ms << " ms from the rename to the log line; " << line
