@@ -31,7 +31,7 @@ struct PassGraph::Gpu {
   std::map<const Volume*, GLuint> volumes;
   std::map<const AudioClip*, GLuint> audio;  // 512x2 R8, rewritten each frame
   VideoTextures videos;  // RGBA8, the frame at iTime
-  std::map<int, GLuint> samplers;  // by filter * 2 + wrap
+  std::map<int, GLuint> samplers;  // by filter * 3 + wrap
   Buffer buffers[4];
   bool used[4] = {false, false, false, false};
   int width = 0, height = 0;
@@ -118,16 +118,16 @@ PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 256, 3, GL_RED, GL_UNSIGNED_BYTE, none.data());
   for (int f = 0; f < 3; ++f)
-    for (int w = 0; w < 2; ++w) {
+    for (int w = 0; w < 3; ++w) {
       GLuint s = 0;
       glGenSamplers(1, &s);
       glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, min_filter(static_cast<TexFilter>(f)));
       glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, f == 0 ? GL_NEAREST : GL_LINEAR);
-      const GLint wrap = w == 0 ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+      const GLint wrap = w == 0 ? GL_CLAMP_TO_EDGE : w == 1 ? GL_REPEAT : GL_MIRRORED_REPEAT;
       glSamplerParameteri(s, GL_TEXTURE_WRAP_S, wrap);
       glSamplerParameteri(s, GL_TEXTURE_WRAP_T, wrap);
       glSamplerParameteri(s, GL_TEXTURE_WRAP_R, wrap);  // volumes (and cubemaps' third coordinate)
-      g.samplers[f * 2 + w] = s;
+      g.samplers[f * 3 + w] = s;
     }
   for (const PassSource& p : passes_)
     for (const GraphInput& in : p.inputs)
@@ -262,7 +262,7 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
     int filter = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.filter);
     if (in.audio && in.sampler.filter == TexFilter::mipmap) filter = 1;  // no mip chain: Shadertoy offers none for audio
     const int wrap = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.wrap);
-    glBindSampler(c, in.kind == InputKind::none ? 0 : g.samplers.at(filter * 2 + wrap));
+    glBindSampler(c, in.kind == InputKind::none ? 0 : g.samplers.at(filter * 3 + wrap));
     res[c][0] = rw;
     res[c][1] = rh;
     res[c][2] = in.kind == InputKind::none ? 0.0f : rd;

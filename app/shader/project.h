@@ -17,7 +17,7 @@ namespace ms {
 // Sampler state of one input, Shadertoy's names and defaults (a texture's:
 // mipmap, repeat, vflip; a buffer's: linear, clamp).
 enum class TexFilter { nearest, linear, mipmap };
-enum class TexWrap { clamp, repeat };
+enum class TexWrap { clamp, repeat, mirror };  // mirror: the VS Code extension's "Mirror" (shader/vscode.h)
 struct Sampler {
   TexFilter filter = TexFilter::linear;
   TexWrap wrap = TexWrap::clamp;

@@ -10,6 +10,7 @@
 #include "shader/glsl_scan.h"
 #include "shader/glslviewer.h"
 #include "shader/project_json.h"
+#include "shader/vscode.h"
 
 namespace ms {
 
@@ -132,6 +133,8 @@ ShaderProject load_shadertoy_file(const fs::path& file, const AssembleOptions& o
   ShaderProject p;
   if (abs.extension() == ".json" || looks_like_json(text)) {
     p = load_shadertoy_json(text, display_path(abs));
+  } else if (looks_like_vscode(text)) {
+    p = load_vscode(text, abs, roots);
   } else if (looks_like_glslviewer(text)) {
     p = load_glslviewer(text, abs);
   } else {
@@ -167,7 +170,8 @@ ShaderSource assemble_shadertoy_pass(const ShaderProject& p, size_t index, const
     code = inline_code;
     fs::path dir = absolute_normal(p.origin).parent_path();
     if (!file.empty()) {
-      code = read_source(file, roots, origin, what);
+      // A loader that rewrote the file's text (shader/vscode.h) gives both.
+      if (code.empty()) code = read_source(file, roots, origin, what);
       where = display_path(file);
       dir = absolute_normal(file).parent_path();
       read.push_back(absolute_normal(file));
