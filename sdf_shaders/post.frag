@@ -1,5 +1,7 @@
 // post.frag: the post pass. Average of the accumulated samples, then
-// tonemap.glsl's outputColor(). The root defines TONEMAP and ENCODE_SRGB.
+// tonemap.glsl's outputColor(). The root defines TONEMAP and ENCODE_SRGB,
+// and BLOOM 1 when the bloom passes ran (render/bloom.h): their blurred
+// target, upsampled bilinearly, is added to the mean before exposure.
 #pragma once
 #include "tonemap.glsl"
 
@@ -7,6 +9,10 @@ uniform sampler2D uAccum;      // sum of samples, RGBA32F
 uniform float uInvSamples;     // 1 / samples accumulated
 uniform float uExposure;       // linear multiplier
 layout(location = 0) out vec4 outColor;
+#if BLOOM
+uniform sampler2D uBloom;      // blurred bright parts, reduced resolution, linear filtering
+uniform float uBloomIntensity;
+#endif
 
 void main() {
   vec4 acc = texelFetch(uAccum, ivec2(gl_FragCoord.xy), 0);
@@ -21,5 +27,10 @@ void main() {
 #endif
     return;
   }
+#if BLOOM
+  vec2 uv = gl_FragCoord.xy / vec2(textureSize(uAccum, 0));
+  outColor = vec4(outputColor(acc.rgb * uInvSamples + uBloomIntensity * texture(uBloom, uv).rgb, uExposure), 1.0);
+#else
   outColor = vec4(outputColor(acc.rgb * uInvSamples, uExposure), 1.0);
+#endif
 }

@@ -42,7 +42,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
                   "Quality preset: fast, balanced, reference or textbook (default: the scene's; its explicit "
                   "[quality] keys still apply)")
       ->check(one_of(quality_preset_names()));
-  cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter")
+  cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter, bloom")
       ->delimiter(',')
       ->check(one_of(kEffectNames));
   cmd->add_option("--allow-include", a.allow_include,

@@ -10,7 +10,7 @@
 namespace ms {
 
 const std::vector<std::string> kBackendNames = {"auto", "egl", "osmesa"};
-const std::vector<std::string> kEffectNames = {"shadows", "reflections", "ao", "checker-filter"};
+const std::vector<std::string> kEffectNames = {"shadows", "reflections", "ao", "checker-filter", "bloom"};
 
 namespace {
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <regex>
 
+#include "cli/bloom_setup.h"
 #include "cli/flag_checks.h"
 #include "render/project_passes.h"
 #include "core/error.h"
@@ -103,6 +104,7 @@ LoadedInput load_input_scene(const fs::path& input, const std::vector<std::strin
     in.scene.quality = with_preset(in.scene.quality, preset);  // the file's explicit keys still win
   }
   apply_disable(in.scene.quality, disable);
+  if (std::find(disable.begin(), disable.end(), "bloom") != disable.end()) in.scene.bloom.enabled = false;
   return in;
 }
 
@@ -229,16 +231,17 @@ LoadedInput load_input(const fs::path& input, const std::vector<std::string>& di
 }
 
 bool fuse_post(const LoadedInput& in, int spp, bool aovs, bool encode_srgb, AssembleOptions& opts) {
-  if (in.shadertoy || spp != 1 || aovs) return false;
+  if (in.shadertoy || spp != 1 || aovs || bloom_on(in, encode_srgb)) return false;  // bloom reads the accumulation
   for (auto& d : fused_post_defines(in.scene.render.tonemap, encode_srgb)) opts.defines.push_back(std::move(d));
   return true;
 }
 
 ShaderSource assemble_still(LoadedInput& in, AssembleOptions& opts, int spp, bool aovs, bool display, bool& fused) {
+  in.scene.bloom.enabled = bloom_on(in, display);  // from here on: whether this output blooms
   fused = fuse_post(in, spp, aovs, display, opts);
   assemble_input(in, opts);
   // Shadertoy output is display-referred already: never encoded again.
-  return assemble_post(in.scene.render.tonemap, display && !in.shadertoy, opts, in.shadertoy);
+  return assemble_post(in.scene.render.tonemap, display && !in.shadertoy, opts, in.shadertoy, bloom_on(in, display));
 }
 
 }  // namespace ms

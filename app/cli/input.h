@@ -76,7 +76,7 @@ std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector
 // (AssembleOptions::allow_include). Throws bad_input naming the flag.
 std::vector<std::filesystem::path> parse_allow_include(const std::vector<std::string>& flags);
 
-// `disable`: effects switched off (shadows, reflections, ao, checker-filter).
+// `disable`: effects switched off (shadows, reflections, ao, checker-filter, bloom).
 // `preset`: a quality preset replacing the scene file's (scene/quality.h);
 // empty keeps the file's. The file's explicit [quality] keys still apply.
 // `overrides`: --set (cli/override_flags.h), a .toml scene only; --uniform

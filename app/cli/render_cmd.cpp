@@ -50,7 +50,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                   "Quality preset: fast, balanced, reference or textbook (default: the scene's; its explicit "
                   "[quality] keys still apply)")
       ->check(one_of(quality_preset_names()));
-  cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter")
+  cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter, bloom")
       ->delimiter(',')
       ->check(one_of(kEffectNames));
   cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "bench/bench.h"
+#include "cli/bloom_setup.h"
 #include "cli/input.h"
 #include "cli/progress.h"
 #include "cli/render_cmd.h"
@@ -169,6 +170,7 @@ int run_sequence(const RenderArgs& a) {
   fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
   fp.aovs = aovs;
   fp.tile_size = a.tile_size;
+  in.scene.bloom.enabled = bloom_on(in, display);  // cli/bloom_setup.h
   fp.fused_post = fuse_post(in, fp.spp, aovs, display, opts);
   assemble_input(in, opts);
   report_input_warnings(in.warnings, a.input, a.strict);
@@ -184,7 +186,8 @@ int run_sequence(const RenderArgs& a) {
   check_frame_memory(frame_memory(fp.width, fp.height, (aovs ? 6 : 2) + 2 * (static_cast<int>(in.passes.size()) - 1),
                                   aovs, 1 + static_cast<int>(kQueuedFrames) + writers),
                      fp.width, fp.height);
-  const ShaderSource post_src = assemble_post(scene.render.tonemap, display && !in.shadertoy, opts, in.shadertoy);
+  const ShaderSource post_src = assemble_post(scene.render.tonemap, display && !in.shadertoy, opts, in.shadertoy,
+                                               scene.bloom.enabled);
   // The frame's time exactly as the shader gets it (a float); the pose uses
   // the same value, so a sequence frame equals `render --time` of it.
   const auto frame_time = [&](int f) { return static_cast<float>(static_cast<double>(f) / plan.fps); };
@@ -241,6 +244,9 @@ int run_sequence(const RenderArgs& a) {
     PassGraph graph(in.passes);
     report_input_warnings(unbound_warnings(graph), a.input, a.strict);
     const Program post_prog(fullscreen_vertex_source(), post_src);
+    ProgramCache bloom_programs;
+    const std::unique_ptr<BloomStage> bloom = make_bloom_stage(in, display, opts, bloom_programs);
+    fp.bloom = bloom.get();
     FrameRenderer renderer(*ctx);
     const auto inputs_at = [&](int f, const Scene& posed) {
       FrameInputs fi;

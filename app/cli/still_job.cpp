@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "bench/bench.h"
+#include "cli/bloom_setup.h"
 #include "cli/fingerprint.h"
 #include "cli/input.h"
 #include "cli/tiled_render.h"
@@ -157,6 +158,8 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
     }));
     if (!w.empty()) std::fprintf(stderr, "marchstudio: %s\n", w.c_str());
   }
+  const std::unique_ptr<BloomStage> bloom = make_bloom_stage(in, p.display, p.opts, session.cache);
+  fp.bloom = bloom.get();
   FrameRenderer renderer(ctx);
   StillFrame still;
   still.in.scene = &posed;

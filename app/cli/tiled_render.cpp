@@ -48,7 +48,13 @@ class RemoveOnSignal {
 
 StillTiling plan_render_tiling(const LoadedInput& in, const FrameParams& fp, int gpu_targets, int forced, int max_w,
                                int max_h) {
-  if (!in.stateful()) return plan_still_tiling(fp.width, fp.height, max_w, max_h, gpu_targets, fp.aovs, forced);
+  if (!in.stateful()) {
+    StillTiling t = plan_still_tiling(fp.width, fp.height, max_w, max_h, gpu_targets, fp.aovs, forced);
+    if (t.tiled() && in.scene.bloom.enabled)  // docs/post.md: a tile's blur would miss its neighbours' light
+      fail_input("bloom needs the whole frame, so a still drawn in tiles cannot have it", in.path.string(), 0,
+                 forced > 0 ? "--tile-still" : "--size", "--disable bloom, or render it smaller");
+    return t;
+  }
   const std::string size = std::to_string(fp.width) + "x" + std::to_string(fp.height);
   const std::string why = "a shader with buffers needs them whole-frame, so it cannot be drawn in tiles";
   if (forced > 0) fail_input(why, {}, 0, "--tile-still");

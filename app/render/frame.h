@@ -51,6 +51,10 @@ struct FrameParams {
   // When set, every draw is waited for (glFinish) and the deadline checked
   // after it: draw() throws the --timeout error (Exit::system) once it passed.
   const Deadline* deadline = nullptr;
+  // The bloom stage (render/bloom.h), run between the accumulation and the
+  // post program, which must then be assemble_post(..., bloom = true); not
+  // with fused_post. nullptr: no bloom.
+  class BloomStage* bloom = nullptr;
 };
 
 // Sets the main program's per-frame uniforms (it is bound when called).

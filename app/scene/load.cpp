@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "scene/animation.h"
 #include "scene/load_geometry.h"
+#include "scene/load_post.h"
 #include "scene/overrides.h"
 #include "scene/quality.h"
 #include "scene/quality_fields.h"
@@ -91,7 +92,7 @@ struct Section {
 
 struct Schema {
   std::vector<std::string_view> top{"scene",  "camera", "render", "sky",       "quality",   "lights",
-                                    "materials", "planes", "bounds", "animation", "shadertoy", "passes"};
+                                    "materials", "planes", "bounds", "animation", "shadertoy", "passes", "post"};
   std::vector<Section> sections{
       {"scene", false, {"name", "map", "shadertoy"}},
       {"camera", false, keys_of(kCameraFields)},
@@ -371,6 +372,7 @@ Scene read_scene(const Reader& r, const toml::table& root, const fs::path& displ
   };
   read_planes(r, check, root, scene);
   read_bounds(r, check, root, scene.bounds);
+  read_post(r, root, scene.bloom);  // scene/load_post.h
   // After lights and materials: a track's target must name one that exists.
   const auto tracks = r.tables(root, {}, "animation");
   for (std::size_t i = 0; i < tracks.size(); ++i) {

@@ -103,6 +103,18 @@ struct RenderSettings {
   Tonemap tonemap = Tonemap::aces;
 };
 
+// [post.bloom] (docs/post.md): values above `threshold` in the linear image,
+// blurred at `scale` of its resolution, added back before exposure.
+struct Bloom {
+  bool enabled = false;    // the table is present (and --disable bloom not given)
+  float threshold = 1.0f;  // linear radiance, luminance above which a pixel blooms
+  float intensity = 0.5f;  // multiplier of the blurred image added back
+  float radius = 8.0f;     // Gaussian sigma of the whole blur, full-resolution pixels
+  float scale = 0.3f;      // resolution of the blur targets, [0.05, 1]
+  int passes = 2;          // H+V blur passes, the sigma split between them
+  bool exr = false;        // an .exr output has bloom too (else the pre-bloom image)
+};
+
 struct Sky {
   glm::vec3 horizon{0.70f, 0.80f, 0.95f};
   glm::vec3 zenith{0.25f, 0.45f, 0.85f};
@@ -139,6 +151,7 @@ struct Scene {
   Quality quality;
   RenderSettings render;
   Sky sky;
+  Bloom bloom;                     // [post.bloom]
   std::vector<AnimationTrack> animation;  // applied by animated(scene, time)
 };
 

@@ -207,13 +207,21 @@ static int tonemap_id(Tonemap tonemap) {
   return tonemap == Tonemap::none ? 0 : tonemap == Tonemap::reinhard ? 1 : 2;
 }
 
-ShaderSource assemble_post(Tonemap tonemap, bool encode_srgb, const AssembleOptions& opts, bool flag_in_alpha) {
+ShaderSource assemble_post(Tonemap tonemap, bool encode_srgb, const AssembleOptions& opts, bool flag_in_alpha,
+                           bool bloom) {
   std::string root = "#version 450 core\n";
   define(root, "TONEMAP", tonemap_id(tonemap));
   define(root, "ENCODE_SRGB", encode_srgb ? 1 : 0);
   define(root, "FLAG_IN_ALPHA", flag_in_alpha ? 1 : 0);
+  define(root, "BLOOM", bloom ? 1 : 0);
   root += "#include \"post.frag\"\n";
   return preprocess(root, "post pass (generated)", opts.shader_dir, library_options(opts));
+}
+
+ShaderSource assemble_bloom(bool blur, const AssembleOptions& opts) {
+  const std::string file = blur ? "bloom_blur.frag" : "bloom_extract.frag";
+  return preprocess("#version 450 core\n#include \"" + file + "\"\n", file + " (generated)", opts.shader_dir,
+                    library_options(opts));
 }
 
 std::vector<std::pair<std::string, std::string>> fused_post_defines(Tonemap tonemap, bool encode_srgb) {

@@ -57,7 +57,14 @@ FeatureSet scene_features(const Scene& scene, const AssembleOptions& opts);
 // `flag_in_alpha`: a sample flagged non-finite keeps its colour and marks
 // the pixel with a negative alpha (a Shadertoy Image pass, whose channels
 // were converted one by one); otherwise the pixel is NaN (a scene's).
-ShaderSource assemble_post(Tonemap tonemap, bool encode_srgb, const AssembleOptions& opts, bool flag_in_alpha = false);
+// `bloom`: BLOOM 1, the pass adds the bloom stage's target (render/bloom.h)
+// before exposure; FrameParams::bloom must then be set.
+ShaderSource assemble_post(Tonemap tonemap, bool encode_srgb, const AssembleOptions& opts, bool flag_in_alpha = false,
+                           bool bloom = false);
+
+// The bloom passes' fragment shaders (docs/post.md): bloom_extract.frag, or
+// with `blur` bloom_blur.frag. No defines: their settings are uniforms.
+ShaderSource assemble_bloom(bool blur, const AssembleOptions& opts);
 
 // The extra defines (AssembleOptions::defines) of a scene shader that writes
 // the output image itself, as assemble_post()'s pass would: FUSED_POST 1,

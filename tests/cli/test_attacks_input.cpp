@@ -144,7 +144,7 @@ TEST(SilentlyAccepted, BadFlagValuesAreRefused) {
       {{"--frames", "", "-o", "f_%04d.png"}, "--frames: must not be empty"},
       {{"--spp", "0"}, "--spp"},
       {{"--time", "1e300"}, "--time: 1e300 is too large for a 32-bit float"},
-      {{"--disable", "shadow"}, "'shadow' is not one of shadows, reflections, ao, checker-filter (did you mean "
+      {{"--disable", "shadow"}, "'shadow' is not one of shadows, reflections, ao, checker-filter, bloom (did you mean "
                                 "'shadows'?)"},
       {{"--aov", "dpeth", "-o", "x.exr"}, "(did you mean 'depth'?)"},
       {{"--sppp", "3"}, "unknown flag '--sppp' for 'render' (did you mean '--spp'?)"},
