@@ -13,6 +13,7 @@ PACKAGES=(
   libpng-dev libopenexr-dev         # io/direct_codec: PNG and EXR without loading OpenImageIO
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libsndfile1-dev libkissfft-dev    # Shadertoy music inputs: decode (dlopen'd) and the analyser's FFT
+  libasound2-dev                    # the viewer plays music inputs through ALSA (dlopen'd; its header only)
   ffmpeg                            # render --video, and the tests that make video files
   libgtest-dev libgmock-dev
   glslang-tools                     # glslangValidator: shader tests and docs/specialization.md (skipped without)

@@ -56,6 +56,9 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
       ->check(not_empty());
   cmd->add_option("--record-video", a.record_video, "Encode each recording into this file with ffmpeg (e.g. out.mp4)")
       ->check(not_empty());
+  cmd->add_option("--audio-device", a.audio_device,
+                  "ALSA device that plays a Shadertoy music input in step with time (default: default; none: silent)")
+      ->check(not_empty());
   cmd->add_flag("--paused", a.paused, "Start with time paused");
   cmd->add_option("--log", a.log, "Write event lines (reload ok/failed, captures, frame times) here, not stderr");
   cmd->add_option("--capture-dir", a.capture_dir,
@@ -123,6 +126,7 @@ int run_view(const ViewArgs& a) {
   }
   o.debug_view = a.debug_view;
   o.accumulate = a.accumulate;
+  o.audio_device = a.audio_device;
   o.record.dir = a.record_dir.empty() ? fs::path(fs::path(a.input).stem().string() + "_frames") : fs::path(a.record_dir);
   o.record.fps = a.record_fps;
   if (!a.record_frames.empty()) {

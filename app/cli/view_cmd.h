@@ -20,7 +20,8 @@ struct ViewArgs {
   int debug_view = 0;
   int accumulate = -1;
   std::string record_dir, record_frames, record_video;  // --record-dir, --record A..B, --record-video
-  double record_fps = 0.0;  // --accumulate: -1 the scene's spp, 0 no limit (unlimited), N
+  double record_fps = 0.0;
+  std::string audio_device = "default";  // --accumulate: -1 the scene's spp, 0 no limit (unlimited), N
   std::string preset;
   double time = -1.0;        // < 0: the scene's
   bool paused = false;

@@ -88,6 +88,10 @@ ReloadResult Session::reload(bool from_disk) {
     for (const std::string& u : graph->unbound_sampled()) warnings.push_back(u + " is sampled but nothing is bound to it");
     if (graph_) graph->adopt_buffers(*graph_);  // buffers evolve on across a reload of a pass
     graph_ = std::move(graph);
+    audio_.reset();  // the first music input plays in the window (live/audio_out.h)
+    for (const PassSource& p : passes)
+      for (const GraphInput& in : p.inputs)
+        if (in.audio && !audio_) audio_ = in.audio;
     post_ = std::move(post);
     warnings_ = std::move(warnings);
     std::vector<SceneParam> params = parse_scene_params(main_src.text);

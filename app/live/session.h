@@ -67,6 +67,8 @@ class Session {
   // Warnings of the last good build (missing media stood in for, unbound channels).
   const std::vector<std::string>& warnings() const { return warnings_; }
   int generation() const { return generation_; }  // +1 per successful reload
+  // The clip of the program's first music input, or null (live/audio_out.h plays it).
+  const std::shared_ptr<const AudioClip>& audio() const { return audio_; }
   const std::string& error() const { return error_; }
   // The whole mapped compiler log of the last failed build (empty when it
   // failed before compiling, or did not fail): the panel shows it.
@@ -105,6 +107,7 @@ class Session {
   bool disk_ok_ = false;
   std::string preset_;  // empty: the file's
   std::shared_ptr<PassGraph> graph_;
+  std::shared_ptr<const AudioClip> audio_;
   std::shared_ptr<const Program> post_;
   std::vector<std::string> warnings_;
   ProgramCache cache_;     // every program built, by source hash: a toggle seen before is not recompiled

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "gl/context.h"
 #include "io/image_io.h"
+#include "live/audio_out.h"
 #include "live/capture.h"
 #include "live/input.h"
 #include "live/keyboard.h"
@@ -101,6 +102,8 @@ class Viewer {
   int reloads_ = 0;
   PendingReload pending_;
   Recorder recorder_;
+  AudioOut audio_;
+  const AudioClip* audio_clip_ = nullptr;  // what audio_ was opened for
   // The bounds check (render/bounds_check.h): after each reload, when a
   // slider moves, and once a second for animation; reported when it changes.
   ProgramCache bounds_cache_{2};
@@ -142,6 +145,15 @@ void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long it
   watcher_.watch(session_.watched_files());
   watcher_.set_match_any(!r.ok);
   if (!r.ok) report_failure(r);
+  if (r.ok && session_.audio().get() != audio_clip_) {  // a music input came, went or changed
+    audio_clip_ = session_.audio().get();
+    if (!audio_clip_) {
+      audio_.close();
+    } else {
+      const std::string why = audio_.open(o_.audio_device, session_.audio());
+      log_.line(why.empty() ? "audio playing " + o_.audio_device : "audio silent -- " + why);
+    }
+  }
 }
 
 // The one-line error on stderr, and the compiler's whole log after it, on
@@ -355,6 +367,7 @@ int Viewer::run() {
     }
     if (recorder_.active()) s_.time = recorder_.time();  // exact frame times, not the clock
     else if (!s_.paused) s_.time += dt * s_.speed;
+    audio_.update(s_.time, s_.paused || recorder_.active() || s_.speed != 1.0);  // sound at 1x only
     s_.recording_frame = recorder_.active() ? recorder_.frame() : -1;
 
     const bool window_shot = s_.want_window_shot || frames_ + 1 == o_.shot_frame;
@@ -398,6 +411,8 @@ int Viewer::run() {
     if (!drawn) glfwWaitEventsTimeout(0.05);  // minimised: do not spin
     else if (!session_.main_program()) glfwWaitEventsTimeout(1.0 / 60.0);  // nothing to render yet: UI only
   }
+  if (audio_.playing())
+    log_.line("audio written " + std::to_string(audio_.written()) + " restarts " + std::to_string(audio_.restarts()));
   log_.line("exit frames=" + std::to_string(frames_));
   drawer_ = nullptr;
   return 0;

@@ -34,6 +34,7 @@ struct ViewerOptions {
   int debounce_ms = 10;              // quiet time that ends a save (editors write in steps)
   bool hide_panel = false;
   RecordOptions record;              // F9 and --record (live/recording.h)
+  std::string audio_device = "default";  // ALSA PCM for a music input; "none": silent (live/audio_out.h)
 };
 
 // Runs until the window closes, Esc, --exit-after or --max-frames. Returns

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <string>
 
 #include "io/image_io.h"
@@ -95,6 +96,43 @@ TEST(ViewerMedia, MusicIsRendersAnalyserAtTheViewersTime) {
   float peak = 0;
   for (int x = 0; x < want.width; ++x) peak = std::max(peak, want.at(x, 6, 0));
   EXPECT_GT(peak, 0.5f) << "no spectrum peak: the test cannot see the texture";
+}
+
+// Playing: on ALSA's "null" device (no sound card needed) the viewer feeds
+// the clip as time runs; with none, or a device that is not there, it says
+// why it is silent and goes on rendering.
+TEST(ViewerMedia, MusicPlaysWhereADeviceOpensAndIsSilentWhereNot) {
+  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH";
+  if (find_on_path("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not on PATH";
+  TempDir dir;
+  const std::string cmd = "cd '" + dir.path().string() +
+                          "' && ffmpeg -hide_banner -loglevel error -nostdin -y -f lavfi -i "
+                          "'sine=frequency=440:duration=1:sample_rate=22050' -ac 1 tone.wav";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  write_file(dir / "m.json", kMusicJson);
+  auto run_with = [&](const std::string& device) {
+    const fs::path log = dir / ("log_" + device + ".txt");
+    BackgroundProcess p({"xvfb-run", "-a", "-n", std::to_string(500 + getpid() % 20000), "-s", "-screen 0 640x480x24",
+                         MARCH_BIN, "view", (dir / "m.json").string(), "--size", "64x8", "--no-panel",
+                         "--audio-device", device, "--log", log.string(), "--exit-after", "1.5"},
+                        dir / "out.txt", dir / "err.txt");
+    EXPECT_EQ(p.wait_exit(60), 0) << read_file(dir / "err.txt");
+    return read_file(log);
+  };
+  const std::string played = run_with("null");
+  EXPECT_NE(played.find("audio playing null"), std::string::npos) << played;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(played, m, std::regex("audio written ([0-9]+) restarts ([0-9]+)"))) << played;
+  // About the 1.5 s that ran (less the start-up), 0.15 s ahead at most, in one go.
+  EXPECT_GT(std::stol(m[1]), 22050 / 2) << "under half a second of sound for 1.5 s of time";
+  EXPECT_LT(std::stol(m[1]), 22050 * 17 / 10) << "more sound than time";
+  EXPECT_LE(std::stoi(m[2]), 2) << "playback kept restarting: it does not follow time";
+  for (const std::string device : {"none", "nosuchdevice"}) {
+    const std::string silent = run_with(device);
+    EXPECT_NE(silent.find("audio silent -- "), std::string::npos) << silent;
+    EXPECT_EQ(silent.find("audio written"), std::string::npos) << silent;
+    EXPECT_NE(silent.find("exit frames="), std::string::npos) << silent;
+  }
 }
 
 }  // namespace
