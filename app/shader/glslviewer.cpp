@@ -57,7 +57,8 @@ std::string unsupported_uniform(const std::string& name) {
       name == "u_inverseProjectionMatrix")
     return "glslViewer's camera uniforms come with a 3D model, which marchstudio does not load";
   if (starts_with(name, "u_light")) return "glslViewer's lights come with a 3D model, which marchstudio does not load";
-  if (starts_with(name, "u_scene")) return "glslViewer's scene buffers (postprocessing, 3D render passes) are not run";
+  if (starts_with(name, "u_scene") && name != "u_scene")
+    return "glslViewer's scene depth and scene buffers come with a 3D model, which marchstudio does not load";
   if (name == "u_cubeMap" || name == "u_SH" || name == "u_iblLuminance")
     return "glslViewer's environment cubemap (-C, -sh) is not run";
   if (starts_with(name, "u_pyramid")) return "glslViewer's convolution pyramids are not run";
@@ -67,7 +68,6 @@ std::string unsupported_uniform(const std::string& name) {
 
 // Conditionals on these names select passes marchstudio does not run.
 std::string unsupported_define(const std::string& name) {
-  if (name == "POSTPROCESSING") return "glslViewer's POSTPROCESSING pass (reading u_scene) is not run";
   if (starts_with(name, "PYRAMID_") || starts_with(name, "CONVOLUTION_PYRAMID"))
     return "glslViewer's convolution pyramids are not run";
   if (starts_with(name, "FLOOD_")) return "glslViewer's jump-flood passes are not run";
@@ -79,6 +79,8 @@ struct Scan {
   std::set<int> buffers, doubles;          // N of BUFFER_N, DOUBLE_BUFFER_N conditionals
   std::vector<std::pair<std::string, int>> samplers;  // sampler2D names declared, with their lines
   std::vector<std::pair<std::string, std::string>> varyings;  // name, type
+  bool postprocessing = false;             // an #ifdef POSTPROCESSING block: main draws u_scene, then this pass
+  int scene_line = 0;                      // where u_scene is declared (0: it is not)
 };
 
 Scan scan(const std::string& text, const std::string& where) {
@@ -100,6 +102,7 @@ Scan scan(const std::string& text, const std::string& where) {
         for (size_t k = 2; k < t.size(); ++k) {
           if (const int n = suffix_number(t[k], "BUFFER_"); n >= 0) s.buffers.insert(n);
           if (const int n = suffix_number(t[k], "DOUBLE_BUFFER_"); n >= 0) s.doubles.insert(n);
+          if (t[k] == "POSTPROCESSING") s.postprocessing = true;
           if (const std::string why = unsupported_define(t[k]); !why.empty()) fail(line, t[k], why);
         }
       continue;
@@ -127,6 +130,7 @@ Scan scan(const std::string& text, const std::string& where) {
         const std::string& name = t[n];
         if (const std::string why = unsupported_uniform(name); !why.empty()) fail(line, name, why);
         if (type == "samplerCube") fail(line, name, "cubemap samplers are not run in a glslViewer shader");
+        if (name == "u_scene" && !s.scene_line) s.scene_line = line;
         if (type != "sampler2D") continue;
         // glslViewer sizes a buffer from a trailing "// 512x512" comment; ours are the image's size.
         const std::string& r = raw[i];
@@ -140,6 +144,9 @@ Scan scan(const std::string& text, const std::string& where) {
       }
     }
   }
+  if (s.scene_line && !s.postprocessing)
+    fail(s.scene_line, "u_scene", "glslViewer draws u_scene only for a POSTPROCESSING pass, and this file has none",
+         "read u_scene inside #ifdef POSTPROCESSING");
   return s;
 }
 
@@ -164,9 +171,11 @@ ShaderProject load_glslviewer(const std::string& text, const fs::path& file) {
       fail_input(std::string(prefix) + std::to_string(*set->rbegin()) + ": buffers must be numbered from 0 without gaps",
                  where, 0, {}, "glslViewer runs " + std::string(prefix) + "0.." + std::to_string(set->size() - 1) +
                                    " only, so this block would never run");
-  if (nb + nd > 4)
-    fail_input(std::to_string(nb) + " buffers and " + std::to_string(nd) + " double buffers: marchstudio runs at most 4",
-               where, 0, {}, "BUFFER_N and DOUBLE_BUFFER_N share Shadertoy's four buffers, A..D");
+  const int scene = s.postprocessing ? nb + nd : -1;  // the buffer main draws for POSTPROCESSING to read as u_scene
+  if (nb + nd + (s.postprocessing ? 1 : 0) > 4)
+    fail_input(std::to_string(nb) + " buffers and " + std::to_string(nd) + " double buffers" +
+                   (s.postprocessing ? " and the POSTPROCESSING scene" : "") + ": marchstudio runs at most 4",
+               where, 0, {}, "BUFFER_N, DOUBLE_BUFFER_N and u_scene share Shadertoy's four buffers, A..D");
   ShaderProject p;
   p.glslviewer = true;
   p.origin = file;
@@ -188,6 +197,8 @@ ShaderProject load_glslviewer(const std::string& text, const fs::path& file) {
       if (const int b = suffix_number(name, "u_buffer"); b >= 0) {
         if (b >= nb) fail_input(name + ": no #ifdef BUFFER_" + std::to_string(b) + " block draws it", where, line, {});
         if (b != output) in.kind = InputKind::buffer, in.buffer = b;  // glslViewer never binds a buffer to itself
+      } else if (name == "u_scene") {
+        if (define == "POSTPROCESSING") in.kind = InputKind::buffer, in.buffer = scene;  // main's image, this frame's
       } else if (const int d = suffix_number(name, "u_doubleBuffer"); d >= 0) {
         if (d >= nd) fail_input(name + ": no #ifdef DOUBLE_BUFFER_" + std::to_string(d) + " block draws it", where, line, {});
         in.kind = InputKind::buffer, in.buffer = nb + d;
@@ -202,7 +213,14 @@ ShaderProject load_glslviewer(const std::string& text, const fs::path& file) {
   };
   for (int b = 0; b < nb; ++b) pass(PassKind::buffer, b, "BUFFER_" + std::to_string(b));
   for (int d = 0; d < nd; ++d) pass(PassKind::buffer, nb + d, "DOUBLE_BUFFER_" + std::to_string(d));
-  pass(PassKind::image, -1, "");
+  // With POSTPROCESSING, main draws into the scene buffer and the same file
+  // with POSTPROCESSING defined draws the image from it, as glslViewer does.
+  if (s.postprocessing) {
+    pass(PassKind::buffer, scene, "");
+    pass(PassKind::image, -1, "POSTPROCESSING");
+  } else {
+    pass(PassKind::image, -1, "");
+  }
   check_project(p, where);
   return p;
 }

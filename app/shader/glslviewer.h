@@ -3,9 +3,10 @@
 // uniforms, and the same file compiled once per `#ifdef BUFFER_N` (a
 // buffer) and `#ifdef DOUBLE_BUFFER_N` (a ping-pong buffer reading its own
 // previous frame), mapped onto Shadertoy's Buffer A..D in glslViewer's run
-// order: BUFFER_0.., then DOUBLE_BUFFER_0.., then the main pass. What
-// marchstudio does not run (3D scenes, cubemaps, postprocessing, pyramids,
-// floods, sized buffers) is refused at its line. docs/glslviewer.md.
+// order: BUFFER_0.., then DOUBLE_BUFFER_0.., then the main pass (into one
+// more buffer when an #ifdef POSTPROCESSING pass reads it as u_scene, last).
+// What marchstudio does not run (3D scenes, cubemaps, pyramids, floods,
+// sized buffers) is refused at its line. docs/glslviewer.md.
 #pragma once
 #include <filesystem>
 #include <string>

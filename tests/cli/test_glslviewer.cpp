@@ -150,6 +150,40 @@ TEST(GlslViewer, TexturesFromTheCommandLineMatchShadertoyTextures) {
   EXPECT_FALSE(fs::exists(dir.path() / "x.png"));
 }
 
+// POSTPROCESSING against Shadertoy's form of it: main into Buffer A, the
+// Image pass reading it.
+TEST(GlslViewer, PostprocessingMatchesABufferReadByTheImage) {
+  TempDir dir;
+  write_file(dir.path() / "pp.frag",
+             "uniform sampler2D u_scene;\nuniform vec2 u_resolution;\nuniform float u_time;\nvarying vec2 v_texcoord;\n"
+             "void main() {\n"
+             "#ifdef POSTPROCESSING\n"
+             "  vec3 c = texture2D(u_scene, v_texcoord).rgb;\n"
+             "  gl_FragColor = vec4(1.0 - c.bgr, 1.0);\n"
+             "#else\n"
+             "  vec2 st = gl_FragCoord.xy / u_resolution.xy;\n"
+             "  gl_FragColor = vec4(st, 0.5 + 0.5 * sin(u_time), 1.0);\n"
+             "#endif\n"
+             "}\n");
+  const std::string buffer =
+      "void mainImage(out vec4 o, in vec2 f) {\\n  vec2 st = f / iResolution.xy;\\n"
+      "  o = vec4(st, 0.5 + 0.5 * sin(iTime), 1.0);\\n}\\n";
+  const std::string image =
+      "void mainImage(out vec4 o, in vec2 f) {\\n  vec3 c = texture(iChannel0, f / iResolution.xy).rgb;\\n"
+      "  o = vec4(1.0 - c.bgr, 1.0);\\n}\\n";
+  const std::string input = "{\"id\": 257, \"ctype\": \"buffer\", \"channel\": 0}";
+  write_file(dir.path() / "pp.json",
+             "{\"Shader\": {\"info\": {\"name\": \"pp\"}, \"renderpass\": ["
+             "{\"name\": \"Buffer A\", \"type\": \"buffer\", \"code\": \"" + buffer + "\", \"inputs\": [], "
+             "\"outputs\": [{\"id\": 257, \"channel\": 0}]},"
+             "{\"name\": \"Image\", \"type\": \"image\", \"code\": \"" + image + "\", \"inputs\": [" + input +
+                 "], \"outputs\": []}]}}");
+  const Image gv = render(dir.path() / "pp.frag", dir.path() / "gv.png", "0.3");
+  const Image st = render(dir.path() / "pp.json", dir.path() / "st.png", "0.3");
+  expect_same_bytes(gv, st);
+  EXPECT_GT(gv.at(0, gv.height - 1, 2), 0.9f) << "the postprocessing pass did not run (1 - red at the lower left)";
+}
+
 TEST(GlslViewer, RefusedFeatureIsOneLineAtItsLine) {
   TempDir dir;
   write_file(dir.path() / "cam.frag",
