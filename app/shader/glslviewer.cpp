@@ -264,18 +264,21 @@ ShaderSource assemble_glslviewer_pass(const ShaderProject& p, size_t index, cons
       "uniform vec2 uPixelOffset;\n"
       "layout(location = 0) out vec4 outColor;\n"
       "vec4 msFragColor;\n"
+      "vec4 msFragData[4];\n"  // gl_FragData: [0] is the pass's colour, as with one draw buffer
       "vec4 msFragCoord;\n"
       "#define varying\n"
       "#define texture2D texture\n"
       "#define texture2DProj textureProj\n"
       "#define texture2DLod textureLod\n"
       "#define gl_FragColor msFragColor\n"
+      "#define gl_FragData msFragData\n"
       "#define gl_FragCoord msFragCoord\n"
       "#define main msGlslViewerMain\n"
       "#include \"marchstudio:pass\"\n"
       "#undef main\n"
       "#undef gl_FragCoord\n"
       "#undef gl_FragColor\n"
+      "#undef gl_FragData\n"
       "float msUnorm(float v) { return isnan(v) ? 0.0 : isinf(v) ? (v > 0.0 ? 1.0 : 0.0) : v; }\n"
       "void main() {\n";
   const bool image = pass.kind == PassKind::image;
@@ -289,7 +292,9 @@ ShaderSource assemble_glslviewer_pass(const ShaderProject& p, size_t index, cons
     if (name == "v_color") root += "  v_color = " + type + "(1.0);\n";
     if (name == "v_normal") root += "  v_normal = vec3(0.0, 0.0, 1.0);\n";
   }
-  root += "  msFragColor = vec4(0.0);\n  msGlslViewerMain();\n";
+  root += "  msFragColor = vec4(0.0);\n  msFragData[0] = vec4(0.0);\n  msGlslViewerMain();\n";
+  const std::vector<std::string> words = tokens(strip_comments(pass.code));
+  if (std::find(words.begin(), words.end(), "gl_FragData") != words.end()) root += "  msFragColor = msFragData[0];\n";
   // The main pass as Shadertoy's Image pass writes (one home for the
   // non-finite rules: shader/shadertoy.cpp); buffers keep the whole vec4.
   root += image ? "  vec4 c = msFragColor;\n"

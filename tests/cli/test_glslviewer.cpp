@@ -37,6 +37,10 @@ TEST(GlslViewer, SinglePassMatchesShadertoyForm) {
              "  vec2 st = gl_FragCoord.xy / u_resolution.xy;\n"
              "  gl_FragColor = vec4(st.x, st.y, abs(sin(u_time)), 1.0);\n"
              "}\n");
+  // gl_FragData[0] is the same colour.
+  std::string data = read_file(dir.path() / "a.frag");
+  data.replace(data.find("gl_FragColor ="), 14, "gl_FragData[0] =");
+  write_file(dir.path() / "d.frag", data);
   write_file(dir.path() / "a.glsl",
              "void mainImage(out vec4 o, in vec2 f) {\n"
              "  vec2 st = f / iResolution.xy;\n"
@@ -45,6 +49,7 @@ TEST(GlslViewer, SinglePassMatchesShadertoyForm) {
   const Image gv = render(dir.path() / "a.frag", dir.path() / "gv.png");
   const Image st = render(dir.path() / "a.glsl", dir.path() / "st.png");
   expect_same_bytes(gv, st);
+  expect_same_bytes(render(dir.path() / "d.frag", dir.path() / "d.png"), st);
   // Not trivially equal: the blue channel follows time.
   EXPECT_NEAR(gv.at(0, 0, 2), std::abs(std::sin(0.5f)), 1.0 / 255.0);
 }
