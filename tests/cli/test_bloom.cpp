@@ -151,6 +151,22 @@ TEST_F(Bloom, MoreSamplesSameBloom) {
   }
 }
 
+// A sequence's frames bloom as the still does (cli/sequence_cmd.cpp builds
+// the same stage): frame 0 of --frames 0..1 equals `render` at time 0, bit
+// for bit; --disable bloom there too equals no table.
+TEST_F(Bloom, SequenceFramesEqualTheStill) {
+  const Image still = render(kData / "spot.toml", "still.png");
+  const RunResult r = run_marchstudio({"render", (kData / "spot.toml").string(), "--frames", "0..1", "-o",
+                                       (dir / "f_%d.png").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_image(dir / "f_0.png").pixels, still.pixels);
+  const Image plain = render(kData / "spot_plain.toml", "plain.png");
+  const RunResult off = run_marchstudio({"render", (kData / "spot.toml").string(), "--frames", "0..0", "-o",
+                                         (dir / "g_%d.png").string(), "--disable", "bloom"});
+  ASSERT_EQ(off.exit_code, 0) << off.err;
+  EXPECT_EQ(read_image(dir / "g_0.png").pixels, plain.pixels);
+}
+
 // A still drawn in tiles cannot blur across them: refused, one line.
 TEST_F(Bloom, TiledStillIsRefused) {
   const RunResult r = run_marchstudio({"render", (kData / "spot.toml").string(), "-o", (dir / "t.png").string(),
