@@ -105,6 +105,15 @@ std::vector<std::string_view> split_lines(std::string_view text) {
   return lines;
 }
 
+std::vector<std::string> line_strings(std::string_view text) {
+  std::vector<std::string> out(1);
+  for (char c : text) {
+    if (c == '\n') out.emplace_back();
+    else out.back().push_back(c);
+  }
+  return out;
+}
+
 std::string include_guard(std::string_view text) {
   const std::vector<std::string_view> lines = split_lines(text);
   bool in_comment = false;

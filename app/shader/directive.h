@@ -28,6 +28,9 @@ bool is_blank_or_comment(std::string_view line, bool starts_in_comment);
 
 // Lines without their '\n' (and a '\r' before it).
 std::vector<std::string_view> split_lines(std::string_view text);
+// Every '\n'-separated piece as its own string, the one after a final
+// '\n' included (empty), '\r' kept: joined with '\n' they give `text` back.
+std::vector<std::string> line_strings(std::string_view text);
 
 // The macro of a classic include guard, or empty: the file's first code is
 // `#ifndef G` (or `#if !defined(G)`) and the #endif that closes it is its

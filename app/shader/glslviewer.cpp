@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "shader/directive.h"
 #include "shader/confine.h"
 #include "shader/es_compat.h"
 #include "shader/glsl_scan.h"
@@ -30,14 +31,6 @@ std::vector<std::string> tokens(std::string_view line) {
   return out;
 }
 
-std::vector<std::string> split_lines(const std::string& s) {
-  std::vector<std::string> out(1);
-  for (char c : s) {
-    if (c == '\n') out.emplace_back();
-    else out.back().push_back(c);
-  }
-  return out;
-}
 
 // N of "PREFIX<N>" (digits only), or -1.
 int suffix_number(const std::string& name, std::string_view prefix) {
@@ -84,8 +77,8 @@ struct Scan {
 };
 
 Scan scan(const std::string& text, const std::string& where) {
-  const std::vector<std::string> raw = split_lines(text);
-  const std::vector<std::string> lines = split_lines(strip_comments(text));
+  const std::vector<std::string> raw = line_strings(text);
+  const std::vector<std::string> lines = line_strings(strip_comments(text));
   Scan s;
   const auto fail = [&](int line, const std::string& name, const std::string& what, const std::string& hint = {}) {
     fail_input(name + ": " + what, where, line, {}, hint.empty() ? "docs/glslviewer.md lists what runs" : hint);
@@ -305,7 +298,7 @@ ShaderSource assemble_glslviewer_pass(const ShaderProject& p, size_t index, cons
 
   // A GLSL 1.x #version line is ours to give: blanked, so lines stay.
   std::string code = pass.code;
-  std::vector<std::string> lines = split_lines(code);
+  std::vector<std::string> lines = line_strings(code);
   code.clear();
   for (size_t i = 0; i < lines.size(); ++i) {
     const std::vector<std::string> t = tokens(lines[i]);

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "shader/directive.h"
 #include "io/input_file.h"
 #include "shader/confine.h"
 #include "shader/glsl_scan.h"
@@ -19,14 +20,6 @@ namespace {
 
 constexpr const char* kDoc = "docs/vscode.md lists what runs";
 
-std::vector<std::string> split_lines(const std::string& s) {
-  std::vector<std::string> out(1);
-  for (char c : s) {
-    if (c == '\n') out.emplace_back();
-    else out.back().push_back(c);
-  }
-  return out;
-}
 
 // The directive a (comment-free) line starts with: "iChannel2", "iKeyboard"...;
 // empty when it starts with none of the extension's.
@@ -181,8 +174,8 @@ struct Loader {
   }
 
   void parse(File& f, const std::string& text) {
-    const std::vector<std::string> raw = split_lines(text);
-    const std::vector<std::string> bare = split_lines(strip_comments(text));
+    const std::vector<std::string> raw = line_strings(text);
+    const std::vector<std::string> bare = line_strings(strip_comments(text));
     for (size_t i = 0; i < raw.size(); ++i) {
       const int line = static_cast<int>(i) + 1;
       const std::string name = i < bare.size() ? directive_name(bare[i]) : "";
@@ -279,7 +272,7 @@ std::string keyboard_prelude() {
 }  // namespace
 
 bool looks_like_vscode(std::string_view source) {
-  for (const std::string& line : split_lines(strip_comments(source)))
+  for (const std::string& line : line_strings(strip_comments(source)))
     if (!directive_name(line).empty()) return true;
   return false;
 }
@@ -365,7 +358,7 @@ ShaderProject load_vscode(const std::string& text, const fs::path& file, const s
         fail_input("#iKeyboard: all four channels are bound; the keyboard needs one", f.where, f.keyboard_line, "#iKeyboard",
                    "marchstudio binds the keyboard to a free iChannel; free one");
       ps.inputs[free].kind = InputKind::keyboard;
-      std::vector<std::string> lines = split_lines(f.code);
+      std::vector<std::string> lines = line_strings(f.code);
       lines[static_cast<size_t>(f.keyboard_line) - 1] = "#define iKeyboard iChannel" + std::to_string(free);
       f.code.clear();
       for (size_t k = 0; k < lines.size(); ++k) f.code += lines[k] + (k + 1 < lines.size() ? "\n" : "");

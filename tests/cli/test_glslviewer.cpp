@@ -11,6 +11,7 @@
 
 #include "io/image_io.h"
 #include "run.h"
+#include "test_texture.h"
 
 namespace ms::test {
 namespace {
@@ -88,18 +89,6 @@ TEST(GlslViewer, DoubleBufferFeedbackMatchesShadertoyBuffer) {
   EXPECT_GT(gv.at(10, 10, 0), 5.0 / 64.0) << "the double buffer did not carry its state";
 }
 
-// A 4x2 texture whose texels differ: red = 40 (x + 4 y) / 255, green = x / 3,
-// blue = y. Written by the test.
-void write_texture(const fs::path& p) {
-  Image t;
-  t.width = 4;
-  t.height = 2;
-  t.channels = {"R", "G", "B", "A"};
-  for (int y = 0; y < 2; ++y)
-    for (int x = 0; x < 4; ++x)
-      for (float v : {40.0f * (x + 4 * y) / 255.0f, x / 3.0f, static_cast<float>(y), 1.0f}) t.pixels.push_back(v);
-  write_image(t, p);
-}
 
 TEST(GlslViewer, TexturesFromTheCommandLineMatchShadertoyTextures) {
   TempDir dir;

@@ -10,6 +10,7 @@
 
 #include "io/image_io.h"
 #include "run.h"
+#include "test_texture.h"
 
 namespace ms::test {
 namespace {
@@ -103,15 +104,10 @@ TEST(Multipass, ATomlWithPassesEqualsTheJson) {
 
 // A 4x2 texture whose texels are known: red = 10 * (x + 4 y) / 255,
 // green = x / 255, blue = y * 100 / 255. Written as a PNG by the test.
-void write_texture(const fs::path& p) {
-  Image t;
-  t.width = 4;
-  t.height = 2;
-  t.channels = {"R", "G", "B", "A"};
-  for (int y = 0; y < 2; ++y)
-    for (int x = 0; x < 4; ++x)
-      for (float v : {10.0f * (x + 4 * y) / 255.0f, x / 255.0f, y * 100.0f / 255.0f, 1.0f}) t.pixels.push_back(v);
-  write_image(t, p);
+void write_ramp_texture(const fs::path& p) {
+  write_texture_4x2(p, [](int x, int y) {
+    return std::array<float, 3>{10.0f * (x + 4 * y) / 255.0f, x / 255.0f, y * 100.0f / 255.0f};
+  });
 }
 
 // Samples iChannel0 at `uv` and shows it.
@@ -130,7 +126,7 @@ float sampled(const TempDir& dir, const std::string& uv, const std::string& samp
 
 TEST(Multipass, SamplerModesAndVflipAgainstKnownTexels) {
   TempDir dir;
-  write_texture(dir / "tex.png");
+  write_ramp_texture(dir / "tex.png");
   const std::string nearest = "{\"filter\": \"nearest\", \"wrap\": \"clamp\", \"vflip\": \"false\"}";
   const std::string flipped = "{\"filter\": \"nearest\", \"wrap\": \"clamp\", \"vflip\": \"true\"}";
   // uv (0,0) is the texture's first row: the file's top row without vflip,

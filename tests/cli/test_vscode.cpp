@@ -11,22 +11,12 @@
 
 #include "io/image_io.h"
 #include "run.h"
+#include "test_texture.h"
 
 namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-// A 4x2 texture whose texels differ: red = 40 (x + 4 y) / 255, green = x / 3, blue = y.
-void write_texture(const fs::path& p) {
-  Image t;
-  t.width = 4;
-  t.height = 2;
-  t.channels = {"R", "G", "B", "A"};
-  for (int y = 0; y < 2; ++y)
-    for (int x = 0; x < 4; ++x)
-      for (float v : {40.0f * (x + 4 * y) / 255.0f, x / 3.0f, static_cast<float>(y), 1.0f}) t.pixels.push_back(v);
-  write_image(t, p);
-}
 
 Image render(const fs::path& dir, const std::string& input, const std::vector<std::string>& extra = {}) {
   std::vector<std::string> args = {"render", input, "--size", "48x32", "--time", "0.1", "--media-dir", ".", "-o", "out.png"};
