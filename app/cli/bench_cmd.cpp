@@ -96,6 +96,7 @@ int run_bench_command(const BenchArgs& a) {
   s.warmup = a.warmup;
   s.time = in.scene.render.time;
   // Timed frames as render draws them: one pass at spp 1 (PNG output).
+  in.scene.bloom.enabled = false;  // bench times the scene's passes; not the bloom passes (docs/post.md)
   s.fused_post = fuse_post(in, s.spp, false, true, opts);
   assemble_input(in, opts);
   report_input_warnings(in.warnings, a.input, a.strict);

@@ -78,12 +78,19 @@ ReloadResult Session::reload(bool from_disk) {
     const ShaderSource& main_src = passes.back().source;
     // A debug view shows values, not radiance: its post pass stores them as
     // they are (no tone map, no sRGB encode; exposure 1, display_exposure()).
-    const ShaderSource post_src = assemble_post(scene_.render.tonemap, !shadertoy() && view == 0, opts_.assemble, shadertoy());
+    const bool bloom = scene_.bloom.enabled && !shadertoy() && view == 0;  // docs/post.md
+    const ShaderSource post_src =
+        assemble_post(scene_.render.tonemap, !shadertoy() && view == 0, opts_.assemble, shadertoy(), bloom);
     r.cached = cache_.contains(fullscreen_vertex_source(), main_src);
     const auto t_gl = std::chrono::steady_clock::now();
     r.assemble_ms = std::chrono::duration<double, std::milli>(t_gl - t0).count();
     auto graph = std::make_shared<PassGraph>(passes, &cache_);
     auto post = cache_.get(fullscreen_vertex_source(), post_src);
+    std::unique_ptr<BloomStage> bloom_stage;
+    if (bloom)
+      bloom_stage = std::make_unique<BloomStage>(scene_.bloom,
+                                                 cache_.get(fullscreen_vertex_source(), assemble_bloom(false, opts_.assemble)),
+                                                 cache_.get(fullscreen_vertex_source(), assemble_bloom(true, opts_.assemble)));
     r.gl_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_gl).count();
     for (const std::string& u : graph->unbound_sampled()) warnings.push_back(u + " is sampled but nothing is bound to it");
     if (graph_) graph->adopt_buffers(*graph_);  // buffers evolve on across a reload of a pass
@@ -93,6 +100,7 @@ ReloadResult Session::reload(bool from_disk) {
       for (const GraphInput& in : p.inputs)
         if (in.audio && !audio_) audio_ = in.audio;
     post_ = std::move(post);
+    bloom_ = std::move(bloom_stage);
     warnings_ = std::move(warnings);
     std::vector<SceneParam> params = parse_scene_params(main_src.text);
     carry_over_values(params, params_);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "live/scene_params.h"
+#include "render/bloom.h"
 #include "render/graph.h"
 #include "render/program.h"
 #include "render/program_cache.h"
@@ -64,6 +65,9 @@ class Session {
   PassGraph* graph() const { return graph_.get(); }
   const Program* main_program() const { return graph_ ? &graph_->program(graph_->size() - 1) : nullptr; }
   const Program* post_program() const { return post_.get(); }
+  // The scene's [post.bloom] stage (render/bloom.h) for FrameParams::bloom;
+  // nullptr without it, for a Shadertoy shader and in a debug view.
+  BloomStage* bloom() const { return bloom_.get(); }
   // Warnings of the last good build (missing media stood in for, unbound channels).
   const std::vector<std::string>& warnings() const { return warnings_; }
   int generation() const { return generation_; }  // +1 per successful reload
@@ -93,6 +97,7 @@ class Session {
   void release_gl() {
     graph_.reset();
     post_.reset();
+    bloom_.reset();
     cache_.clear();
   }
 
@@ -109,6 +114,7 @@ class Session {
   std::shared_ptr<PassGraph> graph_;
   std::shared_ptr<const AudioClip> audio_;
   std::shared_ptr<const Program> post_;
+  std::unique_ptr<BloomStage> bloom_;  // with post_: its post pass was assembled with BLOOM 1
   std::vector<std::string> warnings_;
   ProgramCache cache_;     // every program built, by source hash: a toggle seen before is not recompiled
   bool specialized_ = false;

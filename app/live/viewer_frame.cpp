@@ -122,6 +122,7 @@ bool FrameDrawer::draw(long frame, double dt, const std::function<void()>& ui) {
     fp.height = rh_;
     fp.spp = 1;  // interactive: one sample per pixel, more while nothing changes; screenshots use the scene's spp
     fp.exposure = session_.display_exposure();
+    fp.bloom = session_.bloom();
     just_converged_ = false;
     try {
       const Scene view = posed(static_cast<float>(s_.time));
@@ -207,6 +208,7 @@ void FrameDrawer::screenshot(const fs::path& path, int w, int h) {
   fp.height = h;
   fp.spp = std::max(1, session_.scene().render.spp);
   fp.exposure = session_.display_exposure();
+  fp.bloom = session_.bloom();
   // A screenshot draws the frame as it stands: the buffers are not stepped
   // (they hold the window's size; a different size starts them afresh).
   const Scene view = posed(static_cast<float>(s_.time));

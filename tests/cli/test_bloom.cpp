@@ -9,11 +9,13 @@
 #include <algorithm>
 #include <cmath>
 #include <regex>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "io/image_io.h"
 #include "run.h"
+#include "test_viewer_util.h"
 
 namespace ms::test {
 namespace {
@@ -217,6 +219,28 @@ TEST_F(Bloom, BadValuesAreOneLineErrors) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("blom"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("did you mean 'bloom'"), std::string::npos) << r.err;
+}
+
+// The viewer (live/session.cpp) draws the same bloom stage: its first
+// captured frame equals `render` of the scene within 1/255 (the viewer's
+// frames are one sample, as render's here).
+TEST_F(Bloom, ViewerShowsBloomAsRenderDoes) {
+  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+  const Image want = render(kData / "spot.toml", "render.png");
+  const Image plain = render(kData / "spot_plain.toml", "plain.png");
+  const std::string server = std::to_string(100 + getpid() % 20000);
+  auto proc = std::make_unique<BackgroundProcess>(
+      std::vector<std::string>{"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+                               (kData / "spot.toml").string(), "--size", "96x64", "--paused", "--no-panel", "--log",
+                               (dir / "log.txt").string(), "--capture-dir", (dir / "cap").string(), "--exit-after",
+                               "30"},
+      dir / "out.txt", dir / "err.txt");
+  ASSERT_TRUE(proc->started());
+  ASSERT_FALSE(wait_for_line(dir / "log.txt", "^capture 0 ", 30).empty()) << read_file(dir / "err.txt");
+  const Image got = read_image(dir / "cap" / "frame_0.png");
+  proc.reset();
+  EXPECT_LE(max_abs_diff(got, want), 1.0 / 255.0);
+  EXPECT_GT(max_abs_diff(got, plain), 0.1);  // and it is bloom that matches
 }
 
 }  // namespace
