@@ -49,7 +49,8 @@ class RemoveOnSignal {
 StillTiling plan_render_tiling(const LoadedInput& in, const FrameParams& fp, int gpu_targets, int forced, int max_w,
                                int max_h) {
   if (!in.stateful()) {
-    StillTiling t = plan_still_tiling(fp.width, fp.height, max_w, max_h, gpu_targets, fp.aovs, forced);
+    const int targets = gpu_targets + (in.scene.bloom.enabled ? 2 : 0);  // render/bloom.h's two, at most full size
+    StillTiling t = plan_still_tiling(fp.width, fp.height, max_w, max_h, targets, fp.aovs, forced);
     if (t.tiled() && in.scene.bloom.enabled)  // docs/post.md: a tile's blur would miss its neighbours' light
       fail_input("bloom needs the whole frame, so a still drawn in tiles cannot have it", in.path.string(), 0,
                  forced > 0 ? "--tile-still" : "--size", "--disable bloom, or render it smaller");

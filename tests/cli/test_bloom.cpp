@@ -177,6 +177,15 @@ TEST_F(Bloom, TiledStillIsRefused) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find("bloom needs the whole frame"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "t.png"));
+  // Past the memory budget with the two bloom targets counted (4 GiB at
+  // 96 bytes a pixel: 7000x7000 needs 4.4 GiB, 2.9 GiB without bloom) the
+  // still would be tiled: refused before any GL, naming --size.
+  const RunResult big = run_marchstudio({"render", (kData / "spot.toml").string(), "-o", (dir / "big.png").string(),
+                                         "--size", "7000x7000"});
+  EXPECT_EQ(big.exit_code, 2) << big.err;
+  EXPECT_NE(big.err.find("bloom needs the whole frame"), std::string::npos) << big.err;
+  EXPECT_NE(big.err.find("--size"), std::string::npos) << big.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "big.png"));
   // Without bloom the same tiled still renders.
   const RunResult ok = run_marchstudio({"render", (kData / "spot.toml").string(), "-o", (dir / "t.png").string(),
                                         "--tile-still", "32", "--disable", "bloom"});
