@@ -68,7 +68,7 @@ struct SuiteCase {
   std::string backend = "auto";       // auto | egl | osmesa
   std::string renderer;               // GL_RENDERER must contain this ("" = any)
   std::string preset;                 // "" = the input's
-  std::vector<std::string> disable;   // shadows, reflections, ao, checker-filter
+  std::vector<std::string> disable;   // shadows, reflections, ao, checker-filter, bloom
   std::vector<std::pair<std::string, std::string>> defines;
   std::vector<std::filesystem::path> allow_include;
   bool specialize = true;

@@ -39,7 +39,7 @@ const Views kCostKeys = {"mean_primary_steps", "p99_primary_steps", "mean_map_ca
                          "p99_map_calls",      "step_cap_fraction", "max_slack"};
 const Views kTimeKeys = {"max_ratio", "warn_ratio", "frames", "rounds", "warmup"};
 const Views kBackends = {"auto", "egl", "osmesa"};
-const Views kEffects = {"shadows", "reflections", "ao", "checker-filter"};
+const Views kEffects = {"shadows", "reflections", "ao", "checker-filter", "bloom"};
 const Views kMetrics = {"psnr", "mae", "max", "fraction", "flip"};  // Metric's order
 const Views kClocks = {"auto", "cpu", "wall"};               // SuiteClock's order
 
