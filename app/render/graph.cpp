@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "render/audio_texture.h"
+#include "render/cubemap.h"
 #include "render/tiles.h"
 #include "render/video_texture.h"
 #include "render/uniforms.h"
@@ -29,6 +30,8 @@ struct PassGraph::Gpu {
   GLuint black = 0, keyboard = 0;
   std::map<const Image*, GLuint> textures;
   std::map<const Volume*, GLuint> volumes;
+  std::map<const CubeFaces*, GLuint> cubes;  // cubemap inputs' faces
+  std::unique_ptr<CubeBuffer> cube_a;        // the Cube A pass's target, when there is one
   std::map<const AudioClip*, GLuint> audio;  // 512x2 R8, rewritten each frame
   VideoTextures videos;  // RGBA8, the frame at iTime
   std::map<int, GLuint> samplers;  // by filter * 3 + wrap
@@ -103,9 +106,17 @@ PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
   for (const PassSource& p : passes_) {
     programs_.push_back(cache ? cache->get(fullscreen_vertex_source(), p.source)
                               : std::make_shared<const Program>(fullscreen_vertex_source(), p.source));
-    if (p.output >= 0) gpu_->used[p.output] = true;
+    if (p.output >= 0 && p.output < 4) gpu_->used[p.output] = true;
   }
   Gpu& g = *gpu_;
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // as WebGL2 filters cube maps
+  if (has_cube_pass()) {
+    int levels = 1;  // a chain when some pass samples Cube A mipmapped
+    for (const PassSource& p : passes_)
+      for (const GraphInput& in : p.inputs)
+        if (in.kind == InputKind::cubemap && !in.cube && in.sampler.filter == TexFilter::mipmap) levels = 2;
+    g.cube_a = std::make_unique<CubeBuffer>(levels);
+  }
   glGenVertexArrays(1, &g.vao);
   const float black[4] = {0, 0, 0, 1};
   glGenTextures(1, &g.black);
@@ -133,6 +144,8 @@ PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
     for (const GraphInput& in : p.inputs)
       if (in.kind == InputKind::texture && in.image && !g.textures.count(in.image.get()))
         g.textures[in.image.get()] = upload(in);
+      else if (in.kind == InputKind::cubemap && in.cube && !g.cubes.count(in.cube.get()))
+        g.cubes[in.cube.get()] = upload_cube(*in.cube, in.sampler);
       else if (in.kind == InputKind::volume && in.volume && !g.volumes.count(in.volume.get()))
         g.volumes[in.volume.get()] = upload(*in.volume, in.sampler);
       else if (in.audio && !g.audio.count(in.audio.get())) {
@@ -155,6 +168,7 @@ PassGraph::~PassGraph() {
   }
   for (auto& [img, tex] : g.textures) glDeleteTextures(1, &tex);
   for (auto& [vol, tex] : g.volumes) glDeleteTextures(1, &tex);
+  for (auto& [cube, tex] : g.cubes) glDeleteTextures(1, &tex);
   for (auto& [clip, tex] : g.audio) glDeleteTextures(1, &tex);
   for (auto& [key, s] : g.samplers) glDeleteSamplers(1, &s);
   glDeleteTextures(1, &g.black);
@@ -167,6 +181,10 @@ std::vector<int> PassGraph::buffers() const {
   for (int b = 0; b < 4; ++b)
     if (gpu_->used[b]) out.push_back(b);
   return out;
+}
+
+bool PassGraph::has_cube_pass() const {
+  return std::any_of(passes_.begin(), passes_.end(), [](const PassSource& p) { return p.output == kCubeA; });
 }
 
 void PassGraph::ensure_buffers(int w, int h) {
@@ -215,6 +233,7 @@ void PassGraph::reset() {
     g.buffers[b].latest = 0;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (g.cube_a) g.cube_a->clear();
 }
 
 void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
@@ -238,6 +257,10 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
         tex = g.keyboard;
         rw = 256;
         rh = 3;
+        break;
+      case InputKind::cubemap:
+        tex = in.cube ? g.cubes.at(in.cube.get()) : g.cube_a->texture();  // Cube A as it stands now
+        rw = rh = static_cast<float>(in.cube ? in.cube->size : g.cube_a->size());
         break;
       case InputKind::volume:
         tex = g.volumes.at(in.volume.get());
@@ -339,6 +362,19 @@ void PassGraph::draw_buffer_pass(size_t pass, const FrameInputs& in, const Frame
   buf.latest = target;  // later passes, and the next frame, read this
 }
 
+void PassGraph::draw_cube_pass(size_t pass, const FrameInputs& in, const FrameParams& p) {
+  const Program& prog = *programs_[pass];
+  const int n = gpu_->cube_a->size();
+  gpu_->cube_a->draw(prog.id(), gpu_->vao, [&](int face) {
+    float res[4][3];
+    bind_inputs(pass, p.width, p.height, res);
+    set_shadertoy_uniforms(prog, n, n, shadertoy_inputs(in, res));  // iResolution: the face, as Shadertoy
+    glUniform1i(prog.loc("uCubeFace"), face);
+    if (in.extra) (*in.extra)(prog);
+  }, p.deadline);
+  unbind_samplers();
+}
+
 void PassGraph::update_timed_inputs(const FrameInputs& in, const FrameParams& p) {
   gpu_->videos.update(in.time, p.deadline);
   for (auto& [clip, tex] : gpu_->audio) {
@@ -360,7 +396,8 @@ void PassGraph::step_buffers(const FrameInputs& in, const FrameParams& p) {
   }
   for (size_t i = 0; i + 1 < passes_.size(); ++i) {
     const double t0 = timing_ ? finished_ms() : 0.0;
-    draw_buffer_pass(i, in, p);
+    if (passes_[i].output == kCubeA) draw_cube_pass(i, in, p);
+    else draw_buffer_pass(i, in, p);
     if (timing_) pass_ms_[i] = finished_ms() - t0;
   }
 }
@@ -413,10 +450,12 @@ void PassGraph::adopt_buffers(const PassGraph& old) {
         glGenerateMipmap(GL_TEXTURE_2D);
       }
   }
+  if (g.cube_a && o.cube_a) g.cube_a->copy_from(*o.cube_a);
 }
 
 Image PassGraph::read_buffer(int buffer) const {
   const Gpu& g = *gpu_;
+  if (buffer == kCubeA) return g.cube_a->read();
   const Buffer& b = g.buffers[buffer];
   Image img;
   img.width = g.width;
@@ -432,6 +471,7 @@ Image PassGraph::read_buffer(int buffer) const {
 
 void PassGraph::write_buffer(int buffer, const Image& img) {
   Gpu& g = *gpu_;
+  if (buffer == kCubeA) return g.cube_a->write(img);
   ensure_buffers(img.width, img.height);
   Buffer& b = g.buffers[buffer];
   if (img.nchannels() != 4 || !b.tex[0]) fail_system("internal: a checkpoint that fits no buffer");

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "io/audio.h"
+#include "io/cube_faces.h"
 #include "io/image.h"
 #include "io/video_input.h"
 #include "render/frame.h"
@@ -43,10 +44,11 @@ struct Volume {
 
 // One channel as the GL binds it; made before any context exists.
 struct GraphInput {
-  InputKind kind = InputKind::none;  // none, buffer, texture, keyboard or volume here
+  InputKind kind = InputKind::none;  // none, buffer, texture, keyboard, cubemap, volume, music, video here
   int buffer = -1;                    // buffer: 0..3 (A..D)
   std::shared_ptr<const Image> image; // texture: decoded (top row first)
   std::shared_ptr<const Volume> volume;  // volume: its voxels
+  std::shared_ptr<const CubeFaces> cube; // cubemap: its six faces (null: the Cube A pass, buffer kCubeA)
   std::shared_ptr<const AudioClip> audio;  // music, musicstream: the decoded clip (render/audio_texture.h per frame)
   std::shared_ptr<VideoStream> video;      // video: its decoder (render/video_texture.h per frame)
   bool eight_bit = true;              // texture: stored as RGBA8 (PNG, JPEG), else as float (EXR, HDR)
@@ -62,7 +64,7 @@ struct PassSource {
   ShaderSource source;  // the assembled fragment shader
   PassUniforms uniforms = PassUniforms::scene;
   std::array<GraphInput, 4> inputs{};
-  int output = -1;      // the buffer it writes, 0..3; -1: the frame (the last pass)
+  int output = -1;      // the buffer it writes, 0..3, or kCubeA (render/cubemap.h); -1: the frame (the last pass)
 };
 
 // Shadertoy's keyboard texture, 256x3: row 0 down, row 1 pressed this
@@ -113,8 +115,10 @@ class PassGraph {
   bool stateful() const { return passes_.size() > 1; }
   // The buffers some pass writes (0..3), ascending.
   std::vector<int> buffers() const;
+  bool has_cube_pass() const;  // Cube A (its state is read_buffer(kCubeA))
   // A buffer's contents as they stand (RGBA float, GL's row order), and
-  // back: the checkpoints of a sequence (bit for bit).
+  // back: the checkpoints of a sequence (bit for bit). kCubeA: the six
+  // faces stacked (render/cubemap.h).
   Image read_buffer(int buffer) const;
   void write_buffer(int buffer, const Image& img);
   // "Image iChannel2": channels a program samples with nothing bound (they
@@ -131,6 +135,7 @@ class PassGraph {
   void ensure_buffers(int w, int h);
   void bind_inputs(size_t pass, int w, int h, float channel_res[4][3]);
   void draw_buffer_pass(size_t pass, const FrameInputs& in, const FrameParams& p);
+  void draw_cube_pass(size_t pass, const FrameInputs& in, const FrameParams& p);  // Cube A's six faces
   void update_timed_inputs(const FrameInputs& in, const FrameParams& p);  // inputs that follow iTime (audio, video), once per frame
 
   std::vector<PassSource> passes_;

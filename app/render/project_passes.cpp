@@ -9,6 +9,7 @@
 #include "io/image_io.h"
 #include "io/input_file.h"
 #include "io/video_input.h"
+#include "render/cube_input.h"
 #include "shader/glslviewer.h"
 #include "shader/shadertoy.h"
 #include "shader/shadertoy_media.h"
@@ -101,13 +102,14 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
   std::map<std::string_view, std::shared_ptr<const Volume>> volumes;  // by hash: one upload per volume
   std::map<fs::path, std::shared_ptr<const AudioClip>> clips;  // a file used twice is decoded once
   std::map<std::tuple<fs::path, bool, bool>, std::shared_ptr<VideoStream>> videos;  // one decoder per file, vflip, sRGB
+  std::map<fs::path, std::shared_ptr<const CubeFaces>> cubes;  // a cubemap used twice is read once
   std::vector<PassSource> out;
   for (size_t i = 0; i < p.passes.size(); ++i) {
     const ProjectPass& pass = p.passes[i];
     PassSource ps;
     ps.name = pass.name;
     ps.uniforms = p.glslviewer ? PassUniforms::glslviewer : PassUniforms::shadertoy;
-    ps.output = pass.kind == PassKind::buffer ? pass.output : -1;
+    ps.output = pass.kind == PassKind::image ? -1 : pass.output;  // kCubeA for Cube A
     for (size_t c = 0; c < 4; ++c) {
       const ProjectInput& in = pass.inputs[c];
       const std::string where = pass.name + " " + (in.uniform.empty() ? "iChannel" + std::to_string(c) : in.uniform);
@@ -120,6 +122,9 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
         case InputKind::none:
         case InputKind::buffer:
         case InputKind::keyboard:
+          break;
+        case InputKind::cubemap:  // Cube A, six face files or one equirectangular image (render/cube_input.h)
+          if (in.buffer != kCubeA) g.cube = load_cube_input(in, s, where, origin, warnings, cubes);
           break;
         case InputKind::texture: {
           const ShadertoyMedia* known = find_shadertoy_media(in.src);

@@ -35,10 +35,16 @@ void check_project(const ShaderProject& p, const std::string& file) {
   if (p.passes.empty() || p.passes.back().kind != PassKind::image)
     fail_input("the shader has no Image pass", file, 0, {}, "a Shadertoy shader draws its picture in the Image pass");
   bool writes[4] = {false, false, false, false};
+  bool cube = false;
   for (size_t i = 0; i < p.passes.size(); ++i) {
     const ProjectPass& pass = p.passes[i];
     if (pass.kind == PassKind::image && i + 1 != p.passes.size())
       fail_input("the shader has more than one Image pass", file, 0, pass.name);
+    if (pass.kind == PassKind::cube) {
+      if (cube) fail_input("the shader has more than one Cube A pass", file, 0, pass.name, "Shadertoy has one, Cube A");
+      cube = true;
+      continue;
+    }
     if (pass.kind != PassKind::buffer) continue;
     if (pass.output < 0 || pass.output > 3)
       fail_input(pass.name + " writes no buffer A..D", file, 0, pass.name);
@@ -54,6 +60,9 @@ void check_project(const ShaderProject& p, const std::string& file) {
         fail_input(pass.name + " iChannel" + std::to_string(c) + " reads Buffer " +
                        (in.buffer >= 0 && in.buffer <= 3 ? buffer_letter(in.buffer) : "?") + ", which no pass writes",
                    file, 0, pass.name + ".iChannel" + std::to_string(c));
+      if (in.kind == InputKind::cubemap && in.buffer == kCubeA && !cube)
+        fail_input(pass.name + " iChannel" + std::to_string(c) + " reads Cube A, which no pass writes", file, 0,
+                   pass.name + ".iChannel" + std::to_string(c), "add the cubemap pass (type \"cubemap\", mainCubemap)");
     }
 }
 

@@ -26,10 +26,11 @@ struct Sampler {
 };
 
 // What a channel reads. Shadertoy's ctypes; the ones marchstudio does not
-// run (the live devices webcam and mic, and what docs/shadertoy.md#support
-// lists as not yet) are refused where the project is loaded, never bound
-// as black. Video is decoded through ffmpeg (io/video_input.h), music
-// through libsndfile (io/audio.h).
+// run (the live devices webcam and mic) are refused where the project is
+// loaded, never bound as black. Video is decoded through ffmpeg
+// (io/video_input.h), music through libsndfile (io/audio.h), a cubemap is
+// six face files or one equirectangular image (io/cube_faces.h) or the
+// Cube A pass (docs/shadertoy.md#cubemaps).
 enum class InputKind { none, buffer, texture, keyboard, cubemap, volume, music, musicstream, mic, video, webcam };
 
 const char* input_kind_name(InputKind k);
@@ -42,18 +43,23 @@ const char* glsl_sampler_type(ChannelType t);  // "sampler2D", "samplerCube", "s
 
 struct ProjectInput {
   InputKind kind = InputKind::none;
-  int buffer = -1;   // buffer: 0..3 for A..D
-  std::string src;   // texture, volume: as given ("/media/a/<hash>.png", or a path from a scene file)
+  int buffer = -1;   // buffer: 0..3 for A..D; cubemap: kCubeA when it reads the Cube A pass
+  std::string src;   // texture, volume, cubemap: as given ("/media/a/<hash>.png", or a path from a scene file)
   std::filesystem::path file;  // texture: the file found for src (load_media resolves it)
   Sampler sampler;
   std::string uniform;  // glslViewer: the sampler's own name (u_tex0, u_buffer1); empty: iChannelN
 };
 
-enum class PassKind { buffer, image };
+// cube: Shadertoy's Cube A, mainCubemap() into six faces, run after the
+// buffers and before the Image pass.
+enum class PassKind { buffer, cube, image };
+
+// The output of the Cube A pass, and a cubemap input's `buffer` reading it.
+inline constexpr int kCubeA = 4;
 
 struct ProjectPass {
   PassKind kind = PassKind::image;
-  int output = -1;               // buffer passes: the buffer written, 0..3 for A..D
+  int output = -1;               // buffer passes: the buffer written, 0..3 for A..D; kCubeA for Cube A
   std::string name;              // "Buffer A", "Image"
   std::string code;              // the GLSL, when it came inline (JSON)
   std::filesystem::path file;    // or the file it is in (a scene's [[passes]], a bare .glsl)
@@ -68,8 +74,8 @@ struct ShaderProject {
   std::string common;                // the Common tab, inline, or
   std::filesystem::path common_file; // in a file
   std::string common_where;          // its name in errors
-  // Buffer passes in the order Shadertoy runs them (A, B, C, D), then the
-  // Image pass, last.
+  // Buffer passes in the order Shadertoy runs them (A, B, C, D), then
+  // Cube A, then the Image pass, last.
   std::vector<ProjectPass> passes;
   bool glslviewer = false;           // a glslViewer file (shader/glslviewer.h): main(), gl_FragColor, u_* uniforms
   bool has_sound = false;            // a Sound pass was present and is not run (it never changes the image)
@@ -105,7 +111,8 @@ std::string buffer_letter(int buffer);
 
 // Checks what a loader built: exactly one Image pass and it is last, each
 // buffer written by at most one pass, buffer inputs naming a buffer some
-// pass writes. Throws bad_input naming `file` and the pass.
+// pass writes, at most one Cube A pass and cubemap inputs of Cube A only
+// with one. Throws bad_input naming `file` and the pass.
 void check_project(const ShaderProject& p, const std::string& file);
 
 }  // namespace ms

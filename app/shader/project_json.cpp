@@ -129,6 +129,13 @@ class Loader {
     return -1;
   }
 
+  // Cube A, by id (41, or the site's "4dX3Rr") or its previz file.
+  static bool is_cube_a(const json& id, const std::string& file) {
+    if ((id.is_number_integer() && id.get<int>() == 41) || (id.is_string() && (id == "4dX3Rr" || id == "41")))
+      return true;
+    return file.find("/media/previz/cubemap00.png") != std::string::npos;
+  }
+
   InputKind kind_of(const std::string& ctype, const std::string& path) const {
     static const std::map<std::string, InputKind> kinds = {
         {"buffer", InputKind::buffer},   {"texture", InputKind::texture},         {"keyboard", InputKind::keyboard},
@@ -190,6 +197,9 @@ class Loader {
       out.buffer = buffer_of(in.contains("id") ? in["id"] : json(), src);
       if (out.buffer < 0) fail(path, "a buffer input that names no buffer A..D", "its id is 257..260 (A..D)");
     }
+    if (out.kind == InputKind::cubemap && is_cube_a(in.contains("id") ? in["id"] : json(), src)) out.buffer = kCubeA;
+    if (out.kind == InputKind::cubemap && out.buffer != kCubeA && src.empty())
+      fail(path, "a cubemap input without a src", "its src names face 0 (/media/a/<hash>.jpg), or its id is Cube A's");
     if (out.kind == InputKind::texture && src.empty()) fail(path, "a texture input without a src");
     if (out.kind == InputKind::volume && src.empty()) fail(path, "a volume input without a src");
     out.sampler = sampler(in, out.kind, path);
@@ -220,7 +230,7 @@ class Loader {
       p.name = (*shader)["info"]["name"].get<std::string>();
     const json& passes = (*shader)["renderpass"];
     std::vector<ProjectPass> buffers;
-    bool have_image = false;
+    bool have_image = false, cube_seen = false;
     ProjectPass image;
     for (size_t i = 0; i < passes.size(); ++i) {
       const std::string path = prefix + "renderpass[" + std::to_string(i) + "]";
@@ -242,10 +252,7 @@ class Loader {
         p.has_sound = true;  // it never changes the image
         continue;
       }
-      if (type == "cubemap")
-        fail(path + ".type", "'" + pass.name + "' is a cubemap pass, which marchstudio does not run yet",
-             "Cube A passes come with cubemap inputs (docs/shadertoy.md)");
-      if (type != "image" && type != "buffer")
+      if (type != "image" && type != "buffer" && type != "cubemap")
         fail(path + ".type", "unknown pass type '" + type + "'", "image, buffer, common, sound or cubemap");
       if (rp.contains("inputs")) {
         if (!rp["inputs"].is_array()) fail(path + ".inputs", "'inputs' must be an array");
@@ -265,6 +272,16 @@ class Loader {
         have_image = true;
         continue;
       }
+      if (type == "cubemap") {  // Cube A: after the buffers, before the Image pass
+        pass.kind = PassKind::cube;
+        pass.output = kCubeA;
+        if (!rp.contains("name")) pass.name = "Cube A";
+        pass.where = file_ + " (" + pass.name + ")";
+        if (cube_seen) fail(path + ".type", "more than one cubemap pass", "Shadertoy has one, Cube A");
+        cube_seen = true;
+        buffers.push_back(std::move(pass));
+        continue;
+      }
       pass.kind = PassKind::buffer;
       const json out = rp.contains("outputs") && rp["outputs"].is_array() && !rp["outputs"].empty() &&
                                rp["outputs"][0].is_object() && rp["outputs"][0].contains("id")
@@ -280,7 +297,7 @@ class Loader {
       buffers.push_back(std::move(pass));
     }
     if (!have_image) fail(prefix + "renderpass", "the shader has no Image pass");
-    // Shadertoy runs the buffers A, B, C, D, then the Image, whatever the file's order.
+    // Shadertoy runs the buffers A, B, C, D, then Cube A, then the Image, whatever the file's order.
     std::stable_sort(buffers.begin(), buffers.end(),
                      [](const ProjectPass& a, const ProjectPass& b) { return a.output < b.output; });
     for (size_t i = 1; i < buffers.size(); ++i)

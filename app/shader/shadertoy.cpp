@@ -78,6 +78,26 @@ const char* buffer_main() {
          "}\n";
 }
 
+// The Cube A pass: one draw per face (render/cubemap.h), uCubeFace 0..5 in
+// GL's order +X, -X, +Y, -Y, +Z, -Z. rayDir goes through the pixel's centre
+// on the face of the cube [-1, 1]^3, as GL's cube map table (and
+// Shadertoy's corners) put it, so texture(cube, rayDir) reads this pixel;
+// rayOri is the origin. The whole vec4 into the RGBA16F face.
+const char* cube_main() {
+  return "#undef gl_FragCoord\n"
+         "uniform int uCubeFace;                   // marchstudio: the face drawn, 0..5\n"
+         "void main() {\n"
+         "  vec4 c = vec4(0.0, 0.0, 0.0, 1.0);\n"
+         "  msFragCoord = gl_FragCoord;\n"
+         "  vec2 q = 2.0 * gl_FragCoord.xy / iResolution.xy - 1.0;  // (sc, tc)\n"
+         "  vec3 d = uCubeFace == 0 ? vec3(1.0, -q.y, -q.x) : uCubeFace == 1 ? vec3(-1.0, -q.y, q.x)\n"
+         "         : uCubeFace == 2 ? vec3(q.x, 1.0, q.y)   : uCubeFace == 3 ? vec3(q.x, -1.0, -q.y)\n"
+         "         : uCubeFace == 4 ? vec3(q.x, -q.y, 1.0)  : vec3(-q.x, -q.y, -1.0);\n"
+         "  mainCubemap(c, gl_FragCoord.xy, vec3(0.0), normalize(d));\n"
+         "  outColor = c;\n"
+         "}\n";
+}
+
 fs::path absolute_normal(const fs::path& p) {
   std::error_code ec;
   return fs::absolute(p, ec).lexically_normal();
@@ -188,13 +208,19 @@ ShaderSource assemble_shadertoy_pass(const ShaderProject& p, size_t index, const
   const std::string where = add_tab(pass.code, pass.file, pass.where.empty() ? origin + " (" + pass.name + ")" : pass.where,
                                     pass.name, "marchstudio:pass", code);
   const fs::path dir = pass.file.empty() ? absolute_normal(p.origin).parent_path() : absolute_normal(pass.file).parent_path();
-  root += pass.kind == PassKind::image ? image_main() : buffer_main();
+  root += pass.kind == PassKind::image ? image_main() : pass.kind == PassKind::cube ? cube_main() : buffer_main();
 
   ShaderSource src = preprocess(root, where + " (shadertoy wrapper)", dir, popts);
   for (const fs::path& f : read)
     if (std::find(src.dependencies.begin(), src.dependencies.end(), f) == src.dependencies.end())
       src.dependencies.insert(src.dependencies.begin(), f);
   // mainImage may come from a file the pass includes, so look after expansion.
+  if (pass.kind == PassKind::cube) {
+    if (find_definition(strip_comments(src.text), "mainCubemap") == std::string_view::npos)
+      fail_input("no mainCubemap() found in the Cube A pass", where, 0, {},
+                 "define void mainCubemap(out vec4 fragColor, in vec2 fragCoord, in vec3 rayOri, in vec3 rayDir)");
+    return src;
+  }
   if (find_definition(strip_comments(src.text), "mainImage") == std::string_view::npos) {
     std::string hint = "define void mainImage(out vec4 fragColor, in vec2 fragCoord)";
     if (find_definition(strip_comments(code), "map", "vec2") != std::string_view::npos && !pass.file.empty()) {

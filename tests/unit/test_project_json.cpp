@@ -124,10 +124,46 @@ TEST(ProjectJson, BadInputNamesLineAndKey) {
   EXPECT_NE(error_of("{\"Shader\": {\"renderpass\": [{\"type\": \"buffer\", \"name\": \"Buffer A\"}]}}")
                 .find("no Image pass"),
             std::string::npos);
-  EXPECT_NE(error_of("{\"Shader\": {\"renderpass\": [{\"type\": \"cubemap\", \"name\": \"Cube A\"}, {\"type\": \"image\"}]}}")
-                .find("'Cube A' is a cubemap pass"),
+  EXPECT_NE(error_of("{\"Shader\": {\"renderpass\": [{\"type\": \"cubemap\"}, {\"type\": \"cubemap\"}, {\"type\": \"image\"}]}}")
+                .find("more than one cubemap pass"),
+            std::string::npos);
+  EXPECT_NE(error_of("{\"Shader\": {\"renderpass\": [{\"type\": \"image\", \"inputs\": [{\"ctype\": \"cubemap\", \"id\": 41, "
+                     "\"channel\": 0}]}]}}")
+                .find("Image iChannel0 reads Cube A, which no pass writes"),
+            std::string::npos);
+  EXPECT_NE(error_of("{\"Shader\": {\"renderpass\": [{\"type\": \"image\", \"inputs\": [{\"ctype\": \"cubemap\", \"id\": 9, "
+                     "\"channel\": 0}]}]}}")
+                .find("a cubemap input without a src"),
             std::string::npos);
   EXPECT_NE(error_of("{\"Error\": \"Shader not found\"}").find("an error from the Shadertoy API"), std::string::npos);
+}
+
+// Cube A (type "cubemap") runs after the buffers and before the Image pass
+// whatever the file's order; inputs name it by id 41, "4dX3Rr" or its
+// previz file, and a cubemap of files by its src.
+TEST(ProjectJson, CubeAPassAndCubemapInputs) {
+  const ShaderProject p = load_shadertoy_json(R"({"Shader": {"renderpass": [
+    {"type": "image", "code": "// i", "inputs": [
+      {"id": 41, "ctype": "cubemap", "channel": 0},
+      {"id": "4dX3Rr", "type": "cubemap", "channel": 1},
+      {"id": 5, "ctype": "cubemap", "channel": 2, "src": "/media/previz/cubemap00.png"},
+      {"id": 22, "ctype": "cubemap", "channel": 3, "src": "/media/a/sky.jpg"}]},
+    {"type": "cubemap", "code": "// c", "outputs": [{"id": 41, "channel": 0}]},
+    {"name": "Buffer A", "type": "buffer", "code": "// a", "outputs": [{"id": 257, "channel": 0}]}]}})",
+                                              "c.json");
+  ASSERT_EQ(p.passes.size(), 3u);
+  EXPECT_EQ(p.passes[0].name, "Buffer A");
+  EXPECT_EQ(p.passes[1].kind, PassKind::cube);
+  EXPECT_EQ(p.passes[1].name, "Cube A");
+  EXPECT_EQ(p.passes[1].output, kCubeA);
+  EXPECT_EQ(p.passes[1].code, "// c");
+  const auto& in = p.passes[2].inputs;
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(in[c].kind, InputKind::cubemap) << c;
+  EXPECT_EQ(in[0].buffer, kCubeA);
+  EXPECT_EQ(in[1].buffer, kCubeA);
+  EXPECT_EQ(in[2].buffer, kCubeA);
+  EXPECT_EQ(in[3].buffer, -1);
+  EXPECT_EQ(in[3].src, "/media/a/sky.jpg");
 }
 
 TEST(EsCompat, RenamesDesktopKeywordsOnlyAsWords) {
