@@ -16,6 +16,7 @@
 #include "gl/context.h"
 #include "io/sequence.h"
 #include "io/stored_pixels.h"
+#include "render/bloom.h"
 #include "render/program_cache.h"
 #include "render/still.h"
 #include "scene/animation.h"
@@ -42,6 +43,14 @@ struct Gl {
     if (!g) g = std::make_unique<PassGraph>(pc.passes, &cache);
     return *g;
   }
+  std::map<const PreparedCase*, std::unique_ptr<BloomStage>> blooms;
+  // The case's bloom stage, as render builds it; nullptr without bloom.
+  BloomStage* bloom(const PreparedCase& pc) {
+    if (pc.bloom.size() != 2) return nullptr;
+    std::unique_ptr<BloomStage>& b = blooms[&pc];
+    if (!b) b = std::make_unique<BloomStage>(pc.scene.bloom, program(pc.bloom[0]), program(pc.bloom[1]));
+    return b.get();
+  }
 };
 
 struct FrameSpec {
@@ -59,7 +68,7 @@ std::vector<FrameSpec> frames_of(const PreparedCase& pc) {
   return out;
 }
 
-StillFrame still_of(const PreparedCase& pc, const Scene& posed, const FrameSpec& f) {
+StillFrame still_of(Gl& gl, const PreparedCase& pc, const Scene& posed, const FrameSpec& f) {
   StillFrame s;
   s.in.scene = &posed;
   s.in.time = f.time;
@@ -69,6 +78,7 @@ StillFrame still_of(const PreparedCase& pc, const Scene& posed, const FrameSpec&
   s.fps = pc.spec->frames ? pc.spec->fps : pc.fps;  // a range's own fps, as `render --frames`
   s.params = pc.params;
   s.params.exposure = posed.render.exposure;  // keyframed exposure, as render poses it
+  s.params.bloom = gl.bloom(pc);
   return s;
 }
 
@@ -159,8 +169,8 @@ void check_time(Gl& gl, const Suite& suite, const PreparedCase& pc, const Prepar
   const auto cal_post = gl.program(cal.post), post = gl.program(pc.post);
   const Scene cal_posed = animated(cal.scene, frames_of(cal).front().time);
   const Scene posed = animated(pc.scene, frames_of(pc).front().time);
-  const StillFrame cal_sf = still_of(cal, cal_posed, frames_of(cal).front());
-  const StillFrame sf = still_of(pc, posed, frames_of(pc).front());
+  const StillFrame cal_sf = still_of(gl, cal, cal_posed, frames_of(cal).front());
+  const StillFrame sf = still_of(gl, pc, posed, frames_of(pc).front());
   std::vector<double> ratios, cal_all, case_all;
   for (int i = 0; i < b.rounds; ++i) {
     const double c = time_frames(gl, cal_graph, *cal_post, cal_sf, b.warmup, b.frames, cpu, cal_all);
@@ -205,7 +215,7 @@ void check_images(Gl& gl, const PreparedCase& pc, const RunOptions& opts, CaseRe
   const std::vector<FrameSpec> frames = frames_of(pc);
   for (const FrameSpec& f : frames) {
     const Scene posed = animated(pc.scene, f.time);
-    const StillFrame sf = still_of(pc, posed, f);
+    const StillFrame sf = still_of(gl, pc, posed, f);
     // A stateful shader's frames follow on: the first is a still (frames
     // 0..first replayed), the rest each one frame more, as a sequence.
     const Still still = &f == &frames.front() || !graph.stateful()
@@ -303,7 +313,9 @@ CaseResult run_case(Gl& gl, const Suite& suite, const PreparedCase& pc, const Pr
   if (c.cost) {
     const auto counting = gl.program(pc.counting), post = gl.program(pc.post);
     const FrameSpec f = frames_of(pc).front();
-    r.cost = count_frame_cost(gl.renderer, *counting, *post, animated(pc.scene, f.time), f.time, pc.params);
+    FrameParams fp = pc.params;
+    fp.bloom = gl.bloom(pc);  // its post pass adds bloom
+    r.cost = count_frame_cost(gl.renderer, *counting, *post, animated(pc.scene, f.time), f.time, fp);
     check_cost(*c.cost, *r.cost, r);
   }
   if (c.time_budget && cal) check_time(gl, suite, pc, *cal, r);

@@ -33,6 +33,7 @@ struct PreparedCase {
   double fps = 60.0;          // a stateful (multi-pass) shader's frame rate
   ShaderSource counting;      // the AOV build, when spec->cost
   FrameParams params;         // size, spp, exposure, fused_post
+  std::vector<ShaderSource> bloom;  // [extract, blur] when the case blooms (render/bloom.h), else empty
   ImageFormat format = ImageFormat::png;  // the reference's (what the render is stored as)
   float time = 0.0f;          // of a still
   std::optional<ErrorInfo> error;  // could not be prepared (bad input): reported, not run

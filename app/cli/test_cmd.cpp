@@ -93,9 +93,7 @@ PreparedCase prepare(const Suite& suite, const SuiteCase& c, const fs::path& sha
     AssembleOptions count_opts = opts;
     for (const auto& d : aov_defines()) count_opts.defines.push_back(d);
     pc.post = assemble_still(in, opts, fp.spp, false, display, fp.fused_post);
-    if (in.scene.bloom.enabled)  // bench/suite_run.cpp draws no bloom stage (docs/post.md)
-      fail_input("case '" + c.name + "': `test` does not draw [post.bloom] yet", suite.file.string(), c.line, "disable",
-                 "add disable = [\"bloom\"] to the case");
+    if (in.scene.bloom.enabled) pc.bloom = {assemble_bloom(false, opts), assemble_bloom(true, opts)};  // docs/post.md
     pc.passes = in.passes;
     pc.fps = in.scene.shadertoy.fps;
     if (c.cost) pc.counting = assemble_scene(in.scene, count_opts);
