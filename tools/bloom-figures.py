@@ -1,22 +1,22 @@
 #!/usr/bin/python3
 """Regenerates docs/post.md's measured figures and images.
 
-Renders tests/data/bloom/orbs.toml (the docs' demo: the seed scene with
-three glowing orbs and [post.bloom]) at 1280x720 through `render --verbose`,
-whose "render N ms" is the draw and read-back of the frame: without bloom
-(--disable bloom), with bloom at scale 0.3 (the scene's) and at scale 1.0
-(--set post.bloom.scale=1.0), each --runs times, in turn. The bloom passes'
-cost is the median with bloom minus the median without. The PSNR between
+Times tests/data/bloom/orbs.toml (the docs' demo: the seed scene with
+three glowing orbs and [post.bloom]) at 1280x720 with `bench --json`
+(--frames 10 after 2 warm-up frames; its wall-clock median per frame, the
+draw waited for): without bloom (--disable bloom), with bloom at scale 0.3
+(the scene's) and at scale 1.0 (--set post.bloom.scale=1.0), each --runs
+times, in turn. The bloom passes' cost is the median with bloom minus the
+median without. The images are `render`'s. The PSNR between
 the 0.3 and 1.0 images is `marchstudio compare`'s. GL_RENDERER is
 `bench --json`'s. Writes docs/images/post/orbs_plain.png and orbs_bloom.png
 (640x360) and the block between the bloom-figures markers in docs/post.md.
 
-Usage: /usr/bin/python3 tools/bloom-figures.py [--bin build/marchstudio] [--runs 7]
+Usage: /usr/bin/python3 tools/bloom-figures.py [--bin build/marchstudio] [--runs 5]
 """
 import argparse
 import json
 import os
-import platform
 import re
 import statistics
 import subprocess
@@ -36,12 +36,9 @@ def run(args):
     return r
 
 
-def render_ms(binary, out, extra):
-    r = run([binary, 'render', SCENE, '-o', out, '--size', '1280x720', '--verbose'] + extra)
-    m = re.search(r'render ([0-9.]+) ms', r.stderr)
-    if not m:
-        sys.exit('no render time in: ' + r.stderr)
-    return float(m.group(1))
+def frame_ms(binary, extra):
+    r = run([binary, 'bench', SCENE, '--size', '1280x720', '--frames', '10', '--warmup', '2', '--json'] + extra)
+    return json.loads(r.stdout)['frame_ms']['wall']['median']
 
 
 def machine(binary):
@@ -57,7 +54,7 @@ def machine(binary):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--bin', default=os.path.join(ROOT, 'build', 'marchstudio'))
-    ap.add_argument('--runs', type=int, default=7)
+    ap.add_argument('--runs', type=int, default=5)
     a = ap.parse_args()
     binary = os.path.abspath(a.bin)
     tmp = tempfile.mkdtemp(prefix='bloom-figures-')
@@ -65,8 +62,10 @@ def main():
     times = {k: [] for k in cases}
     for _ in range(a.runs):  # interleaved, so a slow moment of the machine hits every case
         for k, extra in cases.items():
-            times[k].append(render_ms(binary, os.path.join(tmp, k + '.png'), extra))
+            times[k].append(frame_ms(binary, extra))
     med = {k: statistics.median(v) for k, v in times.items()}
+    for k, extra in cases.items():
+        run([binary, 'render', SCENE, '-o', os.path.join(tmp, k + '.png'), '--size', '1280x720'] + extra)
     cmp = run([binary, 'compare', os.path.join(tmp, '1.0.png'), os.path.join(tmp, '0.3.png')])
     psnr = re.search(r'psnr\s+([0-9.]+|inf) dB', cmp.stdout).group(1)
     images = os.path.join(ROOT, 'docs', 'images', 'post')
@@ -74,14 +73,15 @@ def main():
     for name, extra in (('orbs_plain.png', ['--disable', 'bloom']), ('orbs_bloom.png', [])):
         run([binary, 'render', SCENE, '-o', os.path.join(images, name), '--size', '640x360'] + extra)
 
-    rows = ['| frame at 1280x720 | median `render` time | bloom passes |', '|---|---|---|',
+    rows = ['| frame at 1280x720 | median frame (`bench`, wall) | bloom adds |', '|---|---|---|',
             '| no bloom (`--disable bloom`) | %.0f ms | - |' % med['none']]
     for k in ('0.3', '1.0'):
         w, h = max(1, round(1280 * float(k))), max(1, round(720 * float(k)))
         rows.append('| bloom, scale %s (targets %dx%d) | %.0f ms | +%.0f ms |' % (k, w, h, med[k], med[k] - med['none']))
     block = '\n'.join([
         BEGIN,
-        'Measured by `/usr/bin/python3 tools/bloom-figures.py` (medians of %d runs each, interleaved) on %s:' %
+        'Measured by `/usr/bin/python3 tools/bloom-figures.py` (`bench --json` wall medians, the median of %d runs '
+        'each, interleaved) on %s:' %
         (a.runs, machine(binary)),
         '',
         *rows,

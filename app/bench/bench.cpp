@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "bench/clock.h"
 #include "core/error.h"
+#include "render/bloom.h"
 #include "render/frame.h"
 #include "render/gpu_timer.h"
 #include "render/uniforms.h"
@@ -120,6 +122,11 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   const std::string vs = fullscreen_vertex_source();
   PassGraph graph(passes);
   const Program post_prog(vs, post);
+  std::unique_ptr<BloomStage> bloom;  // render/bloom.h
+  if (s.bloom.size() == 2)
+    bloom = std::make_unique<BloomStage>(scene.bloom, std::make_shared<const Program>(vs, s.bloom[0]),
+                                         std::make_shared<const Program>(vs, s.bloom[1]));
+  fp.bloom = bloom.get();
   r.link_ms = ms_since(t0);
   FrameParams tiny = fp;
   tiny.width = tiny.height = 1;

@@ -29,6 +29,9 @@ struct BenchSettings {
   // The main program writes the image itself (FrameParams::fused_post):
   // assembled with fused_post_defines(), for spp 1. Reported as passes 1.
   bool fused_post = false;
+  // [extract, blur] (shader/assemble.h assemble_bloom): the timed frames run
+  // the scene's [post.bloom] stage, with a post pass assembled with bloom.
+  std::vector<ShaderSource> bloom;
 };
 
 // The deterministic cost of one frame at spp 1, from the AOV counters.

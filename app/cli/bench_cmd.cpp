@@ -9,6 +9,7 @@
 
 #include "bench/bench.h"
 #include "bench/bench_report.h"
+#include "cli/bloom_setup.h"
 #include "cli/flag_checks.h"
 #include "cli/input.h"
 #include "cli/shader_dir.h"
@@ -80,7 +81,8 @@ int run_bench_command(const BenchArgs& a) {
   count_opts.defines = aov_defines();
   const std::optional<ShaderSource> counting =
       in.shadertoy ? std::nullopt : std::optional<ShaderSource>(assemble_scene(in.scene, count_opts));
-  const ShaderSource post = assemble_post(in.scene.render.tonemap, !in.shadertoy, opts, in.shadertoy);
+  const bool bloom = bloom_on(in, true);  // timed as a PNG render draws it (docs/post.md)
+  const ShaderSource post = assemble_post(in.scene.render.tonemap, !in.shadertoy, opts, in.shadertoy, bloom);
 
   BenchSettings s;
   s.width = in.scene.render.width;
@@ -96,8 +98,8 @@ int run_bench_command(const BenchArgs& a) {
   s.warmup = a.warmup;
   s.time = in.scene.render.time;
   // Timed frames as render draws them: one pass at spp 1 (PNG output).
-  in.scene.bloom.enabled = false;  // bench times the scene's passes; not the bloom passes (docs/post.md)
   s.fused_post = fuse_post(in, s.spp, false, true, opts);
+  if (bloom) s.bloom = {assemble_bloom(false, opts), assemble_bloom(true, opts)};
   assemble_input(in, opts);
   report_input_warnings(in.warnings, a.input, a.strict);
 
