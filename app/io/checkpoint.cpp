@@ -14,10 +14,29 @@ const char* kComponents[] = {"R", "G", "B", "A"};
 
 std::string letter(int buffer) { return std::string(1, static_cast<char>('A' + buffer)); }
 
+constexpr int kCube = 4;  // shader/project.h's kCubeA: Shadertoy's Cube A, six faces stacked
+
 }  // namespace
 
+fs::path cube_checkpoint_path(const fs::path& state) {
+  std::string name = state.filename().string();
+  const std::string tail = ".state.exr";
+  if (name.size() >= tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0)
+    name.resize(name.size() - tail.size());
+  return state.parent_path() / (name + ".cube.state.exr");
+}
+
+void remove_checkpoint(const fs::path& state) {
+  std::error_code ec;
+  fs::remove(state, ec);  // the marker first: a lone cube file is never read
+  fs::remove(cube_checkpoint_path(state), ec);
+}
+
 fs::path checkpoint_path(const fs::path& frame, const std::string& key) {
-  return frame.parent_path() / ("." + frame.filename().string() + "." + key + ".state.exr");
+  std::string name = ".";  // appended, not "." + name: GCC 12's false -Wrestrict
+  name += frame.filename().string();
+  name += "." + key + ".state.exr";
+  return frame.parent_path() / name;
 }
 
 std::string state_key(const std::string& text) {
@@ -28,9 +47,21 @@ std::string state_key(const std::string& text) {
   return buf;
 }
 
-void write_checkpoint(const fs::path& path, const BufferState& state) {
-  if (state.empty()) return;
+void write_checkpoint(const fs::path& path, const BufferState& all_state) {
+  if (all_state.empty()) return;
+  // Cube A beside, written first: the main file marks a complete checkpoint.
+  BufferState state;
+  for (const auto& entry : all_state)
+    if (entry.first == kCube) write_image(entry.second, cube_checkpoint_path(path), {{"Software", "marchstudio 0.1.0 sequence state"}});
+    else state.push_back(entry);
   Image all;
+  if (state.empty()) {  // Cube A alone: a one-pixel marker
+    all.width = all.height = 1;
+    all.channels = {"Cube"};
+    all.pixels = {0.0f};
+    write_image(all, path, {{"Software", "marchstudio 0.1.0 sequence state"}});
+    return;
+  }
   all.width = state.front().second.width;
   all.height = state.front().second.height;
   for (const auto& [b, img] : state)
@@ -43,16 +74,25 @@ void write_checkpoint(const fs::path& path, const BufferState& state) {
   write_image(all, path, {{"Software", "marchstudio 0.1.0 sequence state"}});
 }
 
-BufferState read_checkpoint(const fs::path& path, const std::vector<int>& buffers, int width, int height) {
+BufferState read_checkpoint(const fs::path& path, const std::vector<int>& all_buffers, int width, int height) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) return {};
-  Image all;
+  std::vector<int> buffers;
+  for (int b : all_buffers)
+    if (b != kCube) buffers.push_back(b);
+  Image all, cube;
   try {
     all = read_image(path);
+    if (buffers.size() != all_buffers.size()) cube = read_image(cube_checkpoint_path(path));
   } catch (const Error&) {
     return {};  // unreadable: not a state to resume from
   }
-  if (all.width != width || all.height != height || all.nchannels() != 4 * static_cast<int>(buffers.size())) return {};
+  const bool marker = buffers.empty() && all.nchannels() == 1 && all.channels[0] == "Cube";
+  if (!marker && (all.width != width || all.height != height || all.nchannels() != 4 * static_cast<int>(buffers.size())))
+    return {};
+  const bool with_cube = buffers.size() != all_buffers.size();
+  if (with_cube && (cube.channels != std::vector<std::string>{"R", "G", "B", "A"} || cube.height != 6 * cube.width))
+    return {};
   BufferState out;
   const size_t n = static_cast<size_t>(width) * height, nc = all.channels.size();
   for (size_t k = 0; k < buffers.size(); ++k) {
@@ -76,18 +116,22 @@ BufferState read_checkpoint(const fs::path& path, const std::vector<int>& buffer
     }
     out.emplace_back(buffers[k], std::move(img));
   }
+  if (with_cube) out.emplace_back(kCube, std::move(cube));
   return out;
 }
 
 void remove_checkpoints(const fs::path& frame, const fs::path& keep) {
   const fs::path dir = frame.parent_path().empty() ? fs::path(".") : frame.parent_path();
-  const std::string prefix = "." + frame.filename().string() + ".";
+  std::string prefix = ".";  // appended, not "." + name: GCC 12's false -Wrestrict
+  prefix += frame.filename().string();
+  prefix += ".";
   std::error_code ec;
   std::vector<fs::path> old;
   for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
     const std::string name = e.path().filename().string();
     if (name.rfind(prefix, 0) == 0 && name.size() > prefix.size() + 10 &&
-        name.compare(name.size() - 10, 10, ".state.exr") == 0 && e.path().filename() != keep.filename())
+        name.compare(name.size() - 10, 10, ".state.exr") == 0 && e.path().filename() != keep.filename() &&
+        (keep.empty() || e.path().filename() != cube_checkpoint_path(keep).filename()))
       old.push_back(e.path());
   }
   for (const fs::path& p : old) fs::remove(p, ec);

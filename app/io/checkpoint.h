@@ -6,6 +6,12 @@
 //   write_checkpoint(checkpoint_path(frame_path, key), {{0, a}, {2, c}});
 //   auto state = read_checkpoint(path);   // empty when missing or unreadable
 //
+// Shadertoy's Cube A (index 4, shader/project.h's kCubeA; six faces stacked,
+// not the image's size) goes in a second file beside it,
+// ".<frame file name>.<key>.cube.state.exr", written before the main file,
+// which marks the checkpoint complete; with Cube A alone the main file is a
+// one-pixel marker.
+//
 // `key` says what made the state (the passes' sources, size, fps, mouse): a
 // checkpoint of another shader or size has another name and is never read.
 #pragma once
@@ -19,7 +25,7 @@
 
 namespace ms {
 
-using BufferState = std::vector<std::pair<int, Image>>;  // buffer index (0..3 for A..D), its RGBA pixels
+using BufferState = std::vector<std::pair<int, Image>>;  // buffer index (0..3 for A..D, 4 Cube A), its RGBA pixels
 
 // ".<frame file name>.<key>.state.exr" beside the frame.
 std::filesystem::path checkpoint_path(const std::filesystem::path& frame, const std::string& key);
@@ -33,7 +39,12 @@ void write_checkpoint(const std::filesystem::path& path, const BufferState& stat
 // missing or does not hold exactly `buffers` at that size.
 BufferState read_checkpoint(const std::filesystem::path& path, const std::vector<int>& buffers, int width, int height);
 
-// Removes the checkpoints of `frame` whatever their key, but `keep`.
+// The Cube A file that goes with the checkpoint `state`.
+std::filesystem::path cube_checkpoint_path(const std::filesystem::path& state);
+// Removes one checkpoint, its Cube A file included.
+void remove_checkpoint(const std::filesystem::path& state);
+
+// Removes the checkpoints of `frame` whatever their key, but `keep` (and its Cube A file).
 void remove_checkpoints(const std::filesystem::path& frame, const std::filesystem::path& keep = {});
 
 }  // namespace ms

@@ -18,8 +18,7 @@ FrameWriter::FrameWriter(std::size_t capacity, DoneFn done, WriteFn write, int t
         write_image(j.image, j.path, j.meta);
         if (j.state.empty()) return;
         write_checkpoint(j.state_path, j.state);  // only after its frame: a checkpoint means the frame is there
-        std::error_code ec;
-        if (!j.drop.empty()) std::filesystem::remove(j.drop, ec);
+        if (!j.drop.empty()) remove_checkpoint(j.drop);  // with its Cube A file
       })) {
   for (int i = 0; i < std::max(threads, 1); ++i) threads_.emplace_back([this] { run(); });
 }

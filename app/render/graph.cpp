@@ -180,6 +180,7 @@ std::vector<int> PassGraph::buffers() const {
   std::vector<int> out;
   for (int b = 0; b < 4; ++b)
     if (gpu_->used[b]) out.push_back(b);
+  if (gpu_->cube_a) out.push_back(kCubeA);
   return out;
 }
 
@@ -214,10 +215,15 @@ void PassGraph::ensure_buffers(int w, int h) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   g.width = w;
   g.height = h;
-  reset();
+  clear_buffers();  // not Cube A: its faces do not follow the image's size (as Shadertoy)
 }
 
 void PassGraph::reset() {
+  clear_buffers();
+  if (gpu_->cube_a) gpu_->cube_a->clear();
+}
+
+void PassGraph::clear_buffers() {
   Gpu& g = *gpu_;
   const float zero[4] = {0, 0, 0, 0};
   for (int b = 0; b < 4; ++b) {
@@ -233,7 +239,6 @@ void PassGraph::reset() {
     g.buffers[b].latest = 0;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  if (g.cube_a) g.cube_a->clear();
 }
 
 void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {

@@ -113,9 +113,9 @@ class PassGraph {
   const std::string& name(size_t pass) const { return passes_[pass].name; }
   const Program& program(size_t pass) const { return *programs_[pass]; }
   bool stateful() const { return passes_.size() > 1; }
-  // The buffers some pass writes (0..3), ascending.
+  // The buffers some pass writes (0..3), ascending, then kCubeA for a Cube A pass.
   std::vector<int> buffers() const;
-  bool has_cube_pass() const;  // Cube A (its state is read_buffer(kCubeA))
+  bool has_cube_pass() const;
   // A buffer's contents as they stand (RGBA float, GL's row order), and
   // back: the checkpoints of a sequence (bit for bit). kCubeA: the six
   // faces stacked (render/cubemap.h).
@@ -133,6 +133,7 @@ class PassGraph {
   struct Buffer;
   struct Gpu;
   void ensure_buffers(int w, int h);
+  void clear_buffers();  // the 2D buffers to 0 (reset() clears Cube A too)
   void bind_inputs(size_t pass, int w, int h, float channel_res[4][3]);
   void draw_buffer_pass(size_t pass, const FrameInputs& in, const FrameParams& p);
   void draw_cube_pass(size_t pass, const FrameInputs& in, const FrameParams& p);  // Cube A's six faces

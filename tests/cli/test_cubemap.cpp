@@ -242,6 +242,59 @@ TEST(Cubemap, CubeAReadOrderIsShadertoys) {
   EXPECT_EQ(img.at(1, 0, 0), 1024.0f);
 }
 
+// Cube A counts frames on itself; Buffer A too, each in its own way.
+std::string counting_json(bool with_buffer) {
+  const std::string cube =
+      "void mainCubemap(out vec4 o, in vec2 f, in vec3 ro, in vec3 rd) { o = texture(iChannel0, rd) + vec4(1.0, 0.5, 0.25, 0.0); }";
+  const std::string buf = "void mainImage(out vec4 o, in vec2 f) { o = texelFetch(iChannel0, ivec2(f), 0) * 0.5 + 1.0; }";
+  const std::string image =
+      "void mainImage(out vec4 o, in vec2 f) { vec3 d = vec3(f.x - 2.0, 1.0, f.y - 1.5);\n"
+      "  o = vec4(texture(iChannel0, d).xy, texelFetch(iChannel1, ivec2(f), 0).x, 1.0); }";
+  std::vector<std::string> passes = {pass("Cube A", "cubemap", "41", cube, cube_a_input(0))};
+  if (with_buffer) passes.push_back(pass("Buffer A", "buffer", "257", buf, "{\"id\": 257, \"ctype\": \"buffer\", \"channel\": 0}"));
+  passes.push_back(pass("Image", "image", "", image,
+                        cube_a_input(0) + (with_buffer ? ", {\"id\": 257, \"ctype\": \"buffer\", \"channel\": 1}" : "")));
+  return shader(passes);
+}
+
+TEST(Cubemap, SequencesCheckpointCubeAAndResumeBitForBit) {
+  for (const bool with_buffer : {true, false}) {
+    TempDir whole, parts;
+    write_file(whole / "s.json", counting_json(with_buffer));
+    write_file(parts / "s.json", counting_json(with_buffer));
+    const std::vector<std::string> args = {"render", "s.json", "--size", "4x3", "--fps", "10", "-o", "f_%d.exr"};
+    const auto frames = [&](const std::string& range) {
+      std::vector<std::string> a = args;
+      a.insert(a.begin() + 2, {"--frames", range});
+      return a;
+    };
+    RunResult r = run_marchstudio(frames("0..3"), whole.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // Frames 0..1, then 0..3: the second run resumes after frame 1 from its checkpoint.
+    r = run_marchstudio(frames("0..1"), parts.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::vector<std::string> names = parts.entries();
+    int cube_files = 0, states = 0;
+    for (const std::string& n : names) {
+      cube_files += n.size() > 15 && n.compare(n.size() - 15, 15, ".cube.state.exr") == 0;
+      states += n.size() > 10 && n.compare(n.size() - 10, 10, ".state.exr") == 0;
+    }
+    EXPECT_EQ(cube_files, 1) << "only the last frame's Cube A state is kept";
+    EXPECT_EQ(states, 2);
+    r = run_marchstudio(frames("0..3"), parts.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("resuming after frame 1 from its checkpoint"), std::string::npos) << r.err;
+    for (int f = 0; f <= 3; ++f) {
+      const std::string name = "f_" + std::to_string(f) + ".exr";
+      EXPECT_EQ(read_image(whole / name).pixels, read_image(parts / name).pixels) << name << " buffer " << with_buffer;
+    }
+    const Image last = read_image(parts / "f_3.exr");
+    EXPECT_EQ(last.at(1, 1, 0), 4.0f);  // four frames counted on Cube A
+    EXPECT_EQ(last.at(1, 1, 1), 2.0f);
+    if (with_buffer) EXPECT_EQ(last.at(1, 1, 2), 1.875f);  // x -> x / 2 + 1, four times from 0
+  }
+}
+
 // The nearest axis of a unit direction, 0..5 as the faces.
 int nearest_axis(double x, double y, double z) {
   const double ax = std::abs(x), ay = std::abs(y), az = std::abs(z);
