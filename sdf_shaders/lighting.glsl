@@ -91,7 +91,11 @@ vec3 sceneLight(int i, Surface s, vec3 p, vec3 n, vec3 v, float offset) {
 // specialized shader with one light calls it directly, with no loop; more
 // lights share one loop, so the shadow march is compiled once.
 vec3 shadeBlinnPhong(Surface s, vec3 p, vec3 n, vec3 v, float ao, float offset) {
+#if ENV_MAP
+  vec3 col = envIrradiance(n) * s.ka * s.albedo * ao;  // the map's diffuse light instead of Ia
+#else
   vec3 col = uAmbient * s.ka * s.albedo * ao;
+#endif
 #if SPECIALIZED && NUM_LIGHTS == 1
   col += sceneLight(0, s, p, n, v, offset);
 #elif NUM_LIGHTS > 0

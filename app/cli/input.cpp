@@ -9,6 +9,7 @@
 
 #include "cli/bloom_setup.h"
 #include "cli/flag_checks.h"
+#include "render/environment.h"
 #include "render/project_passes.h"
 #include "core/error.h"
 #include "gl/context.h"
@@ -115,6 +116,7 @@ void assemble_input(LoadedInput& in, const AssembleOptions& opts) {
     scene_pass.name = in.scene.name;
     scene_pass.source = assemble_scene(in.scene, opts);
     scene_pass.uniforms = PassUniforms::scene;
+    attach_environment(in.scene, scene_pass);  // [sky] environment: the map and its irradiance
     in.passes.push_back(std::move(scene_pass));
     return;
   }

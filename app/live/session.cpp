@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/error.h"
+#include "render/environment.h"
 #include "render/project_passes.h"
 #include "scene/quality.h"
 #include "shader/shadertoy.h"
@@ -71,6 +72,7 @@ ReloadResult Session::reload(bool from_disk) {
       PassSource pass;
       pass.name = scene_.name;
       pass.source = assemble_scene(scene_, opts);
+      attach_environment(scene_, pass);  // [sky] environment (render/environment.h)
       passes.push_back(std::move(pass));
     }
     deps_.clear();  // preprocessing worked: these are the files now

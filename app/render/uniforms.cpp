@@ -39,6 +39,15 @@ void set_scene_uniforms(const Program& p, const Scene& s, int width, int height,
   set3(p, "uSkyHorizon", s.sky.horizon);
   set3(p, "uSkyZenith", s.sky.zenith);
   set3(p, "uAmbient", s.sky.ambient);
+  if (!s.sky.environment.empty()) {  // ENV_MAP (render/environment.h): the map turned by -rotation into world
+    const float a = radians(s.sky.rotation);
+    const glm::mat3 rot(std::cos(a), 0.0f, std::sin(a), 0.0f, 1.0f, 0.0f, -std::sin(a), 0.0f, std::cos(a));
+    glUniformMatrix3fv(p.loc("uEnvRotation"), 1, GL_FALSE, glm::value_ptr(rot));
+    set1(p, "uEnvIntensity", s.sky.intensity);
+    std::array<glm::vec3, 9> sh = s.sky.irradiance;
+    for (glm::vec3& c : sh) c *= s.sky.intensity;
+    glUniform3fv(p.loc("uEnvSH[0]"), 9, glm::value_ptr(sh[0]));
+  }
 
   // A specialized shader may have folded some of these into constants (the
   // same values: glsl_light); glUniform* ignores their -1 locations.

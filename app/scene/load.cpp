@@ -61,6 +61,8 @@ const Field<Sky> kSkyFields[] = {
     {"horizon", &Sky::horizon, kNonNeg},
     {"zenith", &Sky::zenith, kNonNeg},
     {"ambient", &Sky::ambient, kNonNeg},
+    {"rotation", &Sky::rotation, Range::closed(-360.0, 360.0)},
+    {"intensity", &Sky::intensity, kNonNeg},
 };
 const Field<Light> kLightFields[] = {
     {"position", &Light::position},
@@ -97,7 +99,7 @@ struct Schema {
       {"scene", false, {"name", "map", "shadertoy"}},
       {"camera", false, keys_of(kCameraFields)},
       {"render", false, keys_of(kRenderFields, {"tonemap"})},
-      {"sky", false, keys_of(kSkyFields)},
+      {"sky", false, keys_of(kSkyFields, {"environment"})},
       {"quality", false, keys_of(kQualityFields, {"preset"})},
       {"lights", true, keys_of(kLightFields, {"type"})},
       {"materials", true, keys_of(kMaterialFields, {"name", "pattern"})},
@@ -291,6 +293,32 @@ fs::path resolve_glsl(const Reader& r, const toml::table& t, const fs::path& dis
   return resolved;
 }
 
+// [sky] environment: an .exr or .hdr file next to the scene; rotation and
+// intensity only mean something with one.
+void read_environment(const Reader& r, const toml::table& t, const fs::path& display_path, Sky& sky) {
+  if (!t.contains("environment")) {
+    for (const char* key : {"rotation", "intensity"})
+      if (t.contains(key))
+        r.fail(Reader::line_of(t, key), std::string("sky.") + key, std::string("sky.") + key + " has no effect without sky.environment",
+               "set environment = \"sky.exr\" (an equirectangular EXR or HDR), or drop the key");
+    return;
+  }
+  std::string file;
+  r.read(t, "sky", "environment", file);
+  const int line = Reader::line_of(t, "environment");
+  if (file.empty()) r.fail(line, "sky.environment", "'sky.environment' must not be empty");
+  const fs::path resolved = (display_path.parent_path() / fs::path(file)).lexically_normal();
+  std::string ext = resolved.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".exr" && ext != ".hdr")
+    r.fail(line, "sky.environment", "environment " + quote(resolved.string()) + " is not an .exr or .hdr file",
+           "an equirectangular high-dynamic-range image");
+  if (const std::string why = input_file_problem(resolved); !why.empty())
+    r.fail(line, "sky.environment", "environment file " + quote(resolved.string()) + " " + why,
+           why == "not found" ? "'sky.environment' is relative to the scene file" : "");
+  sky.environment = resolved;
+}
+
 // Exactly one of scene.map (an SDF scene) and scene.shadertoy (a Shadertoy
 // shader given size, time and spp by this file).
 void resolve_sources(const Reader& r, const toml::table* t, const fs::path& display_path, Scene& scene) {
@@ -356,7 +384,8 @@ Scene read_scene(const Reader& r, const toml::table& root, const fs::path& displ
   check_camera(r, camera, scene.camera);
   if (const toml::table* t = read_section(r, schema, root, "render", kRenderFields, scene.render))
     r.read_enum(*t, "render", "tonemap", kTonemaps, scene.render.tonemap);
-  read_section(r, schema, root, "sky", kSkyFields, scene.sky);
+  if (const toml::table* sky = read_section(r, schema, root, "sky", kSkyFields, scene.sky))
+    read_environment(r, *sky, display_path, scene.sky);
   read_quality(r, schema, root, scene.quality);
 
   const auto lights = r.tables(root, {}, "lights");

@@ -2,6 +2,7 @@
 // sensible defaults. Loaded by scene/load.h; read by shader/ and render/.
 // No GL here.
 #pragma once
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -119,6 +120,15 @@ struct Sky {
   glm::vec3 horizon{0.70f, 0.80f, 0.95f};
   glm::vec3 zenith{0.25f, 0.45f, 0.85f};
   glm::vec3 ambient{0.15f, 0.17f, 0.20f};  // Ia, ambient light
+  // [sky] environment: an equirectangular EXR or HDR seen where rays escape
+  // and lighting the ambient term by its diffuse irradiance instead of the
+  // gradient and `ambient` (render/environment.h). Empty: the gradient.
+  std::filesystem::path environment;
+  float rotation = 0.0f;   // degrees about +y
+  float intensity = 1.0f;  // scales the map (and so its irradiance)
+  // The map's irradiance as 9 spherical-harmonic coefficients, E(n) / pi;
+  // computed when the map is loaded (render/environment.h), not read.
+  std::array<glm::vec3, 9> irradiance{};
 };
 
 enum class Interpolation { linear, smooth };

@@ -1,0 +1,122 @@
+#include "render/environment.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/hash.h"
+#include "io/atomic_file.h"
+#include "io/image_io.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The real SH basis to band 2, in the order the shader evaluates it.
+std::array<double, 9> sh_basis(glm::dvec3 d) {
+  return {0.282095,
+          0.488603 * d.y,
+          0.488603 * d.z,
+          0.488603 * d.x,
+          1.092548 * d.x * d.y,
+          1.092548 * d.y * d.z,
+          0.315392 * (3.0 * d.z * d.z - 1.0),
+          1.092548 * d.x * d.z,
+          0.546274 * (d.x * d.x - d.y * d.y)};
+}
+
+// The cosine lobe's band weights A_l / pi (Ramamoorthi and Hanrahan): E/pi.
+constexpr double kBandWeight[9] = {1.0, 2.0 / 3, 2.0 / 3, 2.0 / 3, 0.25, 0.25, 0.25, 0.25, 0.25};
+
+bool read_cache(const fs::path& f, IrradianceSh& sh) {
+  std::ifstream in(f);
+  for (glm::vec3& c : sh)
+    if (!(in >> c.x >> c.y >> c.z) || !std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) return false;
+  return true;
+}
+
+void write_cache(const fs::path& f, const IrradianceSh& sh) {
+  std::ostringstream out;
+  out.precision(9);
+  for (const glm::vec3& c : sh) out << c.x << ' ' << c.y << ' ' << c.z << '\n';
+  try {
+    std::error_code ec;
+    fs::create_directories(f.parent_path(), ec);
+    write_file_atomic(f, out.str());
+  } catch (const Error&) {
+    // A cache that cannot be written costs the next run a few milliseconds, nothing more.
+  }
+}
+
+}  // namespace
+
+glm::vec3 equirect_direction(double x, double y, int w, int h) {
+  const double phi = (x / w - 0.5) * 2.0 * kPi, theta = y / h * kPi;
+  return glm::vec3(glm::dvec3(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi)));
+}
+
+IrradianceSh irradiance_sh(const Image& m) {
+  std::array<glm::dvec3, 9> acc{};
+  const int nc = m.nchannels();
+  for (int y = 0; y < m.height; ++y) {
+    // Each pixel's solid angle: (2 pi / w) (pi / h) sin(theta) at its centre.
+    const double theta = (y + 0.5) / m.height * kPi;
+    const double dw = (2.0 * kPi / m.width) * (kPi / m.height) * std::sin(theta);
+    for (int x = 0; x < m.width; ++x) {
+      const glm::dvec3 d(equirect_direction(x + 0.5, y + 0.5, m.width, m.height));
+      const glm::dvec3 L(m.at(x, y, 0), m.at(x, y, nc > 1 ? 1 : 0), m.at(x, y, nc > 2 ? 2 : 0));
+      const std::array<double, 9> b = sh_basis(d);
+      for (int i = 0; i < 9; ++i) acc[i] += L * (b[i] * dw);
+    }
+  }
+  IrradianceSh out;
+  for (int i = 0; i < 9; ++i) out[i] = glm::vec3(acc[i] * kBandWeight[i]);
+  return out;
+}
+
+glm::vec3 eval_irradiance(const IrradianceSh& sh, glm::vec3 n) {
+  const std::array<double, 9> b = sh_basis(glm::dvec3(n));
+  glm::dvec3 e(0.0);
+  for (int i = 0; i < 9; ++i) e += glm::dvec3(sh[i]) * b[i];
+  return glm::vec3(e);
+}
+
+fs::path irradiance_cache_path(const std::string& content_hash) {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  const char* home = std::getenv("HOME");
+  const fs::path base = xdg && *xdg ? fs::path(xdg) : home && *home ? fs::path(home) / ".cache" : fs::temp_directory_path();
+  return base / "marchstudio" / "irradiance" / (content_hash + ".txt");
+}
+
+void attach_environment(Scene& scene, PassSource& pass, bool* from_cache) {
+  if (scene.sky.environment.empty()) return;
+  const fs::path& file = scene.sky.environment;
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto img = std::make_shared<Image>(read_image(file));  // bad_input naming the file
+  if (img->width < 2 || img->height < 1)
+    fail_input("environment " + file.string() + " is " + std::to_string(img->width) + "x" + std::to_string(img->height),
+               scene.file.string(), 0, "sky.environment", "an equirectangular image, twice as wide as high");
+  const fs::path cache = irradiance_cache_path(Hash128().add(bytes).hex());
+  const bool cached = read_cache(cache, scene.sky.irradiance);
+  if (!cached) {
+    scene.sky.irradiance = irradiance_sh(*img);
+    write_cache(cache, scene.sky.irradiance);
+  }
+  if (from_cache) *from_cache = cached;
+  GraphInput& g = pass.inputs[0];
+  g.kind = InputKind::texture;
+  g.image = std::move(img);
+  g.eight_bit = false;
+  g.uniform = "uEnvMap";
+  g.sampler = {TexFilter::linear, TexWrap::repeat, false, false};  // row 0 (up) at v = 0, as sky.glsl reads it
+}
+
+}  // namespace ms
