@@ -16,8 +16,8 @@ namespace {
 constexpr std::string_view kSettingsKeys[] = {"common", "media_dir", "missing_media", "mouse", "fps"};
 constexpr std::string_view kPassKeys[] = {"type", "buffer", "file", "name", "iChannel0", "iChannel1", "iChannel2",
                                           "iChannel3"};
-constexpr std::string_view kChannelKeys[] = {"buffer", "texture", "keyboard", "filter", "wrap", "vflip", "srgb"};
-constexpr std::string_view kPassTypes[] = {"buffer", "image"};
+constexpr std::string_view kChannelKeys[] = {"buffer", "texture", "cubemap", "keyboard", "filter", "wrap", "vflip", "srgb"};
+constexpr std::string_view kPassTypes[] = {"buffer", "image", "cubemap"};
 constexpr std::string_view kFilters[] = {"nearest", "linear", "mipmap"};
 constexpr std::string_view kWraps[] = {"clamp", "repeat"};
 constexpr std::string_view kMissing[] = {"error", "noise", "black"};
@@ -65,6 +65,17 @@ ProjectInput read_channel(const Reader& r, const toml::table& ch, const std::str
              why == "not found" ? "relative to the scene file; --missing-media noise|black stands in for it" : "");
     ++kinds;
   }
+  if (ch.contains("cubemap")) {  // "A": the Cube A pass; else face 0's file or one equirectangular .exr/.hdr
+    in.kind = InputKind::cubemap;
+    r.read(ch, path, "cubemap", in.src);
+    if (in.src == "A") in.buffer = kCubeA;
+    else if (const fs::path f = relative_to(scene_file, in.src); input_file_problem(f).empty()) in.file = f;
+    else if (settings.missing_media == MissingMedia::error || input_file_problem(f) != "not found")
+      r.fail(Reader::line_of(ch, "cubemap"), join_key(path, "cubemap"),
+             "cubemap " + quote(f.string()) + " " + input_file_problem(f),
+             "relative to the scene file; \"A\" reads the Cube A pass; --missing-media noise|black stands in for it");
+    ++kinds;
+  }
   if (ch.contains("keyboard")) {
     bool on = false;
     r.read(ch, path, "keyboard", Range::any(), on);
@@ -73,7 +84,7 @@ ProjectInput read_channel(const Reader& r, const toml::table& ch, const std::str
     ++kinds;
   }
   if (kinds != 1)
-    r.fail(Reader::line_of(ch), path, quote(path) + " needs exactly one of buffer, texture or keyboard",
+    r.fail(Reader::line_of(ch), path, quote(path) + " needs exactly one of buffer, texture, cubemap or keyboard",
            "e.g. " + path + " = { buffer = \"A\" }");
   if (ch.contains("filter")) {
     std::size_t f = 0;
@@ -149,8 +160,12 @@ std::shared_ptr<const ShaderProject> read_passes(const Reader& r, const toml::ta
     if (!t.contains("type"))
       r.fail(Reader::line_of(t), path, "missing required key " + quote(path + ".type"), "type = \"buffer\" or \"image\"");
     r.read_enum(t, path, "type", kPassTypes, type);
-    pass.kind = type == 0 ? PassKind::buffer : PassKind::image;
-    if (pass.kind == PassKind::buffer) {
+    pass.kind = type == 0 ? PassKind::buffer : type == 2 ? PassKind::cube : PassKind::image;
+    if (pass.kind == PassKind::cube) {  // Cube A: mainCubemap, after the buffers
+      if (t.contains("buffer")) r.fail(Reader::line_of(t, "buffer"), path + ".buffer", "a cubemap pass writes Cube A, not a buffer");
+      pass.output = kCubeA;
+      pass.name = "Cube A";
+    } else if (pass.kind == PassKind::buffer) {
       if (!t.contains("buffer"))
         r.fail(Reader::line_of(t), path, "a buffer pass needs " + quote(path + ".buffer"), "buffer = \"A\" (A..D)");
       std::size_t b = 0;
@@ -180,7 +195,10 @@ std::shared_ptr<const ShaderProject> read_passes(const Reader& r, const toml::ta
                "two passes write Buffer " + buffer_letter(pass.output), "each buffer has one pass that draws it");
     if (pass.kind == PassKind::image && !images.empty())
       r.fail(Reader::line_of(t, "type"), path + ".type", "more than one image pass");
-    (pass.kind == PassKind::buffer ? buffers : images).push_back(std::move(pass));
+    if (pass.kind == PassKind::cube)
+      for (const ProjectPass& other : buffers)
+        if (other.kind == PassKind::cube) r.fail(Reader::line_of(t, "type"), path + ".type", "more than one cubemap pass");
+    (pass.kind == PassKind::image ? images : buffers).push_back(std::move(pass));
   }
   if (images.empty())
     r.fail(Reader::line_of(*tables.back()), "passes", "the [[passes]] have no image pass",
@@ -203,6 +221,7 @@ std::shared_ptr<const ShaderProject> read_passes(const Reader& r, const toml::ta
         r.fail(Reader::line_of(*ch, "buffer"), "passes[" + std::to_string(i) + "]." + key + ".buffer",
                "Buffer " + letter + " is read here, but no pass writes it");
     }
+  check_project(*p, scene_file.string());  // e.g. a cubemap = "A" with no cubemap pass
   return p;
 }
 

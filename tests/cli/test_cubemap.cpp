@@ -303,12 +303,13 @@ int nearest_axis(double x, double y, double z) {
   return z > 0 ? 4 : 5;
 }
 
-TEST(Cubemap, AnEquirectangularExrBecomesSixFaces) {
-  // 128x64 float EXR, each pixel coloured by the axis nearest its direction
-  // under docs/shadertoy.md#cubemaps' layout (middle -Z, left edge +Z, top +Y).
-  TempDir dir;
+// Each ±axis's colour in the equirectangular test image.
+std::array<float, 3> axis_colour(int a) { return {0.1f + 0.15f * a, 2.0f - 0.25f * a, a % 2 ? 0.75f : 3.5f}; }
+
+// 128x64 float EXR, each pixel coloured by the axis nearest its direction
+// under docs/shadertoy.md#cubemaps' layout (middle -Z, left edge +Z, top +Y).
+void write_axis_equirect(const fs::path& p) {
   const double pi = 3.14159265358979323846;
-  const auto colour = [](int a) { return std::array<float, 3>{0.1f + 0.15f * a, 2.0f - 0.25f * a, a % 2 ? 0.75f : 3.5f}; };
   Image eq;
   eq.width = 128;
   eq.height = 64;
@@ -317,19 +318,60 @@ TEST(Cubemap, AnEquirectangularExrBecomesSixFaces) {
     for (int x = 0; x < eq.width; ++x) {
       const double lon = 2 * pi * (x + 0.5) / eq.width, lat = pi * (0.5 - (y + 0.5) / eq.height);
       const std::array<float, 3> c =
-          colour(nearest_axis(-std::cos(lat) * std::sin(lon), std::sin(lat), std::cos(lat) * std::cos(lon)));
+          axis_colour(nearest_axis(-std::cos(lat) * std::sin(lon), std::sin(lat), std::cos(lat) * std::cos(lon)));
       eq.pixels.insert(eq.pixels.end(), c.begin(), c.end());
     }
-  write_image(eq, dir / "sky.exr");
+  write_image(eq, p);
+}
+
+// The six axes, then (0.2, 0.1, -1), inside -Z's region.
+std::vector<std::array<double, 3>> axis_dirs() {
   std::vector<std::array<double, 3>> dirs;
   for (const auto& a : kAxes) dirs.push_back({a[0], a[1], a[2]});
-  dirs.push_back({0.2, 0.1, -1});  // near -Z, inside its region
-  write_file(dir / "e.json", shader({pass("Image", "image", "", sample_dirs(dirs), cube_input(0, "/media/a/sky.exr"))}));
-  const Image img = render(dir, {"e.json", "--size", "7x1", "--media-dir", dir.path().string()});
+  dirs.push_back({0.2, 0.1, -1});
+  return dirs;
+}
+void expect_axis_colours(const Image& img, float tolerance) {
   ASSERT_EQ(img.width, 7);
   for (int i = 0; i < 7; ++i)
     for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(img.at(i, 0, c), colour(i == 6 ? 5 : i)[c], 1e-5) << "direction " << i << " channel " << c;
+      EXPECT_NEAR(img.at(i, 0, c), axis_colour(i == 6 ? 5 : i)[c], tolerance) << "direction " << i << " channel " << c;
+}
+
+TEST(Cubemap, AnEquirectangularExrBecomesSixFaces) {
+  TempDir dir;
+  write_axis_equirect(dir / "sky.exr");
+  write_file(dir / "e.json", shader({pass("Image", "image", "", sample_dirs(axis_dirs()), cube_input(0, "/media/a/sky.exr"))}));
+  expect_axis_colours(render(dir, {"e.json", "--size", "7x1", "--media-dir", dir.path().string()}), 1e-5f);
+}
+
+TEST(Cubemap, ATomlSceneWithACubemapPassAndAnEquirectangularFile) {
+  // [[passes]]: Cube A copies sky.exr's cube (a samplerCube in the cube
+  // pass), the Image pass reads Cube A (cubemap = "A").
+  TempDir dir;
+  write_axis_equirect(dir / "sky.exr");
+  write_file(dir / "cube.glsl",
+             "void mainCubemap(out vec4 o, in vec2 f, in vec3 ro, in vec3 rd) { o = texture(iChannel0, rd); }\n");
+  write_file(dir / "img.glsl", sample_dirs(axis_dirs()) + "\n");
+  write_file(dir / "s.toml",
+             "[scene]\nname = \"cube\"\n[render]\nwidth = 7\nheight = 1\n"
+             "[[passes]]\ntype = \"image\"\nfile = \"img.glsl\"\niChannel0 = { cubemap = \"A\", filter = \"nearest\" }\n"
+             "[[passes]]\ntype = \"cubemap\"\nfile = \"cube.glsl\"\niChannel0 = { cubemap = \"sky.exr\" }\n");
+  // Through Cube A's half floats: within half a step at 3.5.
+  expect_axis_colours(render(dir, {"s.toml"}), 2e-3f);
+  // cubemap = "A" without a cubemap pass; a cubemap file that is not there.
+  write_file(dir / "bad.toml", "[scene]\nname = \"b\"\n[[passes]]\ntype = \"image\"\nfile = \"img.glsl\"\n"
+                               "iChannel0 = { cubemap = \"A\" }\n");
+  RunResult r = run_marchstudio({"render", "bad.toml", "-o", "x.png"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("Image iChannel0 reads Cube A, which no pass writes"), std::string::npos) << r.err;
+  write_file(dir / "bad.toml", "[scene]\nname = \"b\"\n[[passes]]\ntype = \"image\"\nfile = \"img.glsl\"\n"
+                               "iChannel0 = { cubemap = \"nowhere.exr\" }\n");
+  r = run_marchstudio({"render", "bad.toml", "-o", "x.png"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bad.toml:6: passes[0].iChannel0.cubemap: cubemap"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
 
 TEST(Cubemap, BadOrMissingFacesAreOneLineErrors) {
