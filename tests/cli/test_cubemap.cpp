@@ -172,6 +172,20 @@ TEST(Cubemap, FaceTexelsSitWhereGlsTableSays) {
   }
 }
 
+TEST(Cubemap, AVsCodeWildcardNamesTheSixFaces) {
+  // The VS Code extension's "sky_{}.png": sky_px.png, sky_nx.png .. sky_nz.png.
+  TempDir dir;
+  const char* names[] = {"px", "nx", "py", "ny", "pz", "nz"};
+  for (int f = 0; f < 6; ++f) write_face(dir / ("sky_" + std::string(names[f]) + ".png"), 4, 4, [f](int, int) { return solid(f); });
+  std::vector<std::array<double, 3>> dirs;
+  for (const auto& a : kAxes) dirs.push_back({a[0], a[1], a[2]});
+  write_file(dir / "v.glsl", "#iChannel0 \"file://sky_{}.png\"\n#iChannel0::Type \"CubeMap\"\n" + sample_dirs(dirs) + "\n");
+  const Image img = render(dir, {"v.glsl", "--size", "6x1"});
+  ASSERT_EQ(img.width, 6);
+  for (int f = 0; f < 6; ++f)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(img.at(f, 0, c), solid(f)[c], 1e-6) << "face " << f << " channel " << c;
+}
+
 // Directions through texel centres of a 1024 face: corners, edges and inner texels of each face.
 std::vector<std::array<double, 3>> texel_dirs(std::vector<std::array<int, 3>>& texels) {
   const int picks[][2] = {{0, 0}, {1023, 0}, {0, 1023}, {1023, 1023}, {511, 700}, {37, 512}};
