@@ -1,6 +1,7 @@
 #include "shader/vscode.h"
 
 #include <algorithm>
+#include <regex>
 #include <array>
 #include <cctype>
 #include <map>
@@ -87,6 +88,7 @@ struct File {
   std::string code;             // directives replaced by their one-line GLSL (or blank)
   std::array<Channel, 4> ch{};
   int keyboard_line = 0;
+  bool uses_main = false;       // void main() with gl_FragColor, the extension's other entry point
   std::string from_where;       // the directive that first named it
   int from_line = 0;
 };
@@ -197,10 +199,14 @@ struct Loader {
       f.code += out + (i + 1 < raw.size() ? "\n" : "");
     }
     const std::string stripped = strip_comments(text);
-    if (const size_t at = find_definition(stripped, "main"); at != std::string::npos)
-      fail("void main(): marchstudio runs the extension's mainImage form", f.where,
-           1 + static_cast<int>(std::count(stripped.begin(), stripped.begin() + static_cast<std::ptrdiff_t>(at), '\n')),
-           "main", "define void mainImage(out vec4 fragColor, in vec2 fragCoord) instead of main()");
+    if (const size_t at = find_definition(stripped, "main"); at != std::string::npos) {
+      // The extension runs main() when there is one; both would be two entry points.
+      if (find_definition(stripped, "mainImage") != std::string::npos)
+        fail("void main() and mainImage() both defined: the extension would run main()", f.where,
+             1 + static_cast<int>(std::count(stripped.begin(), stripped.begin() + static_cast<std::ptrdiff_t>(at), '\n')),
+             "main", "keep one entry point");
+      f.uses_main = true;
+    }
   }
 
   // Reads `path` and everything it names, then appends it to `order`.
@@ -248,6 +254,17 @@ Sampler sampler_of(const Channel& c, const File& f, int n, Sampler s, std::vecto
 // The extension's keyboard functions on Shadertoy's keyboard texture
 // (row 0 down, 1 pressed this frame, 2 toggled); macros, so that each pass
 // reads its own channel through its `#define iKeyboard iChannelN`.
+// void main() files: gl_FragColor is a global until each pass's end, where
+// a mainImage calls the user's main, renamed msVsMain in its text (the
+// wrapper has its own main()), and returns it. gl_FragCoord is already the
+// wrapper's whole-image coordinate.
+std::string main_prelude() { return "vec4 msVsFragColor;\n#define gl_FragColor msVsFragColor\n"; }
+std::string main_suffix(bool uses_main) {
+  std::string s = "\n#undef gl_FragColor\n";
+  if (uses_main) s += "void mainImage(out vec4 c, in vec2 f) { msVsFragColor = vec4(0.0); msVsMain(); c = msVsFragColor; }\n";
+  return s;
+}
+
 std::string keyboard_prelude() {
   std::string s =
       "#define isKeyDown(key) (texelFetch(iKeyboard, ivec2(int(key), 0), 0).r > 0.0)\n"
@@ -295,6 +312,7 @@ ShaderProject load_vscode(const std::string& text, const fs::path& file, const s
     for (const Channel& c : f.ch)
       if (c.line && ((c.self && &f == &main) || (!c.self && c.path == main.path)) && !reads_main)
         reads_main = &f, reads_main_line = c.line;
+  const bool any_main = std::any_of(files.begin(), files.end(), [](const File& f) { return f.uses_main; });
   const size_t buffers = files.size() - 1 + (reads_main ? 1 : 0);
   if (buffers > 4) {
     const File& fifth = reads_main && files.size() <= 5 ? main : files[4];
@@ -364,7 +382,8 @@ ShaderProject load_vscode(const std::string& text, const fs::path& file, const s
       for (size_t k = 0; k < lines.size(); ++k) f.code += lines[k] + (k + 1 < lines.size() ? "\n" : "");
       keyboard = true;
     }
-    ps.code = f.code;
+    ps.code = f.uses_main ? std::regex_replace(f.code, std::regex(R"(\bmain\b)"), "msVsMain") : f.code;
+    if (any_main) ps.code += main_suffix(f.uses_main);
     p.passes.push_back(std::move(ps));
   }
   if (reads_main) {
@@ -372,15 +391,16 @@ ShaderProject load_vscode(const std::string& text, const fs::path& file, const s
     show.kind = PassKind::image;
     show.name = "Image";
     show.where = main.where + " (display)";
-    show.code = "void mainImage(out vec4 c, in vec2 f) { c = texelFetch(iChannel0, ivec2(gl_FragCoord.xy), 0); }\n";
+    show.code = "void mainImage(out vec4 c, in vec2 f) { c = texelFetch(iChannel0, ivec2(f), 0); }\n";
+    if (any_main) show.code += main_suffix(false);
     show.inputs[0].kind = InputKind::buffer;
     show.inputs[0].buffer = static_cast<int>(files.size()) - 1;
     show.inputs[0].sampler = {TexFilter::nearest, TexWrap::clamp, false, false};
     p.passes.push_back(std::move(show));
   }
-  if (keyboard) {
-    p.common = keyboard_prelude();
-    p.common_where = main.where + " (#iKeyboard functions)";
+  if (keyboard || any_main) {
+    p.common = (any_main ? main_prelude() : std::string()) + (keyboard ? keyboard_prelude() : std::string());
+    p.common_where = main.where + (keyboard ? " (#iKeyboard functions)" : " (main() entry point)");
   }
   check_project(p, main.where);
   return p;

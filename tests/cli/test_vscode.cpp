@@ -71,6 +71,33 @@ TEST(VsCode, BufferWithSelfAndTextureMatchesShadertoyJson) {
   EXPECT_GT(hi - lo, 0.3f) << "the texture is not there";
 }
 
+// The extension's other entry point: void main() writing gl_FragColor from
+// gl_FragCoord, in the main file and in a buffer fed back on itself, gives
+// the bytes of the same shader written with mainImage.
+TEST(VsCode, VoidMainFilesMatchTheMainImageForm) {
+  TempDir dir;
+  write_file(dir.path() / "b.glsl",
+             "#iChannel0 \"self\"\n"
+             "void main() {\n  vec2 st = gl_FragCoord.xy / iResolution.xy;\n"
+             "  gl_FragColor = vec4(texture(iChannel0, st).r + 1.0 / 64.0, st.x, 0.0, 1.0);\n}\n");
+  write_file(dir.path() / "m.glsl",
+             "#iChannel0 \"file://b.glsl\"\n"
+             "void main() {\n  vec2 st = gl_FragCoord.xy / iResolution.xy;\n"
+             "  gl_FragColor = vec4(texture(iChannel0, st).rg, 0.5 + 0.5 * sin(iTime * 3.0), 1.0);\n}\n");
+  write_file(dir.path() / "b2.glsl",
+             "#iChannel0 \"self\"\n"
+             "void mainImage(out vec4 o, in vec2 f) {\n  vec2 st = f / iResolution.xy;\n"
+             "  o = vec4(texture(iChannel0, st).r + 1.0 / 64.0, st.x, 0.0, 1.0);\n}\n");
+  write_file(dir.path() / "m2.glsl",
+             "#iChannel0 \"file://b2.glsl\"\n"
+             "void mainImage(out vec4 o, in vec2 f) {\n  vec2 st = f / iResolution.xy;\n"
+             "  o = vec4(texture(iChannel0, st).rg, 0.5 + 0.5 * sin(iTime * 3.0), 1.0);\n}\n");
+  const Image a = render(dir.path(), "m.glsl"), b = render(dir.path(), "m2.glsl");
+  ASSERT_EQ(a.width, b.width);
+  EXPECT_EQ(a.pixels, b.pixels) << "main() and mainImage() forms differ";
+  EXPECT_NEAR(a.at(10, 10, 0), 7.0 / 64.0, 1.0 / 255.0) << "the buffer did not feed back";
+}
+
 TEST(VsCode, MirrorWrapMatchesAMirroredCoordinate) {
   TempDir dir;
   write_texture(dir.path() / "tex.png");

@@ -183,8 +183,8 @@ TEST(VsCode, BadInputNamesItsFileLineAndDirective) {
       << d.error("gone.glsl");
   d.put("fly.glsl", "#iFirstPersonControls\n" + kImage);
   EXPECT_NE(d.error("fly.glsl").find("fly.glsl:1: #iFirstPersonControls"), std::string::npos);
-  d.put("main.glsl", "#iKeyboard\nvoid main() { }\n");
-  EXPECT_NE(d.error("main.glsl").find("main.glsl:2: void main(): marchstudio runs the extension's mainImage form"), std::string::npos) << d.error("main.glsl");
+  d.put("main.glsl", "#iKeyboard\nvoid main() { }\nvoid mainImage(out vec4 c, in vec2 f) { }\n");
+  EXPECT_NE(d.error("main.glsl").find("main.glsl:2: void main() and mainImage() both defined"), std::string::npos) << d.error("main.glsl");
   d.put("cube.glsl", "#iChannel0 \"file://b.glsl\"\n#iChannel0::Type \"CubeMap\"\n" + kImage);
   d.put("b.glsl", kImage);
   EXPECT_NE(d.error("cube.glsl").find("cube.glsl:2: #iChannel0::Type"), std::string::npos) << d.error("cube.glsl");
