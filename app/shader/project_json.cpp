@@ -249,7 +249,8 @@ class Loader {
         continue;
       }
       if (type == "sound") {
-        p.has_sound = true;  // it never changes the image
+        p.has_sound = true;  // it never changes the image: said, not refused, so the picture still renders
+        p.warnings.push_back("its Sound pass (mainSound) is not run: marchstudio renders the image, not audio");
         continue;
       }
       if (type != "image" && type != "buffer" && type != "cubemap")

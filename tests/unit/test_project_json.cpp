@@ -38,6 +38,8 @@ TEST(ProjectJson, TheApiFormInShadertoysOrder) {
   EXPECT_EQ(p.name, "Feedback test");
   EXPECT_EQ(p.common, "#define K 1");
   EXPECT_TRUE(p.has_sound);
+  ASSERT_EQ(p.warnings.size(), 1u);  // said once, and --strict refuses it
+  EXPECT_NE(p.warnings[0].find("Sound pass (mainSound) is not run"), std::string::npos);
   ASSERT_EQ(p.passes.size(), 3u);
   EXPECT_EQ(p.passes[0].name, "Buffer A");
   EXPECT_EQ(p.passes[0].output, 0);
