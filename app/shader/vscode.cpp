@@ -361,6 +361,7 @@ ShaderProject load_vscode(const std::string& text, const fs::path& file, const s
           fail_input(key + "::Type \"CubeMap\": the path needs the '{}' wildcard for its six faces", f.where, c.line, key,
                      "e.g. \"file://sky_{}.png\" for sky_px.png .. sky_nz.png");
         in.kind = InputKind::cubemap;  // the six faces are found from the wildcard where cubemaps are loaded
+        in.sampler.vflip = false;      // cube faces are not flipped (three.js CubeTexture, GL's face table)
         continue;
       }
       const std::string problem = input_file_problem(c.path);
