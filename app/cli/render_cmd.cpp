@@ -56,6 +56,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
   cmd->add_option("--frames", a.frames, "Render frames A..B (both included) to -o PATTERN, e.g. out/f_%04d.png")
       ->check(not_empty());
+  cmd->add_option("--dispatch", a.dispatch,
+                  "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
+  cmd->add_option("--compute-group", a.compute_group, "Compute work group WxH (default 8x8)")->group("");
   add_shadertoy_flags(cmd, a.shadertoy);
   add_override_flags(cmd, a.overrides);
   cmd->add_option("--fps", a.fps,

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/input.h"
+#include "cli/dispatch_flag.h"
 #include "cli/override_flags.h"
 #include "gl/context.h"
 #include "render/tiles.h"
@@ -47,6 +48,8 @@ struct RenderJob {
   int tile_size = kTileSize;         // largest square per draw (render/tiles.h)
   int tile_still = 0;                // forced tiled-still side (tests); 0: past the limits only
   ShadertoyFlags shadertoy;
+  Dispatch dispatch = Dispatch::fragment;  // --dispatch, auto already resolved
+  ComputeGroup compute_group;              // --compute-group
   bool verbose = false;
 
   bool aovs() const { return !aov_channels.empty(); }

@@ -17,6 +17,7 @@
 #include "io/image_io.h"
 #include "render/aov.h"
 #include "render/bounds_check.h"
+#include "render/compute_frame.h"
 #include "render/frame.h"
 #include "render/graph.h"
 #include "render/still.h"
@@ -141,6 +142,7 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
   const StillTiling tiling = plan_render_tiling(in, fp, gpu_targets, job.tile_still, gl_max_width(ctx.info()),
                                                 gl_max_height(ctx.info()));
   if (!tiling.tiled()) check_frame_size(ctx.info(), fp.width, fp.height, aovs ? 6 : 2);
+  check_compute_input(job.dispatch, in, tiling.tiled());  // before anything is drawn or written
 
   // Programs whose assembled text an earlier job of the session compiled
   // are reused: the same text links to the same program.
@@ -193,7 +195,9 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
                    t_context * 1e3, t_compile * 1e3, clock.lap() * 1e3, tiling.tile_width, tiling.band_height);
     return;
   }
-  Still out = render_still(renderer, graph, *post_prog, still);
+  Still out = job.dispatch == Dispatch::compute  // the same scene shader as a compute pass (render/compute_frame.h)
+                  ? render_still_compute(ctx, in.passes.back(), *post_prog, still, job.compute_group)
+                  : render_still(renderer, graph, *post_prog, still);
   Image img = std::move(out.color);
   check_nonfinite(count_nonfinite_pixels(img, aovs ? &out.aovs : nullptr) + out.flagged);
   if (aovs) img = append_channels(img, select_channels(out.aovs, job.aov_channels));

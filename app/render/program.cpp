@@ -90,6 +90,22 @@ Program::Program(const std::string& vertex_source, const ShaderSource& fragment)
   }
 }
 
+Program::Program(Compute, const ShaderSource& compute) {
+  GLuint cs = compile(GL_COMPUTE_SHADER, compute.text, compute, "compute shader compile");
+  id_ = glCreateProgram();
+  glAttachShader(id_, cs);
+  glLinkProgram(id_);
+  glDeleteShader(cs);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    const std::string log = program_log(id_);
+    glDeleteProgram(id_);
+    id_ = 0;
+    fail_with_log("compute shader link", log, compute);
+  }
+}
+
 Program::~Program() {
   if (id_) glDeleteProgram(id_);
 }

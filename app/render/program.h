@@ -12,6 +12,9 @@ namespace ms {
 class Program {
  public:
   Program(const std::string& vertex_source, const ShaderSource& fragment);
+  // A compute program (GL 4.3+) of one compute shader: render/compute_frame.h.
+  struct Compute {};
+  Program(Compute, const ShaderSource& compute);
   ~Program();
   Program(const Program&) = delete;
   Program& operator=(const Program&) = delete;

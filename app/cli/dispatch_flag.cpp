@@ -1,0 +1,42 @@
+#include "cli/dispatch_flag.h"
+
+#include <cstdio>
+
+#include "cli/input.h"
+#include "core/error.h"
+
+namespace ms {
+
+Dispatch parse_dispatch(const std::string& name) {
+  if (name == "fragment") return Dispatch::fragment;
+  if (name == "compute") return Dispatch::compute;
+  if (name == "auto") return Dispatch::automatic;
+  fail_input("--dispatch '" + name + "' is not one of fragment, compute, auto", {}, 0, "--dispatch");
+}
+
+ComputeGroup parse_compute_group(const std::string& text) {
+  ComputeGroup g;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &g.x, &x, &g.y, &extra) != 3 || (x != 'x' && x != 'X') || g.x < 1 ||
+      g.y < 1 || g.x * g.y > 1024)
+    fail_input("--compute-group '" + text + "' must be WxH with 1..1024 invocations, e.g. 8x8", {}, 0,
+               "--compute-group");
+  return g;
+}
+
+Dispatch resolve_dispatch(Dispatch d) { return d == Dispatch::automatic ? Dispatch::fragment : d; }
+
+void check_compute_input(Dispatch d, const LoadedInput& in, bool tiled_still) {
+  if (d != Dispatch::compute) return;
+  if (in.shadertoy)
+    fail_input("--dispatch compute draws SDF scenes only; a Shadertoy shader runs as a fragment pass", {}, 0,
+               "--dispatch", "drop --dispatch or give --dispatch fragment");
+  if (in.passes.size() != 1)
+    fail_input("--dispatch compute draws a scene of one pass only", {}, 0, "--dispatch",
+               "give --dispatch fragment");
+  if (tiled_still)
+    fail_input("--dispatch compute does not draw a still in tiles yet (past the GL limits or --tile-still)", {}, 0,
+               "--dispatch", "give --dispatch fragment");
+}
+
+}  // namespace ms

@@ -1,0 +1,211 @@
+#include "render/compute_frame.h"
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "core/error.h"
+#include "render/aov.h"
+#include "render/samples.h"
+#include "render/tiles.h"
+#include "render/uniforms.h"
+
+namespace ms {
+
+const char* dispatch_name(Dispatch d) {
+  switch (d) {
+    case Dispatch::fragment: return "fragment";
+    case Dispatch::compute: return "compute";
+    case Dispatch::automatic: return "auto";
+  }
+  return "?";
+}
+
+// `n` RGBA32F textures (image units 0..n-1), with a framebuffer on the
+// first (the post pass draws into a result target through it).
+struct ComputeTargets {
+  std::vector<GLuint> tex;
+  GLuint fbo = 0;
+  int width = 0, height = 0;
+  ComputeTargets(int w, int h, int n) : tex(n), width(w), height(h) {
+    glGenTextures(n, tex.data());
+    for (int i = 0; i < n; ++i) {
+      glBindTexture(GL_TEXTURE_2D, tex[i]);
+      glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, w, h);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex[0], 0);
+    const GLenum buf = GL_COLOR_ATTACHMENT0;
+    glDrawBuffers(1, &buf);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      fail_system("GL: float framebuffer is incomplete");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+  ~ComputeTargets() {
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(static_cast<GLsizei>(tex.size()), tex.data());
+  }
+  ComputeTargets(const ComputeTargets&) = delete;
+  ComputeTargets& operator=(const ComputeTargets&) = delete;
+  int count() const { return static_cast<int>(tex.size()); }
+
+  // Texture `i` as RGBA float, top row first.
+  std::vector<float> read(int i) const {
+    const size_t row = static_cast<size_t>(width) * 4;
+    std::vector<float> px(row * height), out(px.size());
+    glBindTexture(GL_TEXTURE_2D, tex[i]);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, px.data());
+    for (int y = 0; y < height; ++y)
+      std::memcpy(out.data() + y * row, px.data() + (height - 1 - y) * row, row * sizeof(float));
+    return out;
+  }
+};
+
+namespace {
+constexpr int kAovTargets = 3;  // after the colour: outGeom, outMisc, outCost
+}
+
+ComputeFrameRenderer::ComputeFrameRenderer(const Context& ctx) : ctx_(ctx) { glGenVertexArrays(1, &vao_); }
+
+ComputeFrameRenderer::~ComputeFrameRenderer() { glDeleteVertexArrays(1, &vao_); }
+
+void ComputeFrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, const Program& post,
+                                const FrameParams& p, ComputeGroup group) {
+  const int end = p.sample_end < 0 ? std::max(p.spp, 1) : p.sample_end;
+  const int begin = std::clamp(p.sample_begin, 0, end);
+  if (p.fused_post && (p.spp != 1 || p.aovs || end != 1))
+    fail_system("internal: a fused post pass needs one sample per pixel and no AOVs");
+  const int images = p.aovs ? 1 + kAovTargets : 1;
+  check_frame_size(ctx_.info(), p.width, p.height, images + 1);
+  if (p.width != width_ || p.height != height_ || !result_) {
+    accum_.reset();
+    result_ = std::make_unique<ComputeTargets>(p.width, p.height, 1);
+    width_ = p.width;
+    height_ = p.height;
+  }
+  if (!p.fused_post && (!accum_ || accum_->count() != images))
+    accum_ = std::make_unique<ComputeTargets>(p.width, p.height, images);
+  spp_ = std::max(end, 1);
+  aovs_ = p.aovs;
+  const ComputeTargets& into = p.fused_post ? *result_ : *accum_;
+
+  // As the fragment path: one sample stores, several add (from zero when
+  // the frame starts here), sample by sample in the same order.
+  const bool add = end - begin > 1 || begin > 0;
+  if (add && begin == 0) {
+    const float zero[4] = {0, 0, 0, 0};
+    for (GLuint t : into.tex) glClearTexImage(t, 0, GL_RGBA, GL_FLOAT, zero);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
+  for (int i = 0; i < into.count(); ++i)
+    glBindImageTexture(static_cast<GLuint>(i), into.tex[i], 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glUseProgram(main.id());
+  set_uniforms(main);
+  glUniform2f(main.loc("uPixelOffset"), static_cast<float>(p.offset_x), static_cast<float>(p.offset_y));
+  if (p.fused_post) glUniform1f(main.loc("uExposure"), p.exposure);
+  glUniform1i(main.loc("uMsAccumulate"), add ? 1 : 0);
+  const GLint jitter = main.loc("uJitter"), rect = main.loc("uMsRect");
+  std::vector<glm::vec2> samples = p.open_ended ? open_samples(begin, end) : stratified_samples(p.spp);
+  if (!p.open_ended) {
+    samples.resize(std::min<size_t>(samples.size(), static_cast<size_t>(end)));
+    samples.erase(samples.begin(), samples.begin() + std::min<size_t>(samples.size(), static_cast<size_t>(begin)));
+  }
+  // Tile by tile, every sample of a tile before the next, as FrameRenderer:
+  // no dispatch covers more than a tile; a flush per tile, or with a
+  // deadline a wait and a check after each dispatch.
+  for (const Tile& t : split_tiles(p.width, p.height, p.tile_size)) {
+    glUniform4i(rect, t.x, t.y, t.width, t.height);
+    const GLuint gx = static_cast<GLuint>((t.width + group.x - 1) / group.x);
+    const GLuint gy = static_cast<GLuint>((t.height + group.y - 1) / group.y);
+    for (const glm::vec2& s : samples) {
+      glUniform2f(jitter, s.x, s.y);
+      glDispatchCompute(gx, gy, 1);
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the next sample reads what this one stored
+      if (p.deadline) {
+        glFinish();
+        if (p.deadline->expired()) p.deadline->check("the render");
+      }
+    }
+    if (!p.deadline) glFlush();
+  }
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  for (int i = 0; i < into.count(); ++i)
+    glBindImageTexture(static_cast<GLuint>(i), 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+
+  // The post pass, FrameRenderer's: a fragment pass over the result.
+  if (!p.fused_post) {
+    glBindVertexArray(vao_);
+    glViewport(0, 0, p.width, p.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glBindSampler(0, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);
+    glUseProgram(post.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, accum_->tex[0]);
+    glUniform1i(post.loc("uAccum"), 0);
+    glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(spp_));
+    glUniform1f(post.loc("uExposure"), p.exposure);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    fail_system("GL error " + std::to_string(err) + " while rendering (compute dispatch)");
+}
+
+Image ComputeFrameRenderer::read_color() const {
+  Image img;
+  if (!result_) return img;
+  img.width = width_;
+  img.height = height_;
+  img.channels = {"R", "G", "B", "A"};
+  img.pixels = result_->read(0);
+  return img;
+}
+
+Image ComputeFrameRenderer::read_aovs() const {
+  Image img;
+  if (!aovs_ || !accum_ || accum_->count() != 1 + kAovTargets) return img;
+  img.width = width_;
+  img.height = height_;
+  img.channels = kAovChannels;
+  const size_t npix = static_cast<size_t>(width_) * height_, nch = kAovChannels.size();
+  img.pixels.resize(npix * nch);
+  // As FrameRenderer::read_aovs: image 0's alpha counts the hits, 1..3 hold
+  // 4 channels each in kAovChannels order after `hit`.
+  const float inv = 1.0f / static_cast<float>(spp_);
+  for (int a = 0; a <= kAovTargets; ++a) {
+    const std::vector<float> px = accum_->read(a);
+    for (size_t q = 0; q < npix; ++q) {
+      if (a == 0) img.pixels[q * nch] = px[q * 4 + 3] * inv;
+      else
+        for (int c = 0; c < 4; ++c) img.pixels[q * nch + 1 + (a - 1) * 4 + c] = px[q * 4 + c] * inv;
+    }
+  }
+  return img;
+}
+
+Still render_still_compute(const Context& ctx, const PassSource& pass, const Program& post, const StillFrame& f,
+                           ComputeGroup group) {
+  if (pass.uniforms != PassUniforms::scene || !f.in.scene)
+    fail_input("--dispatch compute draws SDF scenes only", {}, 0, "--dispatch");
+  const Program main(Program::Compute{}, wrap_compute(pass.source, group));
+  ComputeFrameRenderer r(ctx);
+  const FrameParams& p = f.params;
+  r.draw(main, [&](const Program& prog) {
+    set_scene_uniforms(prog, *f.in.scene, p.resolution_width(), p.resolution_height(), f.in.time, f.in.frame);
+    if (f.in.extra) (*f.in.extra)(prog);
+  }, post, p, group);
+  Still out;
+  out.color = r.read_color();
+  out.flagged = take_flagged(out.color);
+  if (p.aovs) out.aovs = r.read_aovs();
+  return out;
+}
+
+}  // namespace ms

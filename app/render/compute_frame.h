@@ -1,0 +1,60 @@
+// The scene pass as a compute dispatch (issue 18): the same assembled scene
+// shader, wrapped by shader/compute_wrap.h, run once per sample over the
+// frame tile by tile (glDispatchCompute), adding into RGBA32F images with
+// imageLoad + imageStore and a memory barrier between samples; then the
+// same post program as FrameRenderer's, reading the accumulation texture.
+// Same shape as FrameRenderer (draw, read_color, read_aovs); the pixels
+// equal its within float rounding (tests/cli/test_dispatch.cpp).
+//
+//   Program main(Program::Compute{}, wrap_compute(pass.source, group));
+//   ComputeFrameRenderer r(ctx);
+//   r.draw(main, set_uniforms, post, params);   // params as FrameRenderer's
+//   Image img = r.read_color();
+#pragma once
+#include <memory>
+#include <string>
+
+#include "gl/context.h"
+#include "io/image.h"
+#include "render/frame.h"
+#include "render/graph.h"
+#include "render/program.h"
+#include "render/still.h"
+#include "shader/compute_wrap.h"
+
+namespace ms {
+
+// Which kind of pass draws the scene: --dispatch.
+enum class Dispatch { fragment, compute, automatic };
+const char* dispatch_name(Dispatch d);
+
+struct ComputeTargets;  // the images (compute_frame.cpp)
+
+class ComputeFrameRenderer {
+ public:
+  explicit ComputeFrameRenderer(const Context& ctx);
+  ~ComputeFrameRenderer();
+  ComputeFrameRenderer(const ComputeFrameRenderer&) = delete;
+  ComputeFrameRenderer& operator=(const ComputeFrameRenderer&) = delete;
+
+  // As FrameRenderer::draw, `main` being a compute program from
+  // wrap_compute() with `group`. Not yet: FrameParams::bloom (throws).
+  void draw(const Program& main, const UniformFn& set_uniforms, const Program& post, const FrameParams& p,
+            ComputeGroup group = {});
+  Image read_color() const;
+  Image read_aovs() const;
+
+ private:
+  const Context& ctx_;
+  GLuint vao_ = 0;
+  int width_ = 0, height_ = 0, spp_ = 1;
+  bool aovs_ = false;
+  std::unique_ptr<ComputeTargets> accum_, result_;
+};
+
+// A still of an SDF scene (a graph of one pass, `pass`) drawn with the
+// compute dispatch: what render_still() returns for it with FrameRenderer.
+Still render_still_compute(const Context& ctx, const PassSource& pass, const Program& post, const StillFrame& f,
+                           ComputeGroup group = {});
+
+}  // namespace ms

@@ -1,0 +1,134 @@
+#include "shader/compute_wrap.h"
+
+#include <algorithm>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+
+namespace ms {
+namespace {
+
+// The text with comments blanked (newlines kept), for scans that must not
+// see what a comment says.
+std::string strip_comments(const std::string& s) {
+  std::string out = s;
+  for (size_t i = 0; i + 1 < out.size(); ++i) {
+    if (out[i] == '/' && out[i + 1] == '/') {
+      while (i < out.size() && out[i] != '\n') out[i++] = ' ';
+    } else if (out[i] == '/' && out[i + 1] == '*') {
+      out[i] = out[i + 1] = ' ';
+      i += 2;
+      while (i + 1 < out.size() && !(out[i] == '*' && out[i + 1] == '/')) {
+        if (out[i] != '\n') out[i] = ' ';
+        ++i;
+      }
+      if (i + 1 < out.size()) out[i] = out[i + 1] = ' ';
+      ++i;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string first_derivative_call(const std::string& glsl) {
+  static const std::regex re(R"(\b(dFdx|dFdy|fwidth)(Fine|Coarse)?\s*\()");
+  const std::string text = strip_comments(glsl);
+  std::smatch m;
+  if (std::regex_search(text, m, re)) return m[1].str() + m[2].str();
+  return {};
+}
+
+ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group) {
+  const std::string what = frag.files.empty() ? std::string() : frag.files[0];
+  if (const std::string d = first_derivative_call(frag.text); !d.empty())
+    fail_input("--dispatch compute: the shader calls " + d + "(), which a compute shader cannot", what, 0,
+               "--dispatch", "render it with --dispatch fragment, or take the footprint from ray differentials");
+  if (group.x < 1 || group.y < 1 || group.x * group.y > 1024)
+    fail_input("--compute-group " + std::to_string(group.x) + "x" + std::to_string(group.y) +
+                   " must have 1..1024 invocations",
+               {}, 0, "--compute-group");
+  // Comments blanked in a copy of the same length: the matches' positions
+  // hold in the original text.
+  const std::string scan = strip_comments(frag.text);
+  std::string text;
+  text.reserve(frag.text.size() + 2048);
+  static const std::regex out_re(R"(layout\s*\(\s*location\s*=\s*([0-9]+)\s*\)\s*out\s+vec4\s+(\w+)\s*;)");
+  static const std::regex main_re(R"(\bvoid\s+main\s*\(\s*(void)?\s*\))");
+  static const std::regex coord_re(R"(\bgl_FragCoord\b)");
+  // One pass over the matches of the three patterns, in text order.
+  struct Edit {
+    size_t pos, len;
+    std::string with;
+  };
+  std::vector<Edit> edits;
+  for (auto it = std::sregex_iterator(scan.begin(), scan.end(), out_re); it != std::sregex_iterator(); ++it)
+    edits.push_back({static_cast<size_t>(it->position()), static_cast<size_t>(it->length()),
+                     "vec4 " + (*it)[2].str() + " = vec4(0.0);"});
+  int mains = 0;
+  for (auto it = std::sregex_iterator(scan.begin(), scan.end(), main_re); it != std::sregex_iterator(); ++it, ++mains)
+    edits.push_back({static_cast<size_t>(it->position()), static_cast<size_t>(it->length()), "void msSceneMain()"});
+  for (auto it = std::sregex_iterator(scan.begin(), scan.end(), coord_re); it != std::sregex_iterator(); ++it)
+    edits.push_back({static_cast<size_t>(it->position()), static_cast<size_t>(it->length()), "msFragCoord"});
+  if (mains != 1) fail_input("--dispatch compute: the shader has no single main()", what, 0, "--dispatch");
+  std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.pos < b.pos; });
+  size_t at = 0;
+  for (const Edit& e : edits) {
+    text.append(frag.text, at, e.pos - at);
+    text += e.with;
+    at = e.pos + e.len;
+  }
+  text.append(frag.text, at, std::string::npos);
+
+  // The prologue after #version (then #line 2 0: source 0's lines stay where
+  // they were), the epilogue at the end.
+  const size_t eol = text.find('\n');
+  if (text.compare(0, 8, "#version") != 0 || eol == std::string::npos)
+    fail_input("--dispatch compute: the shader does not start with #version", what, 0, "--dispatch");
+  const std::string prologue =
+      "#define MS_COMPUTE 1\n"
+      "#define MS_GROUP_X " + std::to_string(group.x) + "\n"
+      "#define MS_GROUP_Y " + std::to_string(group.y) + "\n"
+      "vec4 msFragCoord;\n"
+      "#line 2 0\n";
+  text.insert(eol + 1, prologue);
+  text +=
+      "\n// ---- marchstudio: the compute wrapper (shader/compute_wrap.h) ----\n"
+      "layout(local_size_x = MS_GROUP_X, local_size_y = MS_GROUP_Y) in;\n"
+      "layout(rgba32f, binding = 0) uniform image2D msOut0;\n"
+      "#if AOV_OUTPUTS\n"
+      "layout(rgba32f, binding = 1) uniform image2D msOut1;\n"
+      "layout(rgba32f, binding = 2) uniform image2D msOut2;\n"
+      "layout(rgba32f, binding = 3) uniform image2D msOut3;\n"
+      "#endif\n"
+      "uniform ivec4 uMsRect;       // the tile: lower-left pixel, width, height (framebuffer pixels)\n"
+      "uniform int uMsAccumulate;   // 1: add to what the images hold (the fragment path's blending)\n"
+      "void main() {\n"
+      "  ivec2 local = ivec2(gl_GlobalInvocationID.xy);\n"
+      "  if (local.x >= uMsRect.z || local.y >= uMsRect.w) return;\n"
+      "  ivec2 px = uMsRect.xy + local;\n"
+      "  msFragCoord = vec4(vec2(px) + 0.5, 0.0, 1.0);\n"
+      "  msSceneMain();\n"
+      "  vec4 c0 = outColor;\n"
+      "  if (uMsAccumulate != 0) c0 = c0 + imageLoad(msOut0, px);\n"
+      "  imageStore(msOut0, px, c0);\n"
+      "#if AOV_OUTPUTS\n"
+      "  vec4 c1 = outGeom, c2 = outMisc, c3 = outCost;\n"
+      "  if (uMsAccumulate != 0) {\n"
+      "    c1 = c1 + imageLoad(msOut1, px);\n"
+      "    c2 = c2 + imageLoad(msOut2, px);\n"
+      "    c3 = c3 + imageLoad(msOut3, px);\n"
+      "  }\n"
+      "  imageStore(msOut1, px, c1);\n"
+      "  imageStore(msOut2, px, c2);\n"
+      "  imageStore(msOut3, px, c3);\n"
+      "#endif\n"
+      "}\n";
+  ShaderSource out = frag;
+  out.text = std::move(text);
+  return out;
+}
+
+}  // namespace ms

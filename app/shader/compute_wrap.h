@@ -1,0 +1,34 @@
+// The scene pass as a compute shader (issue 18): the assembled fragment
+// source of a scene (shader/assemble.h), rewritten so the same text runs as
+// a GL 4.3+ compute shader, one invocation per pixel. No GL here.
+//
+//   - `layout(location = N) out vec4 NAME;` becomes a plain global
+//     `vec4 NAME`, and the wrapper's main() stores it into image unit N
+//     (rgba32f), adding what the image holds when uMsAccumulate is 1: the
+//     fragment path's additive blending, sample by sample, in the same order;
+//   - gl_FragCoord becomes msFragCoord = (pixel + 0.5, 0, 1), the pixel
+//     being uMsRect.xy (the tile's lower-left corner) + gl_GlobalInvocationID.xy;
+//   - the fragment's main() is renamed msSceneMain() and called as it is.
+// Locations 1..3 (the AOV targets) are stored only under AOV_OUTPUTS, as
+// main.frag declares them. The work group is MS_GROUP_X x MS_GROUP_Y.
+#pragma once
+#include <string>
+
+#include "shader/preprocess.h"
+
+namespace ms {
+
+struct ComputeGroup {
+  int x = 8, y = 8;  // invocations per work group; x * y <= 1024
+};
+
+// The first derivative function (dFdx, dFdy, fwidth and their Fine/Coarse
+// forms) the text calls outside comments, or "" when there is none: a
+// compute shader has no pixel quads to take them from.
+std::string first_derivative_call(const std::string& glsl);
+
+// `frag` rewritten as above. Throws bad_input (key "--dispatch") when the
+// text uses derivatives or has no `void main(`.
+ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group = {});
+
+}  // namespace ms

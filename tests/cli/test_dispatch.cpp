@@ -1,0 +1,215 @@
+// render --dispatch (issue 18): the scene pass as a compute dispatch gives
+// the fragment pass's pixels. Every shipped scene (scenes/*.toml) at 96x54,
+// spp 1 (the fused post path) and 4 (accumulation, the post pass), PNG
+// within 1/255 and EXR within 1e-5 in every channel, AOV step counts equal;
+// the hard cases (scenes/hard/*.toml) in the EXR with AOVs; the NaN guard
+// counts the same pixels; bad values and Shadertoy inputs are refused.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "io/image_io.h"
+#include "run.h"
+
+namespace ms::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> scenes_in(const fs::path& dir) {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".toml") out.push_back(e.path().stem().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Renders `scene` with `dispatch` into dir/<name>; the image (empty on failure).
+Image render(const TempDir& dir, const fs::path& scene, const std::string& dispatch, const std::string& name,
+             std::vector<std::string> extra = {}) {
+  std::vector<std::string> args = {"render", scene.string(), "--size", "96x54", "--dispatch", dispatch,
+                                   "-o",     (dir / name).string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const RunResult r = run_marchstudio(args);
+  EXPECT_EQ(r.exit_code, 0) << scene << " " << dispatch << ": " << r.err;
+  if (r.exit_code != 0) return {};
+  return read_image(dir / name);
+}
+
+// Largest |a - b| over every channel; channels named the same and in order.
+// Infinity when the images do not match in shape.
+double max_diff(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height || a.channels != b.channels || a.pixels.size() != b.pixels.size() ||
+      a.pixels.empty())
+    return INFINITY;
+  double m = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    const float x = a.pixels[i], y = b.pixels[i];
+    if (std::isnan(x) != std::isnan(y)) return INFINITY;
+    if (!std::isnan(x)) m = std::max(m, static_cast<double>(std::fabs(x - y)));
+  }
+  return m;
+}
+
+// Channel `name`'s values.
+std::vector<float> channel(const Image& img, const std::string& name) {
+  std::vector<float> out;
+  const auto it = std::find(img.channels.begin(), img.channels.end(), name);
+  if (it == img.channels.end()) return out;
+  const size_t c = static_cast<size_t>(it - img.channels.begin()), n = img.channels.size();
+  for (size_t i = c; i < img.pixels.size(); i += n) out.push_back(img.pixels[i]);
+  return out;
+}
+
+class DispatchScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(DispatchScene, ComputeEqualsFragment) {
+  TempDir dir;
+  const fs::path scene = source_dir() / "scenes" / (GetParam() + ".toml");
+  for (const std::string spp : {"1", "4"}) {
+    const Image f = render(dir, scene, "fragment", "f" + spp + ".png", {"--spp", spp});
+    const Image c = render(dir, scene, "compute", "c" + spp + ".png", {"--spp", spp});
+    EXPECT_LE(max_diff(f, c), 1.0 / 255 + 1e-6) << GetParam() << " spp " << spp << " PNG";
+  }
+  const Image f = render(dir, scene, "fragment", "f.exr", {"--spp", "4", "--aov", "steps,cost"});
+  const Image c = render(dir, scene, "compute", "c.exr", {"--spp", "4", "--aov", "steps,cost"});
+  EXPECT_LE(max_diff(f, c), 1e-5) << GetParam() << " EXR";
+  for (const std::string ch : {"steps", "shadow_steps", "reflection_steps", "sdf_evals", "step_cap"}) {
+    const std::vector<float> a = channel(f, ch), b = channel(c, ch);
+    ASSERT_FALSE(a.empty()) << ch;
+    EXPECT_EQ(a, b) << GetParam() << ": " << ch << " differs";
+  }
+  // Not a blank frame on both sides: the scene drew something.
+  const std::vector<float> steps = channel(f, "steps");
+  EXPECT_GT(*std::max_element(steps.begin(), steps.end()), 0.0f);
+}
+
+INSTANTIATE_TEST_SUITE_P(DispatchScenes, DispatchScene, ::testing::ValuesIn(scenes_in(source_dir() / "scenes")),
+                         [](const auto& info) { return info.param; });
+
+class DispatchHardCase : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(DispatchHardCase, ComputeEqualsFragment) {
+  TempDir dir;
+  const fs::path scene = source_dir() / "scenes" / "hard" / (GetParam() + ".toml");
+  const Image f = render(dir, scene, "fragment", "f.exr", {"--spp", "4", "--aov", "steps,cost"});
+  const Image c = render(dir, scene, "compute", "c.exr", {"--spp", "4", "--aov", "steps,cost"});
+  EXPECT_LE(max_diff(f, c), 1e-5) << GetParam();
+  EXPECT_EQ(channel(f, "steps"), channel(c, "steps")) << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(DispatchHard, DispatchHardCase, ::testing::ValuesIn(scenes_in(source_dir() / "scenes" / "hard")),
+                         [](const auto& info) { return info.param; });
+
+// The seed scene with `map` in place of its map(), in `dir`.
+fs::path seed_with_map(const TempDir& dir, const std::string& name, const std::string& map) {
+  std::string toml = read_file(source_dir() / "scenes/seed.toml");
+  toml = std::regex_replace(toml, std::regex(R"(map\s*=\s*"seed.glsl")"), "map  = \"" + name + ".glsl\"");
+  write_file(dir / (name + ".toml"), toml);
+  write_file(dir / (name + ".glsl"), map);
+  return dir / (name + ".toml");
+}
+
+// A copy of the library whose main() makes the left 8 columns' sample
+// colour NaN (as tests/cli/test_stability.cpp's NanGuard tests do): the
+// flag path of main.frag and post.frag, fused, accumulated and with AOVs.
+TEST(Dispatch, NanGuardCountsTheSamePixels) {
+  TempDir dir;
+  const fs::path shaders = dir / "shaders";
+  fs::copy(source_dir() / "sdf_shaders", shaders, fs::copy_options::recursive);
+  std::string frag = read_file(shaders / "main.frag");
+  const std::string guard = "  bool nonFinite = notFinite(c);";
+  const size_t at = frag.find(guard);
+  ASSERT_NE(at, std::string::npos) << "main.frag changed: update this test";
+  frag.insert(at, "  if (gl_FragCoord.x < 8.0) c = vec3(uintBitsToFloat(0x7fc00000u));\n");
+  write_file(shaders / "main.frag", frag);
+  const std::string seed = (source_dir() / "scenes/seed.toml").string();
+  for (const std::vector<std::string>& extra :
+       {std::vector<std::string>{"--spp", "1"}, {"--spp", "4"}, {"--spp", "4", "--aov", "depth"}}) {
+    for (const std::string d : {"fragment", "compute"}) {
+      std::vector<std::string> args = {"render", seed, "--size", "96x54", "--shader-dir", shaders.string(),
+                                       "--dispatch", d, "-o", (dir / "x.exr").string()};
+      args.insert(args.end(), extra.begin(), extra.end());
+      const RunResult r = run_marchstudio(args);
+      EXPECT_EQ(r.exit_code, 0) << r.err;
+      EXPECT_NE(r.err.find(" 432 of 5184 pixels have NaN/Inf values"), std::string::npos) << d << ": " << r.err;
+      args.push_back("--strict");
+      args[9] = (dir / "strict.exr").string();  // -o
+      const RunResult s = run_marchstudio(args);
+      EXPECT_EQ(s.exit_code, 1) << d << ": " << s.err;
+      EXPECT_FALSE(fs::exists(dir / "strict.exr")) << d;
+    }
+  }
+}
+
+TEST(Dispatch, BadValueIsOneLineExit2) {
+  TempDir dir;
+  const RunResult r = run_marchstudio({"render", (source_dir() / "scenes/seed.toml").string(), "--size", "16x16",
+                                       "--dispatch", "vertex", "-o", (dir / "x.png").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--dispatch 'vertex'"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+  const RunResult g = run_marchstudio({"render", (source_dir() / "scenes/seed.toml").string(), "--size", "16x16",
+                                       "--dispatch", "compute", "--compute-group", "64x64", "-o",
+                                       (dir / "x.png").string()});
+  EXPECT_EQ(g.exit_code, 2) << g.err;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
+TEST(Dispatch, ShadertoyComputeIsRefused) {
+  TempDir dir;
+  write_file(dir / "toy.glsl",
+             "void mainImage(out vec4 c, in vec2 f) { c = vec4(f / iResolution.xy, 0.0, 1.0); }\n");
+  const RunResult r = run_marchstudio({"render", (dir / "toy.glsl").string(), "--size", "16x16", "--dispatch",
+                                       "compute", "-o", (dir / "x.png").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--dispatch compute draws SDF scenes only"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+  // The fragment pass (and auto, which picks it) still draws it.
+  for (const std::string d : {"fragment", "auto"}) {
+    const RunResult f = run_marchstudio({"render", (dir / "toy.glsl").string(), "--size", "16x16", "--dispatch", d,
+                                         "-o", (dir / (d + ".png")).string()});
+    EXPECT_EQ(f.exit_code, 0) << f.err;
+    EXPECT_TRUE(fs::exists(dir / (d + ".png")));
+  }
+}
+
+TEST(Dispatch, SceneWithDerivativesIsRefused) {
+  TempDir dir;
+  const fs::path scene = seed_with_map(dir, "deriv",
+                                       "// fwidth( in a comment is no call\n"
+                                       "vec2 map(vec3 p) {\n"
+                                       "  return vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), 1.0 + 0.0 * dFdx(p.x)), MAT_BALL);\n"
+                                       "}\n");
+  const RunResult r = run_marchstudio(
+      {"render", scene.string(), "--size", "16x16", "--dispatch", "compute", "-o", (dir / "x.png").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("calls dFdx()"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
+// No dFdx/dFdy/fwidth call reachable from the scene path: the library and
+// every shipped scene, comments aside.
+TEST(Dispatch, LibraryAndScenesAreDerivativeFree) {
+  const std::regex call(R"(\b(dFdx|dFdy|fwidth)(Fine|Coarse)?\s*\()");
+  std::vector<fs::path> files;
+  for (const fs::path& d : {source_dir() / "sdf_shaders", source_dir() / "scenes", source_dir() / "scenes/hard"})
+    for (const auto& e : fs::directory_iterator(d))
+      if (e.path().extension() == ".glsl" || e.path().extension() == ".frag") files.push_back(e.path());
+  ASSERT_GT(files.size(), 20u);
+  for (const fs::path& f : files) {
+    std::string text = read_file(f);
+    text = std::regex_replace(text, std::regex(R"(//[^\n]*)"), "");
+    EXPECT_FALSE(std::regex_search(text, call)) << f;
+  }
+}
+
+}  // namespace
+}  // namespace ms::test
