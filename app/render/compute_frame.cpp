@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "render/aov.h"
+#include "render/bloom.h"
 #include "render/samples.h"
 #include "render/tiles.h"
 #include "render/uniforms.h"
@@ -77,8 +78,8 @@ void ComputeFrameRenderer::draw(const Program& main, const UniformFn& set_unifor
                                 const FrameParams& p, ComputeGroup group) {
   const int end = p.sample_end < 0 ? std::max(p.spp, 1) : p.sample_end;
   const int begin = std::clamp(p.sample_begin, 0, end);
-  if (p.fused_post && (p.spp != 1 || p.aovs || end != 1))
-    fail_system("internal: a fused post pass needs one sample per pixel and no AOVs");
+  if (p.fused_post && (p.spp != 1 || p.aovs || end != 1 || p.bloom))
+    fail_system("internal: a fused post pass needs one sample per pixel, no AOVs and no bloom");
   const int images = p.aovs ? 1 + kAovTargets : 1;
   check_frame_size(ctx_.info(), p.width, p.height, images + 1);
   if (p.width != width_ || p.height != height_ || !result_) {
@@ -144,8 +145,21 @@ void ComputeFrameRenderer::draw(const Program& main, const UniformFn& set_unifor
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
     glBindSampler(0, 0);
+    if (p.bloom) {  // render/bloom.h, as FrameRenderer runs it
+      p.bloom->run(accum_->tex[0], p.width, p.height, 1.0f / static_cast<float>(spp_));
+      glViewport(0, 0, p.width, p.height);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);
     glUseProgram(post.id());
+    if (p.bloom) {
+      glActiveTexture(GL_TEXTURE1);
+      glBindSampler(1, 0);
+      glBindTexture(GL_TEXTURE_2D, p.bloom->texture());
+      glUniform1i(post.loc("uBloom"), 1);
+      glUniform1f(post.loc("uBloomIntensity"), p.bloom->intensity());
+    } else if (post.loc("uBloom") >= 0) {
+      fail_system("internal: a post pass with bloom drawn without its bloom stage");
+    }
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, accum_->tex[0]);
     glUniform1i(post.loc("uAccum"), 0);

@@ -37,8 +37,8 @@ class ComputeFrameRenderer {
   ComputeFrameRenderer(const ComputeFrameRenderer&) = delete;
   ComputeFrameRenderer& operator=(const ComputeFrameRenderer&) = delete;
 
-  // As FrameRenderer::draw, `main` being a compute program from
-  // wrap_compute() with `group`. Not yet: FrameParams::bloom (throws).
+  // As FrameRenderer::draw (bloom included), `main` being a compute
+  // program from wrap_compute() with `group`.
   void draw(const Program& main, const UniformFn& set_uniforms, const Program& post, const FrameParams& p,
             ComputeGroup group = {});
   Image read_color() const;
