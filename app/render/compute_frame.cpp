@@ -145,28 +145,7 @@ void ComputeFrameRenderer::draw(const Program& main, const UniformFn& set_unifor
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
     glBindSampler(0, 0);
-    if (p.bloom) {  // render/bloom.h, as FrameRenderer runs it
-      p.bloom->run(accum_->tex[0], p.width, p.height, 1.0f / static_cast<float>(spp_));
-      glViewport(0, 0, p.width, p.height);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);
-    glUseProgram(post.id());
-    if (p.bloom) {
-      glActiveTexture(GL_TEXTURE1);
-      glBindSampler(1, 0);
-      glBindTexture(GL_TEXTURE_2D, p.bloom->texture());
-      glUniform1i(post.loc("uBloom"), 1);
-      glUniform1f(post.loc("uBloomIntensity"), p.bloom->intensity());
-    } else if (post.loc("uBloom") >= 0) {
-      fail_system("internal: a post pass with bloom drawn without its bloom stage");
-    }
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, accum_->tex[0]);
-    glUniform1i(post.loc("uAccum"), 0);
-    glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(spp_));
-    glUniform1f(post.loc("uExposure"), p.exposure);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    draw_bloom_and_post(post, accum_->tex[0], result_->fbo, p, spp_);  // render/frame.h, FrameRenderer's own
   }
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     fail_system("GL error " + std::to_string(err) + " while rendering (compute dispatch)");

@@ -102,6 +102,31 @@ FrameRenderer::FrameRenderer(const Context& ctx) : ctx_(ctx) { glGenVertexArrays
 
 FrameRenderer::~FrameRenderer() { glDeleteVertexArrays(1, &vao_); }  // targets free themselves
 
+void draw_bloom_and_post(const Program& post, GLuint accum, GLuint result_fbo, const FrameParams& p, int samples) {
+  if (p.bloom) {  // render/bloom.h: its passes at their own size, then the post pass adds the result
+    p.bloom->run(accum, p.width, p.height, 1.0f / static_cast<float>(samples));
+    glViewport(0, 0, p.width, p.height);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, result_fbo);
+  glUseProgram(post.id());
+  if (p.bloom) {
+    glActiveTexture(GL_TEXTURE1);
+    glBindSampler(1, 0);
+    glBindTexture(GL_TEXTURE_2D, p.bloom->texture());
+    glUniform1i(post.loc("uBloom"), 1);
+    glUniform1f(post.loc("uBloomIntensity"), p.bloom->intensity());
+  } else if (post.loc("uBloom") >= 0) {
+    fail_system("internal: a post pass with bloom drawn without its bloom stage");
+  }
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, accum);
+  glUniform1i(post.loc("uAccum"), 0);
+  glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(samples));
+  glUniform1f(post.loc("uExposure"), p.exposure);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, const Program& post,
                          const FrameParams& p) {
   const int end = p.sample_end < 0 ? std::max(p.spp, 1) : p.sample_end;
@@ -180,27 +205,7 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   // The post pass (not for a fused main pass, which wrote the result).
   if (!p.fused_post) {
     glBindSampler(0, 0);  // a channel's sampler object must not filter the accumulation buffer
-    if (p.bloom) {  // render/bloom.h: its passes at their own size, then the post pass adds the result
-      p.bloom->run(accum_->tex[0], p.width, p.height, 1.0f / static_cast<float>(spp_));
-      glViewport(0, 0, p.width, p.height);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, result_->fbo);
-    glUseProgram(post.id());
-    if (p.bloom) {
-      glActiveTexture(GL_TEXTURE1);
-      glBindSampler(1, 0);
-      glBindTexture(GL_TEXTURE_2D, p.bloom->texture());
-      glUniform1i(post.loc("uBloom"), 1);
-      glUniform1f(post.loc("uBloomIntensity"), p.bloom->intensity());
-    } else if (post.loc("uBloom") >= 0) {
-      fail_system("internal: a post pass with bloom drawn without its bloom stage");
-    }
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, accum_->tex[0]);
-    glUniform1i(post.loc("uAccum"), 0);
-    glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(spp_));
-    glUniform1f(post.loc("uExposure"), p.exposure);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    draw_bloom_and_post(post, accum_->tex[0], result_->fbo, p, spp_);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)

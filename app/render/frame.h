@@ -71,6 +71,11 @@ int gl_max_height(const GlInfo& info);
 
 struct RenderTarget;  // an RGBA32F texture with its framebuffer (frame.cpp)
 
+// The end of every frame, fragment or compute: p.bloom's passes on the
+// accumulated `accum` (when set), then `post` into `result_fbo`, averaging
+// over `samples`. Leaves the default framebuffer bound.
+void draw_bloom_and_post(const Program& post, GLuint accum, GLuint result_fbo, const FrameParams& p, int samples);
+
 class FrameRenderer {
  public:
   explicit FrameRenderer(const Context& ctx);
