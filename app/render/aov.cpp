@@ -82,6 +82,27 @@ Image append_channels(const Image& a, const Image& b) {
   return out;
 }
 
+Image aovs_from_targets(const std::vector<std::vector<float>>& targets, int width, int height, int samples) {
+  Image img;
+  img.width = width;
+  img.height = height;
+  img.channels = kAovChannels;
+  const size_t npix = static_cast<size_t>(width) * height, nch = kAovChannels.size();
+  img.pixels.resize(npix * nch);
+  const float inv = 1.0f / static_cast<float>(samples);
+  for (size_t a = 0; a < targets.size(); ++a) {
+    const std::vector<float>& px = targets[a];
+    for (size_t p = 0; p < npix; ++p) {
+      if (a == 0) {
+        img.pixels[p * nch] = px[p * 4 + 3] * inv;
+      } else {
+        for (size_t c = 0; c < 4; ++c) img.pixels[p * nch + 1 + (a - 1) * 4 + c] = px[p * 4 + c] * inv;
+      }
+    }
+  }
+  return img;
+}
+
 float steps_heat_position(float steps) {
   return std::clamp(std::log2(std::max(steps, 0.0f) + 1.0f) / 8.0f, 0.0f, 1.0f);
 }

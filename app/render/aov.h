@@ -39,6 +39,13 @@ Image select_channels(const Image& src, const std::vector<std::string>& names);
 
 // a's channels followed by b's, pixel by pixel; sizes must match.
 Image append_channels(const Image& a, const Image& b);
+// The AOV render targets after the colour (locations 1..3: outGeom, outMisc, outCost).
+constexpr int kAovTargets = 3;
+// The AOV image from the accumulated targets as read back (RGBA floats,
+// top row first, `samples` added into each): target 0's alpha counts the
+// hits, targets 1..kAovTargets hold 4 channels each in kAovChannels order
+// after `hit`. Channels kAovChannels, each the mean over the samples.
+Image aovs_from_targets(const std::vector<std::vector<float>>& targets, int width, int height, int samples);
 
 // DEBUG_VIEW 1's fixed log scale, exactly as stepsHeatPosition() in
 // aov.glsl: log2(steps + 1) / 8 clamped to [0,1] (3 -> .25, 15 -> .5,

@@ -67,7 +67,6 @@ struct ComputeTargets {
 };
 
 namespace {
-constexpr int kAovTargets = 3;  // after the colour: outGeom, outMisc, outCost
 }
 
 ComputeFrameRenderer::ComputeFrameRenderer(const Context& ctx) : ctx_(ctx) { glGenVertexArrays(1, &vao_); }
@@ -162,25 +161,10 @@ Image ComputeFrameRenderer::read_color() const {
 }
 
 Image ComputeFrameRenderer::read_aovs() const {
-  Image img;
-  if (!aovs_ || !accum_ || accum_->count() != 1 + kAovTargets) return img;
-  img.width = width_;
-  img.height = height_;
-  img.channels = kAovChannels;
-  const size_t npix = static_cast<size_t>(width_) * height_, nch = kAovChannels.size();
-  img.pixels.resize(npix * nch);
-  // As FrameRenderer::read_aovs: image 0's alpha counts the hits, 1..3 hold
-  // 4 channels each in kAovChannels order after `hit`.
-  const float inv = 1.0f / static_cast<float>(spp_);
-  for (int a = 0; a <= kAovTargets; ++a) {
-    const std::vector<float> px = accum_->read(a);
-    for (size_t q = 0; q < npix; ++q) {
-      if (a == 0) img.pixels[q * nch] = px[q * 4 + 3] * inv;
-      else
-        for (int c = 0; c < 4; ++c) img.pixels[q * nch + 1 + (a - 1) * 4 + c] = px[q * 4 + c] * inv;
-    }
-  }
-  return img;
+  if (!aovs_ || !accum_ || accum_->count() != 1 + kAovTargets) return {};
+  std::vector<std::vector<float>> targets;
+  for (int a = 0; a <= kAovTargets; ++a) targets.push_back(accum_->read(a));
+  return aovs_from_targets(targets, width_, height_, spp_);
 }
 
 Still render_still_compute(const Context& ctx, const PassSource& pass, const Program& post, const StillFrame& f,

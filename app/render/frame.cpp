@@ -14,7 +14,6 @@ namespace ms {
 namespace {
 
 // The AOV attachments after the colour one (outGeom, outMisc, outCost).
-constexpr int kAovTargets = 3;
 
 // Images are stored top row first; GL's first row is the bottom one.
 void flip_rows(Image& img) {
@@ -223,27 +222,10 @@ Image FrameRenderer::read_color() const {
 }
 
 Image FrameRenderer::read_aovs() const {
-  Image img;
-  if (!aovs_ || !accum_ || accum_->count() != 1 + kAovTargets) return img;
-  img.width = width_;
-  img.height = height_;
-  img.channels = kAovChannels;
-  const size_t npix = static_cast<size_t>(width_) * height_, nch = kAovChannels.size();
-  img.pixels.resize(npix * nch);
-  // Attachment 0's alpha counts the hits; 1..3 hold 4 channels each, in
-  // kAovChannels order after `hit`.
-  const float inv = 1.0f / static_cast<float>(spp_);
-  for (int a = 0; a <= kAovTargets; ++a) {
-    const std::vector<float> px = read_attachment(accum_->fbo, a, width_, height_);
-    for (size_t p = 0; p < npix; ++p) {
-      if (a == 0) {
-        img.pixels[p * nch] = px[p * 4 + 3] * inv;
-      } else {
-        for (int c = 0; c < 4; ++c) img.pixels[p * nch + 1 + (a - 1) * 4 + c] = px[p * 4 + c] * inv;
-      }
-    }
-  }
-  return img;
+  if (!aovs_ || !accum_ || accum_->count() != 1 + kAovTargets) return {};
+  std::vector<std::vector<float>> targets;
+  for (int a = 0; a <= kAovTargets; ++a) targets.push_back(read_attachment(accum_->fbo, a, width_, height_));
+  return aovs_from_targets(targets, width_, height_, spp_);
 }
 
 GLuint FrameRenderer::color_texture() const { return result_ ? result_->tex[0] : 0; }

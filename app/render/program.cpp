@@ -77,32 +77,28 @@ Program::Program(const std::string& vertex_source, const ShaderSource& fragment)
   id_ = glCreateProgram();
   glAttachShader(id_, vs);
   glAttachShader(id_, fs);
-  glLinkProgram(id_);
-  glDeleteShader(vs);
+  glDeleteShader(vs);  // flagged: freed with the program
   glDeleteShader(fs);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    const std::string log = program_log(id_);
-    glDeleteProgram(id_);
-    id_ = 0;
-    fail_with_log("shader link", log, fragment);
-  }
+  link(fragment, "shader link");
 }
 
 Program::Program(Compute, const ShaderSource& compute) {
   GLuint cs = compile(GL_COMPUTE_SHADER, compute.text, compute, "compute shader compile");
   id_ = glCreateProgram();
   glAttachShader(id_, cs);
-  glLinkProgram(id_);
   glDeleteShader(cs);
+  link(compute, "compute shader link");
+}
+
+void Program::link(const ShaderSource& errors_in, const char* what) {
+  glLinkProgram(id_);
   GLint ok = GL_FALSE;
   glGetProgramiv(id_, GL_LINK_STATUS, &ok);
   if (!ok) {
     const std::string log = program_log(id_);
     glDeleteProgram(id_);
     id_ = 0;
-    fail_with_log("compute shader link", log, compute);
+    fail_with_log(what, log, errors_in);
   }
 }
 

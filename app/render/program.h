@@ -24,6 +24,7 @@ class Program {
   GLint loc(const std::string& name) const { return glGetUniformLocation(id_, name.c_str()); }
 
  private:
+  void link(const ShaderSource& errors_in, const char* what);  // throws the log mapped to errors_in's files
   GLuint id_ = 0;
 };
 
