@@ -34,10 +34,6 @@ void check_compute_input(Dispatch d, const LoadedInput& in, bool tiled_still) {
   if (in.passes.size() != 1)
     fail_input("--dispatch compute draws a scene of one pass only", {}, 0, "--dispatch",
                "give --dispatch fragment");
-  for (const GraphInput& i : in.passes.back().inputs)
-    if (i.kind != InputKind::none)
-      fail_input("--dispatch compute does not bind a scene's texture inputs yet ([sky] environment)", {}, 0,
-                 "--dispatch", "give --dispatch fragment");
   if (tiled_still)
     fail_input("--dispatch compute does not draw a still in tiles yet (past the GL limits or --tile-still)", {}, 0,
                "--dispatch", "give --dispatch fragment");

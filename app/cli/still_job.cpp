@@ -196,7 +196,7 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
     return;
   }
   Still out = job.dispatch == Dispatch::compute  // the same scene shader as a compute pass (render/compute_frame.h)
-                  ? render_still_compute(ctx, in.passes.back(), *post_prog, still, job.compute_group)
+                  ? render_still_compute(ctx, graph, *post_prog, still, job.compute_group)
                   : render_still(renderer, graph, *post_prog, still);
   Image img = std::move(out.color);
   check_nonfinite(count_nonfinite_pixels(img, aovs ? &out.aovs : nullptr) + out.flagged);

@@ -9,7 +9,6 @@
 #include "render/bloom.h"
 #include "render/samples.h"
 #include "render/tiles.h"
-#include "render/uniforms.h"
 
 namespace ms {
 
@@ -65,9 +64,6 @@ struct ComputeTargets {
     return out;
   }
 };
-
-namespace {
-}
 
 ComputeFrameRenderer::ComputeFrameRenderer(const Context& ctx) : ctx_(ctx) { glGenVertexArrays(1, &vao_); }
 
@@ -167,22 +163,26 @@ Image ComputeFrameRenderer::read_aovs() const {
   return aovs_from_targets(targets, width_, height_, spp_);
 }
 
-Still render_still_compute(const Context& ctx, const PassSource& pass, const Program& post, const StillFrame& f,
+Still render_still_compute(const Context& ctx, PassGraph& graph, const Program& post, const StillFrame& f,
                            ComputeGroup group) {
+  const PassSource& pass = graph.pass(graph.size() - 1);
   if (pass.uniforms != PassUniforms::scene || !f.in.scene)
     fail_input("--dispatch compute draws SDF scenes only", {}, 0, "--dispatch");
   const Program main(Program::Compute{}, wrap_compute(pass.source, group));
   ComputeFrameRenderer r(ctx);
   const FrameParams& p = f.params;
-  r.draw(main, [&](const Program& prog) {
-    set_scene_uniforms(prog, *f.in.scene, p.resolution_width(), p.resolution_height(), f.in.time, f.in.frame);
-    if (f.in.extra) (*f.in.extra)(prog);
-  }, post, p, group);
+  draw_still(graph, f, [&](const Program&, const UniformFn& set_uniforms) { r.draw(main, set_uniforms, post, p, group); });
   Still out;
   out.color = r.read_color();
   out.flagged = take_flagged(out.color);
   if (p.aovs) out.aovs = r.read_aovs();
   return out;
+}
+
+Still render_still_compute(const Context& ctx, const PassSource& pass, const Program& post, const StillFrame& f,
+                           ComputeGroup group) {
+  PassGraph graph({pass});
+  return render_still_compute(ctx, graph, post, f, group);
 }
 
 }  // namespace ms

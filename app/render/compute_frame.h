@@ -10,6 +10,8 @@
 //   ComputeFrameRenderer r(ctx);
 //   r.draw(main, set_uniforms, post, params);   // params as FrameRenderer's
 //   Image img = r.read_color();
+//   // or through the pass graph, which binds the pass's inputs:
+//   graph.draw([&](const Program&, const UniformFn& u) { r.draw(main, u, post, params); }, in, params);
 #pragma once
 #include <memory>
 #include <string>
@@ -52,8 +54,13 @@ class ComputeFrameRenderer {
   std::unique_ptr<ComputeTargets> accum_, result_;
 };
 
-// A still of an SDF scene (a graph of one pass, `pass`) drawn with the
-// compute dispatch: what render_still() returns for it with FrameRenderer.
+// A still of `graph` with its last pass (the scene) drawn by the compute
+// dispatch: what render_still() returns with FrameRenderer. The graph binds
+// that pass's texture inputs ([sky] environment) and sets its uniforms as
+// for the fragment pass.
+Still render_still_compute(const Context& ctx, PassGraph& graph, const Program& post, const StillFrame& f,
+                           ComputeGroup group = {});
+// The same for an SDF scene of one pass, `pass` (a graph made here).
 Still render_still_compute(const Context& ctx, const PassSource& pass, const Program& post, const StillFrame& f,
                            ComputeGroup group = {});
 

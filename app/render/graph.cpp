@@ -409,6 +409,11 @@ void PassGraph::step_buffers(const FrameInputs& in, const FrameParams& p) {
 
 void PassGraph::draw(FrameRenderer& renderer, const Program& post, const FrameInputs& in, const FrameParams& p,
                      bool step) {
+  draw([&](const Program& prog, const UniformFn& set_uniforms) { renderer.draw(prog, set_uniforms, post, p); }, in, p,
+       step);
+}
+
+void PassGraph::draw(const DrawLast& draw_last, const FrameInputs& in, const FrameParams& p, bool step) {
   if (step) step_buffers(in, p);
   else {
     ensure_buffers(p.width, p.height);
@@ -417,7 +422,7 @@ void PassGraph::draw(FrameRenderer& renderer, const Program& post, const FrameIn
   const size_t last = passes_.size() - 1;
   const PassSource& frame_pass = passes_[last];
   const double t0 = timing_ ? finished_ms() : 0.0;
-  renderer.draw(*programs_[last], [&](const Program& prog) {
+  draw_last(*programs_[last], [&](const Program& prog) {
     float res[4][3];
     bind_inputs(last, p.width, p.height, res);
     if (frame_pass.uniforms == PassUniforms::shadertoy) {
@@ -431,7 +436,7 @@ void PassGraph::draw(FrameRenderer& renderer, const Program& post, const FrameIn
       set_scene_uniforms(prog, *in.scene, p.resolution_width(), p.resolution_height(), in.time, in.frame);
     }
     if (in.extra) (*in.extra)(prog);
-  }, post, p);
+  });
   unbind_samplers();
   if (timing_) pass_ms_[last] = finished_ms() - t0;
 }

@@ -100,6 +100,12 @@ class PassGraph {
   // the last pass draws.
   void draw(FrameRenderer& renderer, const Program& post, const FrameInputs& in, const FrameParams& p,
             bool step = true);
+  // The same frame with the last pass drawn by `draw_last`, given that
+  // pass's program and its uniforms (its inputs bound on units 0..3 when
+  // they run): the compute dispatch draws the scene pass this way
+  // (render/compute_frame.h) with a program of its own.
+  using DrawLast = std::function<void(const Program& last, const UniformFn& set_uniforms)>;
+  void draw(const DrawLast& draw_last, const FrameInputs& in, const FrameParams& p, bool step = true);
   // The buffer passes alone: a frame whose image nobody looks at (the
   // frames a still replays before its own).
   void step_buffers(const FrameInputs& in, const FrameParams& p);
@@ -112,6 +118,7 @@ class PassGraph {
   size_t size() const { return passes_.size(); }
   const std::string& name(size_t pass) const { return passes_[pass].name; }
   const Program& program(size_t pass) const { return *programs_[pass]; }
+  const PassSource& pass(size_t pass) const { return passes_[pass]; }
   bool stateful() const { return passes_.size() > 1; }
   // The buffers some pass writes (0..3), ascending, then kCubeA for a Cube A pass.
   std::vector<int> buffers() const;

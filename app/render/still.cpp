@@ -12,8 +12,14 @@ int still_frame_number(double time, double fps) {
 }
 
 void draw_still(FrameRenderer& renderer, PassGraph& graph, const Program& post, const StillFrame& f) {
+  draw_still(graph, f, [&](const Program& prog, const UniformFn& set_uniforms) {
+    renderer.draw(prog, set_uniforms, post, f.params);
+  });
+}
+
+void draw_still(PassGraph& graph, const StillFrame& f, const PassGraph::DrawLast& draw_last) {
   if (!graph.stateful()) {
-    graph.draw(renderer, post, f.in, f.params);
+    graph.draw(draw_last, f.in, f.params);
     return;
   }
   const int last = still_frame_number(f.in.time, f.fps);
@@ -24,7 +30,7 @@ void draw_still(FrameRenderer& renderer, PassGraph& graph, const Program& post, 
     in.frame = n;
     in.time = static_cast<float>(static_cast<double>(n) / f.fps);
     if (n < last) graph.step_buffers(in, f.params);  // what later frames read; no image
-    else graph.draw(renderer, post, in, f.params);
+    else graph.draw(draw_last, in, f.params);
   }
 }
 

@@ -35,6 +35,9 @@ int still_frame_number(double time, double fps);
 // Draws the still; the result stays in `renderer` (read_color, read_aovs).
 // Timing loops call this: nothing is read back.
 void draw_still(FrameRenderer& renderer, PassGraph& graph, const Program& post, const StillFrame& f);
+// The same with the last pass drawn by `draw_last` (PassGraph::draw's
+// second form): the compute dispatch's still (render/compute_frame.h).
+void draw_still(PassGraph& graph, const StillFrame& f, const PassGraph::DrawLast& draw_last);
 
 // draw_still(), then the colour (and the AOVs when params.aovs) read back.
 Still render_still(FrameRenderer& renderer, PassGraph& graph, const Program& post, const StillFrame& f);
