@@ -10,43 +10,19 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "scene/schema.h"
 #include "scene/suggest.h"
 
 namespace ms {
 namespace {
 
 constexpr std::string_view kInterpolations[] = {"linear", "smooth"};
-constexpr Range kNonNeg = Range::at_least(0);
-constexpr Range kPositive = Range::above(0);
-
-// What can be animated, one line per value, with the same ranges as the
-// static keys (scene/load.cpp). Strings and enums (type, pattern, tonemap)
-// and integers (sizes, quality) cannot: they change the compiled shader.
-template <class T>
-struct Member {
-  std::string_view key;
-  std::variant<float T::*, glm::vec3 T::*> member;
-  Range range = Range::any();
-};
-const Member<Camera> kCamera[] = {
-    {"position", &Camera::position}, {"target", &Camera::target}, {"up", &Camera::up},
-    {"fov", &Camera::fov_deg, Range::open(0, 180)},
-};
-const Member<Light> kLight[] = {
-    {"position", &Light::position},   {"direction", &Light::direction},
-    {"color", &Light::color, kNonNeg}, {"intensity", &Light::intensity, kNonNeg},
-    {"size", &Light::size, kNonNeg},   {"attenuation", &Light::attenuation, kNonNeg},
-};
-const Member<Material> kMaterial[] = {
-    {"color", &Material::color, kNonNeg},          {"ambient", &Material::ambient, kNonNeg},
-    {"diffuse", &Material::diffuse, kNonNeg},      {"specular", &Material::specular, kNonNeg},
-    {"shininess", &Material::shininess, kPositive}, {"reflectivity", &Material::reflectivity, Range::closed(0, 1)},
-    {"color2", &Material::color2, kNonNeg},        {"pattern_scale", &Material::pattern_scale, kPositive},
-    {"pattern_velocity", &Material::pattern_velocity},
-};
-const Member<Sky> kSky[] = {
-    {"horizon", &Sky::horizon, kNonNeg}, {"zenith", &Sky::zenith, kNonNeg}, {"ambient", &Sky::ambient, kNonNeg}};
-const Member<RenderSettings> kRender[] = {{"exposure", &RenderSettings::exposure, kPositive}};
+// What can be animated: the schema's own fields (scene/schema.h, so the
+// ranges have one home) that are floats or vectors, and of [sky] and
+// [render] only these. Strings, enums, integers and the environment's
+// rotation and intensity cannot: they change the compiled shader.
+constexpr std::string_view kAnimatableSky[] = {"horizon", "zenith", "ambient"};
+constexpr std::string_view kAnimatableRender[] = {"exposure"};
 
 // A resolved target: where its value lives in one Scene, or why it cannot.
 struct Slot {
@@ -58,19 +34,27 @@ struct Slot {
   int arity() const { return vec ? 3 : 1; }
 };
 
+template <class T>
+bool animatable(const Field<T>& f, Keys only) {
+  const bool numeric = std::holds_alternative<float T::*>(f.member) || std::holds_alternative<glm::vec3 T::*>(f.member);
+  return numeric && (only.empty() || std::find(only.begin(), only.end(), f.key) != only.end());
+}
+
 template <class T, std::size_t N>
-Slot member_slot(T& obj, const Member<T> (&table)[N], const std::string& object, const std::string& key) {
+Slot member_slot(T& obj, const Field<T> (&table)[N], const std::string& object, const std::string& key,
+                 Keys only = {}) {
   Slot s;
-  for (const Member<T>& m : table) {
-    if (m.key != key) continue;
-    if (auto* f = std::get_if<float T::*>(&m.member)) s.scalar = &(obj.**f);
-    else s.vec = &(obj.*std::get<glm::vec3 T::*>(m.member));
-    s.range = m.range;
+  for (const Field<T>& f : table) {
+    if (f.key != key || !animatable(f, only)) continue;
+    if (auto* m = std::get_if<float T::*>(&f.member)) s.scalar = &(obj.**m);
+    else s.vec = &(obj.*std::get<glm::vec3 T::*>(f.member));
+    s.range = f.range;
     s.canonical = object + "." + key;
     return s;
   }
   std::vector<std::string_view> keys;
-  for (const Member<T>& m : table) keys.push_back(m.key);
+  for (const Field<T>& f : table)
+    if (animatable(f, only)) keys.push_back(f.key);
   s.error = quote(key) + " cannot be animated on " + object;
   s.hint = did_you_mean(key, keys);
   if (s.hint.empty()) {
@@ -89,9 +73,9 @@ Slot find_slot(const std::string& target, Scene& scene) {
   // stack (a long fuzz_animation input). No valid target is near this long.
   constexpr std::size_t kMaxTarget = 128;
   if (target.size() <= kMaxTarget && std::regex_match(target, m, plain)) {
-    if (m[1] == "camera") return member_slot(scene.camera, kCamera, "camera", m[2]);
-    if (m[1] == "sky") return member_slot(scene.sky, kSky, "sky", m[2]);
-    return member_slot(scene.render, kRender, "render", m[2]);
+    if (m[1] == "camera") return member_slot(scene.camera, kCameraFields, "camera", m[2]);
+    if (m[1] == "sky") return member_slot(scene.sky, kSkyFields, "sky", m[2], kAnimatableSky);
+    return member_slot(scene.render, kRenderFields, "render", m[2], kAnimatableRender);
   }
   Slot s;
   if (target.size() > kMaxTarget || !std::regex_match(target, m, indexed)) {
@@ -109,9 +93,9 @@ Slot find_slot(const std::string& target, Scene& scene) {
     s.hint = std::string("the ") + std::string(m[1]) + " are numbered from 0 in file order";
     return s;
   }
-  if (!light) return member_slot(scene.materials[i], kMaterial, object, m[3]);
+  if (!light) return member_slot(scene.materials[i], kMaterialFields, object, m[3]);
   Light& l = scene.lights[i];
-  s = member_slot(l, kLight, object, m[3]);
+  s = member_slot(l, kLightFields, object, m[3]);
   // As for the static keys: a value the light's type ignores is a mistake.
   const bool point = l.kind == LightKind::point;
   const std::string key = m[3];
