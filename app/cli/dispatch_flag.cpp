@@ -26,7 +26,7 @@ ComputeGroup parse_compute_group(const std::string& text) {
 
 Dispatch resolve_dispatch(Dispatch d) { return d == Dispatch::automatic ? Dispatch::fragment : d; }
 
-void check_compute_input(Dispatch d, const LoadedInput& in, bool tiled_still) {
+void check_compute_input(Dispatch d, const LoadedInput& in, bool /*tiled_still: compute draws tiles too*/) {
   if (d != Dispatch::compute) return;
   if (in.shadertoy)
     fail_input("--dispatch compute draws SDF scenes only; a Shadertoy shader runs as a fragment pass", {}, 0,
@@ -34,9 +34,6 @@ void check_compute_input(Dispatch d, const LoadedInput& in, bool tiled_still) {
   if (in.passes.size() != 1)
     fail_input("--dispatch compute draws a scene of one pass only", {}, 0, "--dispatch",
                "give --dispatch fragment");
-  if (tiled_still)
-    fail_input("--dispatch compute does not draw a still in tiles yet (past the GL limits or --tile-still)", {}, 0,
-               "--dispatch", "give --dispatch fragment");
 }
 
 }  // namespace ms

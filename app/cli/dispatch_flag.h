@@ -18,8 +18,9 @@ ComputeGroup parse_compute_group(const std::string& text);
 // What `auto` draws with: the fragment pass for now (no probe yet).
 Dispatch resolve_dispatch(Dispatch d);
 // Throws bad_input (key "--dispatch") when `d` is compute and the input is
-// not an SDF scene (a Shadertoy shader or a project with buffers), or the
-// still is drawn in tiles (cli/tiled_render.h), which compute does not do yet.
+// not an SDF scene (a Shadertoy shader or a project with buffers). A still
+// drawn in tiles (cli/tiled_render.h) is drawn by compute too: `tiled_still`
+// is kept for the callers and no longer refuses.
 void check_compute_input(Dispatch d, const LoadedInput& in, bool tiled_still);
 
 }  // namespace ms

@@ -187,17 +187,21 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
                                               " spp=" + std::to_string(fp.spp)}};
   add_fingerprint(meta, frame_fingerprint(job_fingerprint(in, fp, p.post_src, job.aov_channels, scene.shadertoy.fps),
                                           job.frame, time));
+  // --dispatch compute: the same scene shader as a compute pass, compiled once (render/compute_frame.h).
+  std::optional<ComputeStill> compute;
+  if (job.dispatch == Dispatch::compute) compute.emplace(ctx, graph, job.compute_group);
   if (tiling.tiled()) {  // rendered and written band by band
-    render_tiled_file({output, job.aov_channels, meta, watchdog ? &*watchdog : nullptr, &deadline, check_nonfinite},
+    StillFn draw_tile;
+    if (compute) draw_tile = [&](const StillFrame& piece) { return compute->render(graph, *post_prog, piece); };
+    render_tiled_file({output, job.aov_channels, meta, watchdog ? &*watchdog : nullptr, &deadline, check_nonfinite,
+                       draw_tile},
                       renderer, graph, *post_prog, still, tiling);
     if (job.verbose)
       std::fprintf(stderr, "marchstudio: context %.1f ms, compile %.1f ms, render and write %.1f ms (tiles of %dx%d)\n",
                    t_context * 1e3, t_compile * 1e3, clock.lap() * 1e3, tiling.tile_width, tiling.band_height);
     return;
   }
-  Still out = job.dispatch == Dispatch::compute  // the same scene shader as a compute pass (render/compute_frame.h)
-                  ? render_still_compute(ctx, graph, *post_prog, still, job.compute_group)
-                  : render_still(renderer, graph, *post_prog, still);
+  Still out = compute ? compute->render(graph, *post_prog, still) : render_still(renderer, graph, *post_prog, still);
   Image img = std::move(out.color);
   check_nonfinite(count_nonfinite_pixels(img, aovs ? &out.aovs : nullptr) + out.flagged);
   if (aovs) img = append_channels(img, select_channels(out.aovs, job.aov_channels));

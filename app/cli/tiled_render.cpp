@@ -86,8 +86,11 @@ void render_tiled_file(const TiledFile& job, FrameRenderer& renderer, PassGraph&
   } end_bar{progress};
   auto last = std::chrono::steady_clock::now();
   long long nonfinite = 0;
+  const StillFn draw_tile = job.draw_tile ? job.draw_tile : StillFn([&](const StillFrame& piece) {
+    return render_still(renderer, graph, post, piece);
+  });
   render_still_tiled(
-      renderer, graph, post, still, tiling,
+      draw_tile, graph, still, tiling,
       [&](StillBand& band) {
         Still& s = band.pixels;
         nonfinite += count_nonfinite_pixels(s.color, fp.aovs ? &s.aovs : nullptr) + s.flagged;

@@ -20,6 +20,7 @@
 #include "core/deadline.h"
 #include "io/image_io.h"
 #include "render/still.h"
+#include "render/tiled_still.h"
 #include "render/tiles.h"
 
 namespace ms {
@@ -41,6 +42,9 @@ struct TiledFile {
   // Called with the NaN/Inf pixels counted over every band, before the
   // file is finished: a throw (--strict) leaves no file.
   std::function<void(long long)> check_nonfinite;
+  // Draws one tile's still; empty: render_still() with the renderer and
+  // graph given (the fragment pass). --dispatch compute: ComputeStill.
+  StillFn draw_tile;
 };
 
 void render_tiled_file(const TiledFile& job, FrameRenderer& renderer, PassGraph& graph, const Program& post,

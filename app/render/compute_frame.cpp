@@ -163,20 +163,36 @@ Image ComputeFrameRenderer::read_aovs() const {
   return aovs_from_targets(targets, width_, height_, spp_);
 }
 
+namespace {
+
+const PassSource& scene_pass(const PassGraph& graph) {
+  const PassSource& pass = graph.pass(graph.size() - 1);
+  if (pass.uniforms != PassUniforms::scene)
+    fail_input("--dispatch compute draws SDF scenes only", {}, 0, "--dispatch");
+  return pass;
+}
+
+}  // namespace
+
+ComputeStill::ComputeStill(const Context& ctx, const PassGraph& graph, ComputeGroup group)
+    : main_(Program::Compute{}, wrap_compute(scene_pass(graph).source, group)), renderer_(ctx), group_(group) {}
+
+Still ComputeStill::render(PassGraph& graph, const Program& post, const StillFrame& f) {
+  if (!f.in.scene) fail_system("internal: a scene pass without its scene");
+  const FrameParams& p = f.params;
+  draw_still(graph, f, [&](const Program&, const UniformFn& set_uniforms) {
+    renderer_.draw(main_, set_uniforms, post, p, group_);
+  });
+  Still out;
+  out.color = renderer_.read_color();
+  out.flagged = take_flagged(out.color);
+  if (p.aovs) out.aovs = renderer_.read_aovs();
+  return out;
+}
+
 Still render_still_compute(const Context& ctx, PassGraph& graph, const Program& post, const StillFrame& f,
                            ComputeGroup group) {
-  const PassSource& pass = graph.pass(graph.size() - 1);
-  if (pass.uniforms != PassUniforms::scene || !f.in.scene)
-    fail_input("--dispatch compute draws SDF scenes only", {}, 0, "--dispatch");
-  const Program main(Program::Compute{}, wrap_compute(pass.source, group));
-  ComputeFrameRenderer r(ctx);
-  const FrameParams& p = f.params;
-  draw_still(graph, f, [&](const Program&, const UniformFn& set_uniforms) { r.draw(main, set_uniforms, post, p, group); });
-  Still out;
-  out.color = r.read_color();
-  out.flagged = take_flagged(out.color);
-  if (p.aovs) out.aovs = r.read_aovs();
-  return out;
+  return ComputeStill(ctx, graph, group).render(graph, post, f);
 }
 
 Still render_still_compute(const Context& ctx, const PassSource& pass, const Program& post, const StillFrame& f,

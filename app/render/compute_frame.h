@@ -54,6 +54,20 @@ class ComputeFrameRenderer {
   std::unique_ptr<ComputeTargets> accum_, result_;
 };
 
+// The compute dispatch of a graph's last pass, its program compiled once:
+// stills, or the tiles of one (render/tiled_still.h), drawn with it.
+class ComputeStill {
+ public:
+  ComputeStill(const Context& ctx, const PassGraph& graph, ComputeGroup group = {});
+  // As render_still(); f.params may be a tile of a larger image.
+  Still render(PassGraph& graph, const Program& post, const StillFrame& f);
+
+ private:
+  Program main_;
+  ComputeFrameRenderer renderer_;
+  ComputeGroup group_;
+};
+
 // A still of `graph` with its last pass (the scene) drawn by the compute
 // dispatch: what render_still() returns with FrameRenderer. The graph binds
 // that pass's texture inputs ([sky] environment) and sets its uniforms as

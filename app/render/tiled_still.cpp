@@ -43,6 +43,12 @@ std::vector<Tile> still_tiles(int width, int height, const StillTiling& t) {
 void render_still_tiled(FrameRenderer& renderer, PassGraph& graph, const Program& post, const StillFrame& f,
                         const StillTiling& t, const std::function<void(StillBand&)>& sink,
                         const TileDoneFn& tile_done) {
+  render_still_tiled([&](const StillFrame& piece) { return render_still(renderer, graph, post, piece); }, graph, f, t,
+                     sink, tile_done);
+}
+
+void render_still_tiled(const StillFn& draw_tile, const PassGraph& graph, const StillFrame& f, const StillTiling& t,
+                        const std::function<void(StillBand&)>& sink, const TileDoneFn& tile_done) {
   if (graph.stateful()) fail_system("internal: a graph with buffers cannot be drawn in tiles");
   const int width = f.params.width, height = f.params.height;
   const std::vector<Tile> tiles = still_tiles(width, height, t);
@@ -57,7 +63,7 @@ void render_still_tiled(FrameRenderer& renderer, PassGraph& graph, const Program
     p.image_height = height;
     p.offset_x = tile.x;
     p.offset_y = tile.y;
-    const Still s = render_still(renderer, graph, post, piece);
+    const Still s = draw_tile(piece);
     if (tile.x == 0) {
       band = StillBand{};
       band.top = height - (tile.y + tile.height);

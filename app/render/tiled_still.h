@@ -36,5 +36,10 @@ std::vector<Tile> still_tiles(int width, int height, const StillTiling& t);
 void render_still_tiled(FrameRenderer& renderer, PassGraph& graph, const Program& post, const StillFrame& f,
                         const StillTiling& t, const std::function<void(StillBand&)>& sink,
                         const TileDoneFn& tile_done = {});
+// The same with each tile drawn by `draw_tile` (a still of the tile's
+// StillFrame): the compute dispatch's tiles (render/compute_frame.h).
+using StillFn = std::function<Still(const StillFrame&)>;
+void render_still_tiled(const StillFn& draw_tile, const PassGraph& graph, const StillFrame& f, const StillTiling& t,
+                        const std::function<void(StillBand&)>& sink, const TileDoneFn& tile_done = {});
 
 }  // namespace ms

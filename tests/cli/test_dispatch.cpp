@@ -130,6 +130,27 @@ TEST(Dispatch, BloomScenesEqualFragment) {
   }
 }
 
+// A still drawn in tiles (the hidden --tile-still, as past the GL limits):
+// each tile a compute dispatch with the whole image's camera, so the bands
+// equal the fragment pass's whole image. 32 does not divide 96x54: short
+// tiles at the right and top.
+TEST(Dispatch, TiledStillsEqualFragment) {
+  TempDir dir;
+  for (const std::string name : {"seed", "envlight"}) {
+    const fs::path scene = source_dir() / "scenes" / (name + ".toml");
+    const std::vector<std::string> exr = {"--spp", "4", "--aov", "steps,cost"};
+    std::vector<std::string> tiled = exr;
+    tiled.insert(tiled.end(), {"--tile-still", "32"});
+    const Image whole = render(dir, scene, "fragment", name + "w.exr", exr);
+    const Image c = render(dir, scene, "compute", name + "c.exr", tiled);
+    EXPECT_LE(max_diff(whole, c), 1e-5) << name;
+    EXPECT_EQ(channel(whole, "steps"), channel(c, "steps")) << name;
+    const Image fp = render(dir, scene, "fragment", name + "f.png", {"--spp", "1"});
+    const Image cp = render(dir, scene, "compute", name + "c.png", {"--spp", "1", "--tile-still", "32"});
+    EXPECT_LE(max_diff(fp, cp), 1.0 / 255 + 1e-6) << name << " PNG";
+  }
+}
+
 // A copy of the library whose main() makes the left 8 columns' sample
 // colour NaN (as tests/cli/test_stability.cpp's NanGuard tests do): the
 // flag path of main.frag and post.frag, fused, accumulated and with AOVs.
