@@ -28,12 +28,10 @@ Dispatch resolve_dispatch(Dispatch d) { return d == Dispatch::automatic ? Dispat
 
 void check_compute_input(Dispatch d, const LoadedInput& in, bool /*tiled_still: compute draws tiles too*/) {
   if (d != Dispatch::compute) return;
-  if (in.shadertoy)
-    fail_input("--dispatch compute draws SDF scenes only; a Shadertoy shader runs as a fragment pass", {}, 0,
-               "--dispatch", "drop --dispatch or give --dispatch fragment");
-  if (in.passes.size() != 1)
-    fail_input("--dispatch compute draws a scene of one pass only", {}, 0, "--dispatch",
-               "give --dispatch fragment");
+  // The frame's pass as compute (render/compute_frame.h); buffer and Cube A
+  // passes stay fragment passes. Derivative calls, and implicit-LOD lookups
+  // with a mipmapped input, are refused here at their file:line.
+  (void)compute_source(in.passes.back());
 }
 
 }  // namespace ms

@@ -17,10 +17,11 @@ Dispatch parse_dispatch(const std::string& name);
 ComputeGroup parse_compute_group(const std::string& text);
 // What `auto` draws with: the fragment pass for now (no probe yet).
 Dispatch resolve_dispatch(Dispatch d);
-// Throws bad_input (key "--dispatch") when `d` is compute and the input is
-// not an SDF scene (a Shadertoy shader or a project with buffers). A still
-// drawn in tiles (cli/tiled_render.h) is drawn by compute too: `tiled_still`
-// is kept for the callers and no longer refuses.
+// Throws bad_input (key "--dispatch", at file:line) when `d` is compute and
+// the frame's pass cannot run as one (render/compute_frame.h's
+// compute_source: derivative calls, implicit-LOD lookups of a mipmapped
+// input). Before any context: nothing is drawn or written. `tiled_still` is
+// kept for the callers: compute draws tiled stills too.
 void check_compute_input(Dispatch d, const LoadedInput& in, bool tiled_still);
 
 }  // namespace ms

@@ -165,20 +165,26 @@ Image ComputeFrameRenderer::read_aovs() const {
 
 namespace {
 
-const PassSource& scene_pass(const PassGraph& graph) {
-  const PassSource& pass = graph.pass(graph.size() - 1);
-  if (pass.uniforms != PassUniforms::scene)
-    fail_input("--dispatch compute draws SDF scenes only", {}, 0, "--dispatch");
-  return pass;
+// Whether a channel of `pass` is sampled through a mip chain (render/graph.cpp
+// binds the keyboard and audio without one).
+bool has_mipmapped_input(const PassSource& pass) {
+  for (const GraphInput& in : pass.inputs)
+    if (in.kind != InputKind::none && in.kind != InputKind::keyboard && !in.audio &&
+        in.sampler.filter == TexFilter::mipmap)
+      return true;
+  return false;
 }
 
 }  // namespace
 
+ShaderSource compute_source(const PassSource& pass, ComputeGroup group) {
+  return wrap_compute(pass.source, group, has_mipmapped_input(pass));
+}
+
 ComputeStill::ComputeStill(const Context& ctx, const PassGraph& graph, ComputeGroup group)
-    : main_(Program::Compute{}, wrap_compute(scene_pass(graph).source, group)), renderer_(ctx), group_(group) {}
+    : main_(Program::Compute{}, compute_source(graph.pass(graph.size() - 1), group)), renderer_(ctx), group_(group) {}
 
 Still ComputeStill::render(PassGraph& graph, const Program& post, const StillFrame& f) {
-  if (!f.in.scene) fail_system("internal: a scene pass without its scene");
   const FrameParams& p = f.params;
   draw_still(graph, f, [&](const Program&, const UniformFn& set_uniforms) {
     renderer_.draw(main_, set_uniforms, post, p, group_);

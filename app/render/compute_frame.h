@@ -54,8 +54,15 @@ class ComputeFrameRenderer {
   std::unique_ptr<ComputeTargets> accum_, result_;
 };
 
+// `pass` as a compute shader: wrap_compute() told whether the pass samples
+// a mip chain. No GL: it checks an input before a context exists.
+ShaderSource compute_source(const PassSource& pass, ComputeGroup group = {});
+
 // The compute dispatch of a graph's last pass, its program compiled once:
-// stills, or the tiles of one (render/tiled_still.h), drawn with it.
+// stills, or the tiles of one (render/tiled_still.h), drawn with it. The
+// pass is an SDF scene or a Shadertoy Image pass; a graph's buffer and
+// Cube A passes stay fragment passes, their textures read by this one.
+// Throws bad_input (wrap_compute) for a pass that needs derivatives.
 class ComputeStill {
  public:
   ComputeStill(const Context& ctx, const PassGraph& graph, ComputeGroup group = {});

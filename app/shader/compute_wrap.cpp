@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "shader/log_map.h"
 
 namespace ms {
 namespace {
@@ -31,28 +32,69 @@ std::string strip_comments(const std::string& s) {
   return out;
 }
 
+const std::regex& derivative_re() {
+  static const std::regex re(R"(\b(dFdx|dFdy|fwidth)(Fine|Coarse)?\s*\()");
+  return re;
+}
+
+// The file:line of byte `pos` of the assembled text, by the last #line
+// directive before it (shader/preprocess.h's encoding, log_map.h decodes it).
+SourceLocation location_at(const ShaderSource& src, size_t pos) {
+  static const std::regex line_re(R"((^|\n)#line\s+([0-9]+)(\s+([0-9]+))?[^\n]*\n)");
+  long long line = 1, string_no = 0;
+  size_t from = 0;
+  const auto end = src.text.begin() + static_cast<std::ptrdiff_t>(std::min(pos, src.text.size()));
+  for (auto it = std::sregex_iterator(src.text.begin(), end, line_re); it != std::sregex_iterator(); ++it) {
+    line = std::stoll((*it)[2].str());
+    string_no = (*it)[4].matched ? std::stoll((*it)[4].str()) : 0;
+    from = static_cast<size_t>(it->position() + it->length());
+  }
+  line += std::count(src.text.begin() + static_cast<std::ptrdiff_t>(from), end, '\n');
+  SourceLocation at = map_location(src, string_no, line);
+  if (at.file.empty() && !src.files.empty()) at.file = src.files[0];
+  return at;
+}
+
+// Where the ')' closing the call whose '(' is at `open` is, and where each
+// argument after the first starts (after its comma): npos when unbalanced.
+size_t close_of(const std::string& scan, size_t open, std::vector<size_t>& arg_starts) {
+  int depth = 0;
+  for (size_t i = open; i < scan.size(); ++i) {
+    const char c = scan[i];
+    if (c == '(' || c == '[') ++depth;
+    else if (c == ')' || c == ']') {
+      if (--depth == 0) return i;
+    } else if (c == ',' && depth == 1) arg_starts.push_back(i + 1);
+  }
+  return std::string::npos;
+}
+
 }  // namespace
 
 std::string first_derivative_call(const std::string& glsl) {
-  static const std::regex re(R"(\b(dFdx|dFdy|fwidth)(Fine|Coarse)?\s*\()");
   const std::string text = strip_comments(glsl);
   std::smatch m;
-  if (std::regex_search(text, m, re)) return m[1].str() + m[2].str();
+  if (std::regex_search(text, m, derivative_re())) return m[1].str() + m[2].str();
   return {};
 }
 
-ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group) {
+ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group, bool mipmapped_inputs) {
   const std::string what = frag.files.empty() ? std::string() : frag.files[0];
-  if (const std::string d = first_derivative_call(frag.text); !d.empty())
-    fail_input("--dispatch compute: the shader calls " + d + "(), which a compute shader cannot", what, 0,
-               "--dispatch", "render it with --dispatch fragment, or take the footprint from ray differentials");
+  // Comments blanked in a copy of the same length: the matches' positions
+  // hold in the original text.
+  const std::string scan = strip_comments(frag.text);
+  std::smatch dm;
+  if (std::regex_search(scan, dm, derivative_re())) {
+    const SourceLocation at = location_at(frag, static_cast<size_t>(dm.position()));
+    fail_input("--dispatch compute: the shader calls " + dm[1].str() + dm[2].str() +
+                   "(), which a compute shader cannot",
+               at.file, at.line, "--dispatch",
+               "render it with --dispatch fragment, or take the footprint from ray differentials");
+  }
   if (group.x < 1 || group.y < 1 || group.x * group.y > 1024)
     fail_input("--compute-group " + std::to_string(group.x) + "x" + std::to_string(group.y) +
                    " must have 1..1024 invocations",
                {}, 0, "--compute-group");
-  // Comments blanked in a copy of the same length: the matches' positions
-  // hold in the original text.
-  const std::string scan = strip_comments(frag.text);
   std::string text;
   text.reserve(frag.text.size() + 2048);
   static const std::regex out_re(R"(layout\s*\(\s*location\s*=\s*([0-9]+)\s*\)\s*out\s+vec4\s+(\w+)\s*;)");
@@ -71,9 +113,33 @@ ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group) {
   for (auto it = std::sregex_iterator(scan.begin(), scan.end(), main_re); it != std::sregex_iterator(); ++it, ++mains)
     edits.push_back({static_cast<size_t>(it->position()), static_cast<size_t>(it->length()), "void msSceneMain()"});
   for (auto it = std::sregex_iterator(scan.begin(), scan.end(), coord_re); it != std::sregex_iterator(); ++it)
-    edits.push_back({static_cast<size_t>(it->position()), static_cast<size_t>(it->length()), "msFragCoord"});
+    edits.push_back({static_cast<size_t>(it->position()), static_cast<size_t>(it->length()), "msComputeCoord"});
+  // Implicit-LOD lookups take their LOD from derivatives, which a compute
+  // shader lacks: each becomes its explicit-LOD form at LOD 0. On textures of
+  // one level whose samplers minify and magnify alike (every non-mipmapped
+  // input, render/graph.cpp) that is the same texel; with a mip chain it is
+  // not, so a pass with a mipmapped input is refused instead.
+  static const std::regex tex_re(R"(\b(texture|textureOffset|textureProj|textureProjOffset)\s*\()");
+  for (auto it = std::sregex_iterator(scan.begin(), scan.end(), tex_re); it != std::sregex_iterator(); ++it) {
+    const size_t pos = static_cast<size_t>(it->position());
+    const std::string name = (*it)[1].str();
+    std::vector<size_t> args;
+    const size_t close = close_of(scan, pos + static_cast<size_t>(it->length()) - 1, args);
+    if (mipmapped_inputs || close == std::string::npos) {
+      const SourceLocation at = location_at(frag, pos);
+      fail_input("--dispatch compute: " + name + "() takes its mip level from derivatives, which a compute shader " +
+                     (close == std::string::npos ? "lacks" : "lacks, and this pass has a mipmapped input"),
+                 at.file, at.line, "--dispatch", "render it with --dispatch fragment, or call textureLod()");
+    }
+    const bool offset = name == "textureOffset" || name == "textureProjOffset";
+    const std::string base = name == "texture" || name == "textureOffset" ? "textureLod" : "textureProjLod";
+    edits.push_back({pos, name.size(), offset ? base + "Offset" : base});
+    if (offset && args.size() >= 2) edits.push_back({args[1], 0, " 0.0,"});  // (s, P, lod, offset)
+    else if (!offset && args.size() == 1) edits.push_back({close, 0, ", 0.0"});
+    // (s, P, bias): the bias is the LOD, which on one level picks level 0 too.
+  }
   if (mains != 1) fail_input("--dispatch compute: the shader has no single main()", what, 0, "--dispatch");
-  std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.pos < b.pos; });
+  std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.pos < b.pos; });
   size_t at = 0;
   for (const Edit& e : edits) {
     text.append(frag.text, at, e.pos - at);
@@ -91,13 +157,16 @@ ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group) {
       "#define MS_COMPUTE 1\n"
       "#define MS_GROUP_X " + std::to_string(group.x) + "\n"
       "#define MS_GROUP_Y " + std::to_string(group.y) + "\n"
-      "vec4 msFragCoord;\n"
+      "vec4 msComputeCoord;  // the fragment coordinate of the invocation's pixel\n"
       "#line 2 0\n";
   text.insert(eol + 1, prologue);
   text +=
       "\n// ---- marchstudio: the compute wrapper (shader/compute_wrap.h) ----\n"
       "layout(local_size_x = MS_GROUP_X, local_size_y = MS_GROUP_Y) in;\n"
       "layout(rgba32f, binding = 0) uniform image2D msOut0;\n"
+      "#ifndef AOV_OUTPUTS\n"
+      "#define AOV_OUTPUTS 0  // a Shadertoy pass: colour only\n"
+      "#endif\n"
       "#if AOV_OUTPUTS\n"
       "layout(rgba32f, binding = 1) uniform image2D msOut1;\n"
       "layout(rgba32f, binding = 2) uniform image2D msOut2;\n"
@@ -109,7 +178,7 @@ ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group) {
       "  ivec2 local = ivec2(gl_GlobalInvocationID.xy);\n"
       "  if (local.x >= uMsRect.z || local.y >= uMsRect.w) return;\n"
       "  ivec2 px = uMsRect.xy + local;\n"
-      "  msFragCoord = vec4(vec2(px) + 0.5, 0.0, 1.0);\n"
+      "  msComputeCoord = vec4(vec2(px) + 0.5, 0.0, 1.0);\n"
       "  msSceneMain();\n"
       "  vec4 c0 = outColor;\n"
       "  if (uMsAccumulate != 0) c0 = c0 + imageLoad(msOut0, px);\n"

@@ -6,8 +6,11 @@
 //     `vec4 NAME`, and the wrapper's main() stores it into image unit N
 //     (rgba32f), adding what the image holds when uMsAccumulate is 1: the
 //     fragment path's additive blending, sample by sample, in the same order;
-//   - gl_FragCoord becomes msFragCoord = (pixel + 0.5, 0, 1), the pixel
+//   - gl_FragCoord becomes msComputeCoord = (pixel + 0.5, 0, 1), the pixel
 //     being uMsRect.xy (the tile's lower-left corner) + gl_GlobalInvocationID.xy;
+//   - texture(s, P) becomes textureLod(s, P, 0.0) (and textureOffset,
+//     textureProj, textureProjOffset their Lod forms): no derivatives, so no
+//     implicit LOD; the same texel on a texture without mip maps;
 //   - the fragment's main() is renamed msSceneMain() and called as it is.
 // Locations 1..3 (the AOV targets) are stored only under AOV_OUTPUTS, as
 // main.frag declares them. The work group is MS_GROUP_X x MS_GROUP_Y.
@@ -27,8 +30,10 @@ struct ComputeGroup {
 // compute shader has no pixel quads to take them from.
 std::string first_derivative_call(const std::string& glsl);
 
-// `frag` rewritten as above. Throws bad_input (key "--dispatch") when the
-// text uses derivatives or has no `void main(`.
-ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group = {});
+// `frag` rewritten as above. Throws bad_input (key "--dispatch", at the
+// call's file:line) when the text calls a derivative function, or calls an
+// implicit-LOD lookup (texture, textureOffset, textureProj,
+// textureProjOffset) while `mipmapped_inputs`; or has no single `void main(`.
+ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group = {}, bool mipmapped_inputs = false);
 
 }  // namespace ms

@@ -3,7 +3,8 @@
 // spp 1 (the fused post path) and 4 (accumulation, the post pass), PNG
 // within 1/255 and EXR within 1e-5 in every channel, AOV step counts equal;
 // the hard cases (scenes/hard/*.toml) in the EXR with AOVs; the NaN guard
-// counts the same pixels; bad values and Shadertoy inputs are refused.
+// counts the same pixels; bad values are refused. Shadertoy inputs:
+// tests/cli/test_dispatch_shadertoy.cpp.
 // envlight ([sky] environment) checks that the scene pass's texture inputs
 // (the map, sampled with textureLod) are bound for the compute program too.
 #include <gtest/gtest.h>
@@ -198,25 +199,6 @@ TEST(Dispatch, BadValueIsOneLineExit2) {
   EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
 
-TEST(Dispatch, ShadertoyComputeIsRefused) {
-  TempDir dir;
-  write_file(dir / "toy.glsl",
-             "void mainImage(out vec4 c, in vec2 f) { c = vec4(f / iResolution.xy, 0.0, 1.0); }\n");
-  const RunResult r = run_marchstudio({"render", (dir / "toy.glsl").string(), "--size", "16x16", "--dispatch",
-                                       "compute", "-o", (dir / "x.png").string()});
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--dispatch compute draws SDF scenes only"), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_FALSE(fs::exists(dir / "x.png"));
-  // The fragment pass (and auto, which picks it) still draws it.
-  for (const std::string d : {"fragment", "auto"}) {
-    const RunResult f = run_marchstudio({"render", (dir / "toy.glsl").string(), "--size", "16x16", "--dispatch", d,
-                                         "-o", (dir / (d + ".png")).string()});
-    EXPECT_EQ(f.exit_code, 0) << f.err;
-    EXPECT_TRUE(fs::exists(dir / (d + ".png")));
-  }
-}
-
 TEST(Dispatch, SceneWithDerivativesIsRefused) {
   TempDir dir;
   const fs::path scene = seed_with_map(dir, "deriv",
@@ -228,6 +210,7 @@ TEST(Dispatch, SceneWithDerivativesIsRefused) {
       {"render", scene.string(), "--size", "16x16", "--dispatch", "compute", "-o", (dir / "x.png").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("calls dFdx()"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("deriv.glsl:3"), std::string::npos) << r.err;  // the call's line
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
