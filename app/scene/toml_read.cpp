@@ -15,7 +15,6 @@ namespace {
 
 std::string num(double v) { return format_number(v); }
 
-std::string quoted(std::string_view s) { return quote(s); }
 
 // "a string", "an integer", ... for "must be X, not Y" messages.
 std::string type_name(const toml::node& n) {
@@ -108,7 +107,7 @@ void Reader::check_keys(const toml::table& t, std::string_view path, Keys known,
     const std::string full = join_key(path, k.str());
     std::string hint = did_you_mean(k.str(), known);
     if (hint.empty() && elsewhere) hint = elsewhere(k.str());
-    fail(static_cast<int>(k.source().begin.line), full, "unknown key " + quoted(full), std::move(hint));
+    fail(static_cast<int>(k.source().begin.line), full, "unknown key " + quote(full), std::move(hint));
   }
 }
 
@@ -117,7 +116,7 @@ const toml::table* Reader::table(const toml::table& t, std::string_view path, st
   if (!n) return nullptr;
   const std::string full = join_key(path, key);
   if (!n->is_table())
-    fail(*n, full, quoted(full) + " must be a table, not " + type_name(*n),
+    fail(*n, full, quote(full) + " must be a table, not " + type_name(*n),
          n->is_array() ? "write [" + printable(full) + "], not [[" + printable(full) + "]]" : "");
   return n->as_table();
 }
@@ -129,12 +128,12 @@ std::vector<const toml::table*> Reader::tables(const toml::table& t, std::string
   if (!n) return out;
   const std::string full = join_key(path, key);
   if (!n->is_array())
-    fail(*n, full, quoted(full) + " must be an array of tables, not " + type_name(*n),
+    fail(*n, full, quote(full) + " must be an array of tables, not " + type_name(*n),
          "write [[" + printable(full) + "]] above each entry");
   const toml::array& arr = *n->as_array();
   for (std::size_t i = 0; i < arr.size(); ++i) {
     const std::string item = full + "[" + std::to_string(i) + "]";
-    if (!arr[i].is_table()) fail(arr[i], item, quoted(item) + " must be a table, not " + type_name(arr[i]));
+    if (!arr[i].is_table()) fail(arr[i], item, quote(item) + " must be a table, not " + type_name(arr[i]));
     out.push_back(arr[i].as_table());
   }
   return out;
@@ -144,15 +143,15 @@ float Reader::number(const toml::node& n, std::string_view key, std::string_view
   double v = 0.0;
   if (const auto* i = n.as_integer()) v = static_cast<double>(i->get());
   else if (const auto* f = n.as_floating_point()) v = f->get();
-  else fail(n, key, quoted(name) + " must be a number, not " + type_name(n));
+  else fail(n, key, quote(name) + " must be a number, not " + type_name(n));
   // TOML has nan and inf literals; no setting means anything with them.
-  if (!std::isfinite(v)) fail(n, key, quoted(name) + " must be a finite number, got " + num(v));
-  if (std::abs(v) > FLT_MAX) fail(n, key, quoted(name) + " = " + num(v) + " is too large for a 32-bit float");
+  if (!std::isfinite(v)) fail(n, key, quote(name) + " must be a finite number, got " + num(v));
+  if (std::abs(v) > FLT_MAX) fail(n, key, quote(name) + " = " + num(v) + " is too large for a 32-bit float");
   const float f = static_cast<float>(v);
   if (!r.contains(f)) {
     // A tiny value can pass as a double but round to 0 as a float.
     std::string hint = r.contains(v) ? "it rounds to " + num(f) + " as a 32-bit float" : "";
-    fail(n, key, quoted(name) + " must be " + r.describe() + ", got " + num(v), std::move(hint));
+    fail(n, key, quote(name) + " must be " + r.describe() + ", got " + num(v), std::move(hint));
   }
   return f;
 }
@@ -177,11 +176,11 @@ bool Reader::read(const toml::table& t, std::string_view path, std::string_view 
     std::string hint = f && std::isfinite(f->get()) && std::trunc(f->get()) == f->get()
                            ? "write it as " + num(f->get())
                            : "";
-    fail(*n, full, quoted(full) + " must be an integer, not " + type_name(*n), std::move(hint));
+    fail(*n, full, quote(full) + " must be an integer, not " + type_name(*n), std::move(hint));
   }
   const auto v = static_cast<double>(i->get());
   const Range in_int = {std::max(r.lo, double(INT_MIN)), std::min(r.hi, double(INT_MAX)), r.lo_open, r.hi_open};
-  if (!in_int.contains(v)) fail(*n, full, quoted(full) + " must be " + in_int.describe() + ", got " + num(v));
+  if (!in_int.contains(v)) fail(*n, full, quote(full) + " must be " + in_int.describe() + ", got " + num(v));
   out = static_cast<int>(i->get());
   return true;
 }
@@ -191,7 +190,7 @@ bool Reader::read(const toml::table& t, std::string_view path, std::string_view 
   const toml::node* n = t.get(key);
   if (!n) return false;
   const std::string full = join_key(path, key);
-  if (!n->is_boolean()) fail(*n, full, quoted(full) + " must be true or false, not " + type_name(*n));
+  if (!n->is_boolean()) fail(*n, full, quote(full) + " must be true or false, not " + type_name(*n));
   out = n->as_boolean()->get();
   return true;
 }
@@ -202,9 +201,9 @@ bool Reader::read(const toml::table& t, std::string_view path, std::string_view 
   if (!n) return false;
   const std::string full = join_key(path, key);
   const toml::array* arr = n->as_array();
-  if (!arr) fail(*n, full, quoted(full) + " must be an array of 3 numbers, not " + type_name(*n));
+  if (!arr) fail(*n, full, quote(full) + " must be an array of 3 numbers, not " + type_name(*n));
   if (arr->size() != 3)
-    fail(*n, full, quoted(full) + " must be an array of 3 numbers, got " + std::to_string(arr->size()) +
+    fail(*n, full, quote(full) + " must be an array of 3 numbers, got " + std::to_string(arr->size()) +
                        (arr->size() == 1 ? " element" : " elements"));
   for (int c = 0; c < 3; ++c)
     out[c] = number((*arr)[static_cast<std::size_t>(c)], full, full + "[" + std::to_string(c) + "]", r);
@@ -215,7 +214,7 @@ bool Reader::read(const toml::table& t, std::string_view path, std::string_view 
   const toml::node* n = t.get(key);
   if (!n) return false;
   const std::string full = join_key(path, key);
-  if (!n->is_string()) fail(*n, full, quoted(full) + " must be a string, not " + type_name(*n));
+  if (!n->is_string()) fail(*n, full, quote(full) + " must be a string, not " + type_name(*n));
   out = n->as_string()->get();
   return true;
 }
@@ -236,7 +235,7 @@ bool Reader::read_choice(const toml::table& t, std::string_view path, std::strin
     for (std::size_t i = 0; i < names.size(); ++i)
       hint.append(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ").append(quote(names[i]));
   }
-  fail(*t.get(key), full, "unknown value " + quoted(s) + " for " + quoted(full), std::move(hint));
+  fail(*t.get(key), full, "unknown value " + quote(s) + " for " + quote(full), std::move(hint));
 }
 
 }  // namespace ms
