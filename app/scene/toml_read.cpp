@@ -15,7 +15,6 @@ namespace {
 
 std::string num(double v) { return format_number(v); }
 
-
 // "a string", "an integer", ... for "must be X, not Y" messages.
 std::string type_name(const toml::node& n) {
   switch (n.type()) {
