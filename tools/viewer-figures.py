@@ -19,10 +19,11 @@
 
 - reload-split: for each scene in scenes/, where the first build's time
   goes, from the `reload ok 0` line: `assemble_ms` (ours: reading,
-  preprocessing, assembly), `gl_ms` (the driver's compile and link) and
-  `first_draw_ms` (the first frame, waited for: llvmpipe JIT-compiles the
-  shader there), against a warm frame (the median `frame_ms` of the last
-  second). Mesa's disk cache starts empty.
+  preprocessing, assembly), `gl_ms` (the driver's compile and link, on the
+  compile worker), `warm_ms` (the worker's warm-up draws: llvmpipe
+  JIT-compiles the shader there) and `first_draw_ms` (the UI thread's first
+  frame, waited for), against a warm frame (the median `frame_ms` of the
+  last second). Mesa's disk cache starts empty.
 
 Needs xvfb-run. Usage: /usr/bin/python3 tools/viewer-figures.py [--images|--split] [path/to/marchstudio]
 (--images: only the pictures; --split: only the reload split)
@@ -45,7 +46,7 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 ARGS = [a for a in sys.argv[1:] if a not in ('--images', '--split')]
 IMAGES_ONLY = '--images' in sys.argv[1:]
 SPLIT_ONLY = '--split' in sys.argv[1:]
-SPLIT = re.compile(r'compile_ms=([\d.]+) assemble_ms=([\d.]+) gl_ms=([\d.]+) first_draw_ms=([\d.]+)')
+SPLIT = re.compile(r'compile_ms=([\d.]+) assemble_ms=([\d.]+) gl_ms=([\d.]+) first_draw_ms=([\d.]+) warm_ms=([\d.]+)')
 BIN = os.path.abspath(ARGS[0] if ARGS else os.path.join(ROOT, 'build', 'marchstudio'))
 DEBUG_VIEWS = ['steps', 'normals', 'depth', 'ao', 'shadow', 'material']
 SIZES = ['160x90', '320x180', '640x360', '1280x720']
@@ -176,19 +177,21 @@ def reload_split(date, cpu, renderer):
             text = open(log).read()
         m = SPLIT.search(re.search(r'^reload ok 0 .*$', text, re.M).group(0))
         frame = [float(x) for x in re.findall(r'frame_ms=([\d.]+)', text)]
-        rows.append('| %s | %s | %s | %s | %s | %s |' % (toml[:-1], m.group(2), m.group(3), m.group(4), m.group(1),
-                                                       '%.0f' % frame[-1] if frame else '-'))
+        rows.append('| %s | %s | %s | %s | %s | %s | %s |' % (toml[:-1], m.group(2), m.group(3), m.group(5), m.group(4),
+                                                            m.group(1), '%.0f' % frame[-1] if frame else '-'))
         print('split %s' % toml, file=sys.stderr)
     return ['Measured by `tools/viewer-figures.py --split` on %s (%d cores), Xvfb, `GL_RENDERER` = `%s`, %s: the'
             % (cpu, os.cpu_count(), renderer, date),
             'first build of each scene at 640x360, paused, Mesa\'s disk shader cache empty. *ours*: reading, preprocessing',
-            'and assembly; *GL*: glCompileShader and glLinkProgram; *first draw*: the first frame waited for with',
-            'glFinish, where llvmpipe JIT-compiles the shader; *warm frame*: the median frame time of the last second.',
-            '`one_line` is a one-line Shadertoy shader: its first draw is the fixed cost of any first frame (the',
-            'panel\'s font texture and shaders, the post pass), to subtract from the scenes\' to get their own JIT.',
+            'and assembly (on the UI thread); *GL*: glCompileShader and glLinkProgram (on the compile worker);',
+            '*warm-up*: the worker\'s 8x8 draws, where llvmpipe JIT-compiles the shader; *first draw*: the UI',
+            'thread\'s first frame with the program, waited for with glFinish; *load to program*: from the',
+            'start of the reload to the program adopted; *warm frame*: the median frame time of the last second.',
+            '`one_line` is a one-line Shadertoy shader: the fixed cost of any first frame (the panel\'s font',
+            'texture and shaders, the post pass).',
             '',
-            '| scene | ours (ms) | GL compile + link (ms) | first draw, JIT (ms) | load to program (ms) | warm frame (ms) |',
-            '|---|---|---|---|---|---|'] + rows
+            '| scene | ours (ms) | GL compile + link (ms) | warm-up, JIT (ms) | first draw (ms) | load to program (ms) | warm frame (ms) |',
+            '|---|---|---|---|---|---|---|'] + rows
 
 
 def machine():

@@ -68,4 +68,12 @@ std::unique_ptr<Context> create_osmesa_context();
 std::unique_ptr<Context> create_window_context(int width, int height, const std::string& title,
                                                GLFWwindow*& window);
 
+// A hidden 1x1 window whose GL context shares objects (programs, textures;
+// not framebuffers or vertex arrays) with `share`'s, for the viewer's compile
+// worker (live/compile_worker.h) to make current on its own thread. Call it
+// on the thread that made `share`, after create_window_context (its hints
+// still hold). Null when the driver refuses one; glfwDestroyWindow it before
+// the Context goes. In marchlive.
+GLFWwindow* create_shared_hidden_window(GLFWwindow* share);
+
 }  // namespace ms

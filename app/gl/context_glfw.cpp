@@ -62,4 +62,11 @@ std::unique_ptr<Context> create_window_context(int width, int height, const std:
   return std::make_unique<GlfwContext>(window);
 }
 
+GLFWwindow* create_shared_hidden_window(GLFWwindow* share) {
+  glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+  GLFWwindow* w = glfwCreateWindow(1, 1, "marchstudio compile", nullptr, share);
+  glfwWindowHint(GLFW_VISIBLE, GLFW_TRUE);
+  return w;
+}
+
 }  // namespace ms

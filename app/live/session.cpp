@@ -30,9 +30,10 @@ void Session::set_preset(const std::string& name) {
   scene_.quality.checker_filter = cur.checker_filter;
 }
 
-ReloadResult Session::reload(bool from_disk) {
-  ReloadResult r;
-  const auto t0 = std::chrono::steady_clock::now();
+Session::PreparedReload Session::prepare(bool from_disk) {
+  PreparedReload p;
+  ReloadResult& r = p.result;
+  p.t0 = std::chrono::steady_clock::now();
   try {
     if (from_disk || !disk_ok_) {
       Scene fresh;
@@ -61,67 +62,106 @@ ReloadResult Session::reload(bool from_disk) {
     if (view > 0) opts.defines.emplace_back("DEBUG_VIEW", std::to_string(view));
     // The same passes `render` builds (cli/input.cpp): a scene's one pass,
     // or a Shadertoy shader's buffers and Image pass, media found.
-    std::vector<PassSource> passes;
-    std::vector<std::string> warnings;
     if (shadertoy()) {
       const fs::path wrapper = has_toml() ? scene_.file : fs::path{};
       const ShaderProject project =
           scene_.passes ? *scene_.passes : load_shadertoy_file(scene_.shadertoy_file, opts, wrapper);
-      passes = shadertoy_passes(project, scene_.shadertoy, opts, wrapper, warnings);
+      p.passes = shadertoy_passes(project, scene_.shadertoy, opts, wrapper, p.warnings);
     } else {
       PassSource pass;
       pass.name = scene_.name;
-      pass.source = assemble_scene(scene_, opts);
+      pass.source = specialized ? assemble_scene(scene_, opts, features_) : assemble_scene(scene_, opts);
       attach_environment(scene_, pass);  // [sky] environment (render/environment.h)
-      passes.push_back(std::move(pass));
+      p.passes.push_back(std::move(pass));
     }
     deps_.clear();  // preprocessing worked: these are the files now
-    for (const PassSource& p : passes) deps_.insert(deps_.end(), p.source.dependencies.begin(), p.source.dependencies.end());
-    const ShaderSource& main_src = passes.back().source;
+    for (const PassSource& ps : p.passes)
+      deps_.insert(deps_.end(), ps.source.dependencies.begin(), ps.source.dependencies.end());
     // A debug view shows values, not radiance: its post pass stores them as
     // they are (no tone map, no sRGB encode; exposure 1, display_exposure()).
     const bool bloom = scene_.bloom.enabled && !shadertoy() && view == 0;  // docs/post.md
-    const ShaderSource post_src =
-        assemble_post(scene_.render.tonemap, !shadertoy() && view == 0, opts_.assemble, shadertoy(), bloom);
-    r.cached = cache_.contains(fullscreen_vertex_source(), main_src);
+    p.post_src = assemble_post(scene_.render.tonemap, !shadertoy() && view == 0, opts_.assemble, shadertoy(), bloom);
+    if (bloom) p.bloom_src = {assemble_bloom(false, opts_.assemble), assemble_bloom(true, opts_.assemble)};
+    p.view = view;
+    r.cached = cache_.contains(fullscreen_vertex_source(), p.passes.back().source);
+    r.ok = true;
+  } catch (const Error& e) {
+    fail(e, r);
+  }
+  r.assemble_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.t0).count();
+  return p;
+}
+
+std::vector<ShaderSource> Session::to_compile(PreparedReload& p, int* passes) const {
+  std::vector<ShaderSource> out;
+  *passes = 0;
+  if (!p.result.ok) return out;
+  const std::string vs = fullscreen_vertex_source();
+  for (const PassSource& ps : p.passes)
+    if (!cache_.contains(vs, ps.source)) out.push_back(ps.source);
+  *passes = static_cast<int>(out.size());
+  if (out.empty()) return out;  // nothing new to draw: post and bloom compile in line, if at all
+  out.push_back(p.post_src);  // the warm-up's post pass (compile_worker.h)
+  for (const ShaderSource& b : p.bloom_src)
+    if (!cache_.contains(vs, b)) out.push_back(b);
+  p.compiling = out;
+  return out;
+}
+
+ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<const Program>>& compiled,
+                            std::exception_ptr error, double gl_ms) {
+  ReloadResult r = p.result;
+  if (!r.ok) {
+    r.compile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.t0).count();
+    return r;
+  }
+  r.ok = false;
+  try {
+    if (error) std::rethrow_exception(error);
+    for (size_t i = 0; i < compiled.size() && i < p.compiling.size(); ++i)
+      cache_.put(fullscreen_vertex_source(), p.compiling[i], compiled[i]);
     const auto t_gl = std::chrono::steady_clock::now();
-    r.assemble_ms = std::chrono::duration<double, std::milli>(t_gl - t0).count();
-    auto graph = std::make_shared<PassGraph>(passes, &cache_);
-    auto post = cache_.get(fullscreen_vertex_source(), post_src);
+    auto graph = std::make_shared<PassGraph>(p.passes, &cache_);
+    auto post = cache_.get(fullscreen_vertex_source(), p.post_src);
     std::unique_ptr<BloomStage> bloom_stage;
-    if (bloom)
-      bloom_stage = std::make_unique<BloomStage>(scene_.bloom,
-                                                 cache_.get(fullscreen_vertex_source(), assemble_bloom(false, opts_.assemble)),
-                                                 cache_.get(fullscreen_vertex_source(), assemble_bloom(true, opts_.assemble)));
-    r.gl_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_gl).count();
+    if (!p.bloom_src.empty())
+      bloom_stage = std::make_unique<BloomStage>(scene_.bloom, cache_.get(fullscreen_vertex_source(), p.bloom_src[0]),
+                                                 cache_.get(fullscreen_vertex_source(), p.bloom_src[1]));
+    r.gl_ms = gl_ms + std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_gl).count();
+    std::vector<std::string> warnings = std::move(p.warnings);
     for (const std::string& u : graph->unbound_sampled()) warnings.push_back(u + " is sampled but nothing is bound to it");
     if (graph_) graph->adopt_buffers(*graph_);  // buffers evolve on across a reload of a pass
     graph_ = std::move(graph);
     audio_.reset();  // the first music input plays in the window (live/audio_out.h)
-    for (const PassSource& p : passes)
-      for (const GraphInput& in : p.inputs)
+    for (const PassSource& ps : p.passes)
+      for (const GraphInput& in : ps.inputs)
         if (in.audio && !audio_) audio_ = in.audio;
     post_ = std::move(post);
     bloom_ = std::move(bloom_stage);
     warnings_ = std::move(warnings);
-    std::vector<SceneParam> params = parse_scene_params(main_src.text);
+    std::vector<SceneParam> params = parse_scene_params(p.passes.back().source.text);
     carry_over_values(params, params_);
     params_ = std::move(params);
-    compiled_debug_view_ = view;
+    compiled_debug_view_ = p.view;
     ++generation_;
     error_.clear();
     error_log_.clear();
     error_file_.clear();
     r.ok = true;
   } catch (const Error& e) {
-    error_ = format_error(e.info());
-    error_log_ = e.info().detail;
-    error_file_ = e.info().file;
-    r.error = error_;
-    r.log = error_log_;
+    fail(e, r);
   }
-  r.compile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  r.compile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.t0).count();
   return r;
+}
+
+void Session::fail(const Error& e, ReloadResult& r) {
+  error_ = format_error(e.info());
+  error_log_ = e.info().detail;
+  error_file_ = e.info().file;
+  r.ok = false;
+  r.error = error_;
+  r.log = error_log_;
 }
 
 bool Session::features_changed() const {

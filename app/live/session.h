@@ -5,12 +5,15 @@
 // `render`'s (the caller passes cli/'s loader in); only the compiled
 // programs are kept here. Needs the GL context current for reload().
 #pragma once
+#include <chrono>
+#include <exception>
 #include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "live/scene_params.h"
 #include "render/bloom.h"
 #include "render/graph.h"
@@ -48,7 +51,33 @@ class Session {
   // view changed). While the last disk read failed every reload reads the
   // disk. Never throws for bad input: the error is in the result and in
   // error(), and the last good programs stay.
-  ReloadResult reload(bool from_disk);
+  ReloadResult reload(bool from_disk) {
+    PreparedReload p = prepare(from_disk);
+    return adopt(std::move(p), {}, nullptr, 0.0);
+  }
+
+  // reload() in halves, for the viewer's compile worker (live/compile_worker.h).
+  // prepare() reads and assembles (the scene, the watched files and a read
+  // or assembly error apply at once; the programs stay); to_compile() lists
+  // the fragment sources the cache lacks (passes first, then the post
+  // pass, then bloom's); adopt() keeps `compiled` (one per to_compile()
+  // source, linked on a context sharing this one's objects) or reports
+  // `error` (a compile error thrown there) as reload() would, and swaps
+  // the programs in. A PreparedReload not adopted changes no programs.
+  struct PreparedReload {
+    ReloadResult result;  // !result.ok: preparing failed, adopt() returns it
+    std::chrono::steady_clock::time_point t0;
+    std::vector<PassSource> passes;
+    std::vector<std::string> warnings;
+    ShaderSource post_src;
+    std::vector<ShaderSource> bloom_src;  // empty without bloom
+    int view = 0;
+    std::vector<ShaderSource> compiling;  // what to_compile() listed: adopt()'s `compiled` match these
+  };
+  PreparedReload prepare(bool from_disk);
+  std::vector<ShaderSource> to_compile(PreparedReload& p, int* passes) const;
+  ReloadResult adopt(PreparedReload p, const std::vector<std::shared_ptr<const Program>>& compiled,
+                     std::exception_ptr error, double gl_ms);
 
   Scene& scene() { return scene_; }
   const Scene& scene() const { return scene_; }
@@ -107,6 +136,7 @@ class Session {
   std::vector<std::filesystem::path> watched_files() const;
 
  private:
+  void fail(const Error& e, ReloadResult& r);
   SessionOptions opts_;
   Scene scene_, file_scene_;
   bool disk_ok_ = false;

@@ -17,6 +17,7 @@
 #include "io/image_io.h"
 #include "live/audio_out.h"
 #include "live/capture.h"
+#include "live/compile_worker.h"
 #include "live/input.h"
 #include "live/keyboard.h"
 #include "live/live_log.h"
@@ -72,6 +73,17 @@ struct PendingReload {
   long frame_at_event = 0, iteration_at_event = 0;
   ReloadResult result;
   double first_draw_ms = 0.0;  // the first frame with the new program, waited for: llvmpipe JITs it here
+  double warm_ms = 0.0;        // the worker's warm-up draws (live/compile_worker.h)
+  long frames_during_compile = 0;  // frames drawn with the old program while the worker compiled
+};
+
+// A reload whose programs the worker is compiling; the last good ones draw meanwhile.
+struct Compiling {
+  bool active = false;
+  int number = 0;
+  double t_event = 0.0;
+  long frame_at_event = 0, iteration_at_event = 0, frames_at_submit = 0;
+  Session::PreparedReload plan;
 };
 
 class Viewer {
@@ -81,7 +93,10 @@ class Viewer {
   int run();
 
  private:
-  void reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event);
+  // wait: block until the programs are built (the first build: nothing to show before it).
+  void reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event, bool wait = false);
+  void adopt_compiled(bool wait = false);
+  void finish_reload(const Compiling& c, const ReloadResult& r, double warm_ms);
   void report_failure(const ReloadResult& r);
   void poll_files();
   void after_frame();
@@ -101,6 +116,8 @@ class Viewer {
   long frames_ = 0, iterations_ = 0;
   int reloads_ = 0;
   PendingReload pending_;
+  std::unique_ptr<CompileWorker> worker_;  // null: compile on this thread (no shared context)
+  Compiling compiling_;
   Recorder recorder_;
   AudioOut audio_;
   const AudioClip* audio_clip_ = nullptr;  // what audio_ was opened for
@@ -136,12 +153,42 @@ void Viewer::watch_bounds(double now) {
   std::fprintf(stderr, "marchstudio: %s\n", w.c_str());  // the overlay shows it while it holds
 }
 
-void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event) {
-  pending_ = {true, reloads_++, t_event, frame_at_event, iteration_at_event, session_.reload(from_disk)};
-  const ReloadResult& r = pending_.result;
-  if (r.camera_changed) s_.camera = s_.scene_camera = session_.scene().camera;
-  // New includes are watched from now on, removed ones dropped; while
-  // broken, any source-like file next to the watched ones counts.
+void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event, bool wait) {
+  Compiling c{true, reloads_++, t_event, frame_at_event, iteration_at_event, frames_, session_.prepare(from_disk)};
+  if (compiling_.active)  // only the newest save is adopted; the worker drops the older job
+    log_.line("reload superseded " + std::to_string(compiling_.number) + " by " + std::to_string(c.number));
+  compiling_.active = false;
+  if (c.plan.result.camera_changed) s_.camera = s_.scene_camera = session_.scene().camera;
+  // New includes are watched from now on, removed ones dropped.
+  watcher_.watch(session_.watched_files());
+  int passes = 0;
+  std::vector<ShaderSource> sources = session_.to_compile(c.plan, &passes);
+  if (!worker_ || sources.empty()) {  // nothing to compile, or no worker: in line
+    const ReloadResult r = session_.adopt(std::move(c.plan), {}, nullptr, 0.0);
+    return finish_reload(c, r, 0.0);
+  }
+  worker_->submit(CompileJob{c.number, std::move(sources), passes});
+  log_.line("reload compiling " + std::to_string(c.number));
+  compiling_ = std::move(c);
+  if (wait) adopt_compiled(true);
+}
+
+// Each loop iteration: the worker's result, when it is the newest reload's.
+void Viewer::adopt_compiled(bool wait) {
+  if (!compiling_.active) return;
+  std::optional<CompileResult> got;
+  if (wait) got = worker_->wait(compiling_.number);
+  else got = worker_->poll();
+  if (!got || got->id != compiling_.number) return;
+  compiling_.active = false;
+  const ReloadResult r = session_.adopt(std::move(compiling_.plan), got->programs, got->error, got->gl_ms);
+  finish_reload(compiling_, r, got->warm_ms);
+}
+
+void Viewer::finish_reload(const Compiling& c, const ReloadResult& r, double warm_ms) {
+  pending_ = {true, c.number, c.t_event, c.frame_at_event, c.iteration_at_event, r, 0.0, warm_ms,
+              frames_ - c.frames_at_submit};
+  // While broken, any source-like file next to the watched ones counts.
   watcher_.watch(session_.watched_files());
   watcher_.set_match_any(!r.ok);
   if (!r.ok) report_failure(r);
@@ -184,6 +231,8 @@ void Viewer::poll_files() {
   } else if (s_.want_disk_reload) {
     s_.want_disk_reload = false;
     reload(true, seconds_now(), frames_, iterations_);
+  } else if (compiling_.active) {
+    return;  // a toggle's rebuild waits for the reload in flight (it would be adopted over)
   } else if (s_.want_reassemble || s_.debug_view != session_.debug_view || session_.features_changed()) {
     // A toggle, preset, quality value or debug view, or a panel edit that
     // changes what the specialized shader needs: same files, new defines.
@@ -209,7 +258,9 @@ void Viewer::after_frame() {
                                 " ms=" + fmt("%.1f", (seconds_now() - pending_.t_event) * 1e3) +
                                 " compile_ms=" + fmt("%.1f", r.compile_ms) + " assemble_ms=" +
                                 fmt("%.1f", r.assemble_ms) + " gl_ms=" + fmt("%.1f", r.gl_ms) +
-                                " first_draw_ms=" + fmt("%.1f", pending_.first_draw_ms);
+                                " first_draw_ms=" + fmt("%.1f", pending_.first_draw_ms) +
+                                " warm_ms=" + fmt("%.1f", pending_.warm_ms) +
+                                " frames_during_compile=" + std::to_string(pending_.frames_during_compile);
     log_.line("reload " + std::string(r.ok ? "ok " : "failed ") + std::to_string(pending_.number) + latency +
               (r.ok ? "" : " -- " + r.error));
     if (!o_.capture_dir.empty()) drawer_->capture(o_.capture_dir, pending_.number, log_);
@@ -321,11 +372,18 @@ int Viewer::run() {
   struct ReleaseGl {
     Session& s;
     ProgramCache& probe;
+    std::unique_ptr<CompileWorker>& worker;
     ~ReleaseGl() {
+      worker.reset();
       s.release_gl();
       probe.clear();
     }
-  } release_gl{session_, bounds_cache_};
+  } release_gl{session_, bounds_cache_, worker_};
+  try {
+    worker_ = std::make_unique<CompileWorker>(window_, *ctx);
+  } catch (const Error& e) {
+    log_.line(std::string("compile_worker none -- ") + e.what());  // reloads compile on this thread, as before
+  }
   install_input_callbacks(window_, &s_);
   ImGuiScope imgui(window_);
   FrameDrawer drawer(window_, *ctx, session_, s_);
@@ -338,7 +396,7 @@ int Viewer::run() {
   s_.accumulate = s_.accumulate_default = o_.accumulate;
   s_.debug_view = session_.debug_view = std::clamp(o_.debug_view, 0, kDebugViews - 1);
   session_.set_preset(o_.preset);
-  reload(true, seconds_now(), 0, 1);  // the initial build is number 0 (frame_0.png)
+  reload(true, seconds_now(), 0, 1, true);  // the initial build is number 0 (frame_0.png)
   s_.shadertoy = session_.shadertoy();
   s_.start_time = o_.time >= 0.0 ? o_.time : session_.scene().render.time;
   s_.time = s_.start_time;
@@ -351,6 +409,7 @@ int Viewer::run() {
     glfwPollEvents();
     s_.now = t0;
     poll_files();
+    adopt_compiled();
     const double dt = std::min(0.25, t0 - t_last);
     t_last = t0;
     apply_held_keys(window_, s_, dt);

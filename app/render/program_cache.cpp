@@ -21,6 +21,13 @@ std::shared_ptr<const Program> ProgramCache::get(const std::string& vertex, cons
   return program;
 }
 
+void ProgramCache::put(const std::string& vertex, const ShaderSource& fragment, std::shared_ptr<const Program> program) {
+  if (contains(vertex, fragment)) return;
+  ++misses_;  // compiled, if not here
+  entries_.push_front(Entry{program_key(vertex, fragment.text), vertex, fragment.text, std::move(program)});
+  if (entries_.size() > capacity_) entries_.pop_back();
+}
+
 bool ProgramCache::contains(const std::string& vertex, const ShaderSource& fragment) const {
   const std::uint64_t key = program_key(vertex, fragment.text);
   for (const Entry& e : entries_)

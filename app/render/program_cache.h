@@ -24,6 +24,11 @@ class ProgramCache {
   // programs are kept; the least recently used goes first.
   std::shared_ptr<const Program> get(const std::string& vertex, const ShaderSource& fragment, bool* hit = nullptr);
 
+  // Keep a program linked elsewhere (the viewer's compile worker, on a
+  // context sharing this one's objects) as get() would have: the next get()
+  // of these sources is a hit. The cache itself is for one thread only.
+  void put(const std::string& vertex, const ShaderSource& fragment, std::shared_ptr<const Program> program);
+
   // Whether get() would find these sources without compiling.
   bool contains(const std::string& vertex, const ShaderSource& fragment) const;
   std::size_t size() const { return entries_.size(); }

@@ -46,6 +46,9 @@ std::vector<std::filesystem::path> include_roots(const std::filesystem::path& sc
 // opts.specialize picks the generic shader or a specialized one
 // (docs/specialization.md).
 ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts);
+// The same with the scene_features() the caller already has (the viewer
+// keeps them for features_changed()): the library is scanned once, not twice.
+ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts, const FeatureSet& features);
 
 // What the scene uses (scene/features.h), with the library names scanned
 // from its map, everything the map includes, the pipeline and the -D values.

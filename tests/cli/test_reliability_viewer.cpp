@@ -80,7 +80,7 @@ class ViewerAttack : public ::testing::Test {
     if (line.rfind("reload failed", 0) == 0) std::cout << "[ attack ] " << line.substr(line.find(" -- ") + 4) << "\n";
     return line;
   }
-  // The number of the last reload once none has come for `quiet_s`.
+  // The number of the last reload begun once none has come for `quiet_s`.
   int settled_reload(double quiet_s, double timeout_s) {
     int last = -1;
     auto t_change = std::chrono::steady_clock::now();
@@ -89,7 +89,8 @@ class ViewerAttack : public ::testing::Test {
       int k = -1;
       for (const std::string& l : file_lines(log())) {
         std::smatch m;
-        if (std::regex_search(l, m, std::regex("^reload (ok|failed) (\\d+) "))) k = std::stoi(m[2]);
+        // "compiling": a reload begun on the worker counts (live/compile_worker.h).
+        if (std::regex_search(l, m, std::regex("^reload (ok|failed|compiling) (\\d+)"))) k = std::stoi(m[2]);
       }
       if (k != last) {
         last = k;

@@ -138,5 +138,32 @@ TEST(ProgramCache, ASeenShaderIsNotCompiledAgain) {
   cache.clear();
 }
 
+// The viewer's compile worker links on another context and the UI thread
+// put()s the program (live/compile_worker.h): the next get() is a hit.
+TEST(ProgramCache, APutProgramIsAHit) {
+  std::unique_ptr<Context> ctx;
+  try {
+    ctx = create_headless_context(Backend::automatic);
+  } catch (const std::exception& e) {
+    GTEST_SKIP() << "no GL context: " << e.what();
+  }
+  ShaderSource s;
+  s.text = "#version 450 core\nlayout(location = 0) out vec4 o;\nvoid main() { o = vec4(0.5); }\n";
+  s.files = {"test.frag"};
+  const std::string vs = fullscreen_vertex_source();
+  ProgramCache cache(2);
+  auto linked = std::make_shared<const Program>(vs, s);
+  EXPECT_FALSE(cache.contains(vs, s));
+  cache.put(vs, s, linked);
+  EXPECT_TRUE(cache.contains(vs, s));
+  bool hit = false;
+  EXPECT_EQ(cache.get(vs, s, &hit), linked);
+  EXPECT_TRUE(hit);
+  cache.put(vs, s, std::make_shared<const Program>(vs, s));  // already there: the first one stays
+  EXPECT_EQ(cache.get(vs, s), linked);
+  EXPECT_EQ(cache.size(), 1u);
+  cache.clear();
+}
+
 }  // namespace
 }  // namespace ms::test

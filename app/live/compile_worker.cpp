@@ -1,0 +1,134 @@
+#include "live/compile_worker.h"
+
+#include <chrono>
+
+#include "gl/gl.h"  // glad before GLFW
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "core/error.h"
+#include "render/frame.h"
+#include "shader/assemble.h"
+
+namespace ms::live {
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+}  // namespace
+
+CompileWorker::CompileWorker(GLFWwindow* share, const Context& ctx) : ctx_(ctx) {
+  window_ = create_shared_hidden_window(share);
+  if (!window_) fail_system("no GL context shared with the window for the compile worker");
+  thread_ = std::thread([this] { run(); });
+}
+
+CompileWorker::~CompileWorker() {
+  {
+    std::lock_guard<std::mutex> lock(m_);
+    stop_ = true;
+    queued_.reset();
+  }
+  cv_.notify_all();
+  thread_.join();
+  done_.reset();  // its programs go with the UI context current
+  glfwDestroyWindow(window_);
+}
+
+void CompileWorker::submit(CompileJob job) {
+  {
+    std::lock_guard<std::mutex> lock(m_);
+    queued_ = std::move(job);
+  }
+  cv_.notify_all();
+}
+
+std::optional<CompileResult> CompileWorker::poll() {
+  std::lock_guard<std::mutex> lock(m_);
+  std::optional<CompileResult> r = std::move(done_);
+  done_.reset();
+  return r;
+}
+
+CompileResult CompileWorker::wait(int id) {
+  std::unique_lock<std::mutex> lock(m_);
+  cv_.wait(lock, [&] { return done_ && done_->id == id; });
+  CompileResult r = std::move(*done_);
+  done_.reset();
+  return r;
+}
+
+bool CompileWorker::newer_waiting() {
+  std::lock_guard<std::mutex> lock(m_);
+  return queued_.has_value() || stop_;
+}
+
+void CompileWorker::run() {
+  glfwMakeContextCurrent(window_);
+  {
+    // Its own targets and vertex array: framebuffers and VAOs are not shared.
+    FrameRenderer renderer(ctx_);
+    for (;;) {
+      CompileJob job;
+      {
+        std::unique_lock<std::mutex> lock(m_);
+        cv_.wait(lock, [&] { return stop_ || queued_; });
+        if (stop_) break;
+        job = std::move(*queued_);
+        queued_.reset();
+      }
+      CompileResult r;
+      r.id = job.id;
+      bool given_up = false;
+      const auto t0 = std::chrono::steady_clock::now();
+      try {
+        for (const ShaderSource& s : job.sources) {
+          if (newer_waiting()) {
+            given_up = true;
+            break;
+          }
+          r.programs.push_back(std::make_shared<const Program>(fullscreen_vertex_source(), s));
+        }
+      } catch (const Error&) {
+        r.error = std::current_exception();
+        r.programs.clear();
+      }
+      r.gl_ms = ms_since(t0);
+      const auto t_warm = std::chrono::steady_clock::now();
+      const std::shared_ptr<const Program> post =
+          static_cast<int>(r.programs.size()) > job.passes ? r.programs[job.passes] : nullptr;
+      if (!given_up && !r.error && post) {
+        // The state of the viewer's first frame after a reload: one sample,
+        // no blending, one RGBA32F target, then the post pass. Uniforms stay
+        // 0 (they are not part of the variant), so the draws are cheap.
+        FrameParams fp;
+        fp.width = fp.height = 8;
+        for (int i = 0; i < job.passes && i < static_cast<int>(r.programs.size()); ++i) {
+          if (newer_waiting()) {
+            given_up = true;
+            break;
+          }
+          try {
+            renderer.draw(*r.programs[i], [](const Program&) {}, *post, fp);
+          } catch (const Error&) {
+            // A GL error in a draw with no inputs bound is no compile error:
+            // the real frame reports what it finds.
+          }
+        }
+        glFinish();  // the programs and the driver's JIT complete before the UI thread uses them
+      }
+      r.warm_ms = ms_since(t_warm);
+      if (given_up) continue;  // a newer job is waiting: nobody wants this one
+      {
+        std::lock_guard<std::mutex> lock(m_);
+        done_ = std::move(r);
+      }
+      cv_.notify_all();
+    }
+  }  // the renderer's objects go while this context is current
+  glfwMakeContextCurrent(nullptr);
+}
+
+}  // namespace ms::live

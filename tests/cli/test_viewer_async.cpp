@@ -1,0 +1,146 @@
+// Reloads compile on the viewer's worker thread (live/compile_worker.h,
+// docs/viewer.md "How a reload compiles"), under Xvfb: frames keep coming
+// while a heavy shader compiles, a save during a compile ends on the newest
+// file, a broken shader keeps the last good frame, and the adopted image is
+// render's. Frames are counted, never timed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <regex>
+
+#include "io/image_io.h"
+#include "run.h"
+#include "test_viewer_util.h"
+
+namespace ms::test {
+namespace {
+namespace fs = std::filesystem;
+
+const char* kScene = R"([scene]
+map = "seed.glsl"
+[camera]
+position = [0.0, 1.6, -5.0]
+target = [0.0, 0.8, 0.0]
+[render]
+width = 160
+height = 90
+tonemap = "aces"
+[[lights]]
+position = [4.0, 5.0, -1.5]
+intensity = 2.0
+[[materials]]
+name = "floor"
+color = [0.6, 0.6, 0.6]
+[[materials]]
+name = "ball"
+color = [0.85, 0.10, 0.06]
+)";
+
+// The ball of `radius` on the floor. heavy: plus a long function behind a
+// branch no ray takes (p.y > 1e6), so the image stays the same while the
+// driver's compile and JIT take seconds on llvmpipe. Its constant differs
+// per run, so Mesa's disk shader cache never has it.
+std::string map_glsl(const std::string& radius, bool heavy, const std::string& tail = "") {
+  static const std::string salt = std::to_string(
+      (std::chrono::steady_clock::now().time_since_epoch().count() + getpid()) % 1000003);
+  std::string s;
+  if (heavy) {
+    s += "float heavy(vec3 p) {\n  float a = " + salt + ".0;\n";
+    for (int i = 0; i < 300; ++i)
+      s += "  p = sin(p * " + std::to_string(1.0 + 0.01 * i) + " + p.yzx); a += p.x * p.z;\n";
+    s += "  return a;\n}\n";
+  }
+  s += "vec2 map(vec3 p) {\n"
+       "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
+       "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), " + radius + "), MAT_BALL);\n";
+  if (heavy) s += "  if (p.y > 1e6) ball.x = heavy(p);\n";
+  s += "  return opUnion(ground, ball);\n}\n" + tail;
+  return s;
+}
+
+class AsyncReload : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    write_file(dir / "seed.toml", kScene);
+    write_file(dir / "seed.glsl", map_glsl("1.0", false));
+    const std::string server = std::to_string(100 + (getpid() + 4111) % 20000);
+    proc = std::make_unique<BackgroundProcess>(
+        std::vector<std::string>{"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+                                 (dir / "seed.toml").string(), "--size", "160x90", "--paused", "--no-panel", "--log",
+                                 log().string(), "--capture-dir", (dir / "cap").string(), "--exit-after", "120"},
+        dir / "out.txt", dir / "err.txt");
+    ASSERT_TRUE(proc->started());
+    ASSERT_FALSE(wait_for_line(log(), "^reload ok 0 ", 60).empty()) << read_file(log()) << read_file(dir / "err.txt");
+    ASSERT_FALSE(wait_for_line(log(), "^capture 0 ", 10).empty());
+  }
+  fs::path log() const { return dir / "log.txt"; }
+  Image capture(int k) { return read_image(dir / "cap" / ("frame_" + std::to_string(k) + ".png")); }
+  Image render(const std::string& glsl) {
+    TempDir r;
+    write_file(r / "seed.toml", kScene);
+    write_file(r / "seed.glsl", glsl);
+    const RunResult run = run_marchstudio({"render", (r / "seed.toml").string(), "--size", "160x90", "-o",
+                                           (r / "out.png").string()});
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return read_image(r / "out.png");
+  }
+
+  TempDir dir;
+  std::unique_ptr<BackgroundProcess> proc;
+};
+
+TEST_F(AsyncReload, FramesKeepComingWhileAHeavyShaderCompiles) {
+  const std::string heavy = map_glsl("1.3", true);
+  save_by_rename(dir / "seed.glsl", heavy);
+  ASSERT_FALSE(wait_for_line(log(), "^reload compiling 1$", 20).empty()) << read_file(log());
+  const std::string line = wait_for_line(log(), "^reload (ok|failed) 1 ", 90);
+  ASSERT_EQ(line.rfind("reload ok 1 ", 0), 0u) << line << read_file(dir / "err.txt");
+  // The old program kept drawing while the worker compiled and warmed up.
+  EXPECT_GT(field(line, "frames_during_compile"), 0) << line;
+  ASSERT_FALSE(wait_for_line(log(), "^capture 1 ", 10).empty());
+  const Image want = render(heavy), got = capture(1);
+  EXPECT_LE(max_abs_diff(got, want), 1.0 / 255.0) << "the adopted program's frame is not render's";
+  EXPECT_GT(mean_abs_diff(got, capture(0)), 1e-3) << "the reload did not change the image";
+  EXPECT_TRUE(proc->running());
+}
+
+TEST_F(AsyncReload, ASaveDuringACompileEndsOnTheNewestFile) {
+  save_by_rename(dir / "seed.glsl", map_glsl("1.3", true));
+  ASSERT_FALSE(wait_for_line(log(), "^reload compiling 1$", 20).empty()) << read_file(log());
+  const std::string last = map_glsl("0.7", true, "// the newest\n");
+  save_by_rename(dir / "seed.glsl", last);
+  // Number 1 is dropped for number 2 (or done first, when it won the race).
+  const std::string line = wait_for_line(log(), "^reload (ok|failed) 2 ", 90);
+  ASSERT_EQ(line.rfind("reload ok 2 ", 0), 0u) << line << read_file(log());
+  const std::string log_text = read_file(log());
+  EXPECT_TRUE(log_text.find("reload superseded 1 by 2") != std::string::npos ||
+              log_text.find("reload ok 1 ") != std::string::npos)
+      << log_text;
+  ASSERT_FALSE(wait_for_line(log(), "^capture 2 ", 10).empty());
+  EXPECT_LE(max_abs_diff(capture(2), render(last)), 1.0 / 255.0) << "the viewer does not show the newest save";
+}
+
+TEST_F(AsyncReload, ABrokenShaderKeepsTheLastGoodFrame) {
+  // Heavy and then a type error at its last line: found by the worker's compile.
+  const std::string broken = map_glsl("1.3", true, "float broken() { return vec3(1.0); }\n");
+  const int bad_line = static_cast<int>(std::count(broken.begin(), broken.end(), '\n'));
+  save_by_rename(dir / "seed.glsl", broken);
+  ASSERT_FALSE(wait_for_line(log(), "^reload compiling 1$", 20).empty()) << read_file(log());
+  const std::string line = wait_for_line(log(), "^reload (ok|failed) 1 ", 90);
+  ASSERT_EQ(line.rfind("reload failed 1 ", 0), 0u) << line;
+  EXPECT_NE(line.find("seed.glsl:" + std::to_string(bad_line) + ":"), std::string::npos) << line;
+  EXPECT_NE(read_file(dir / "err.txt").find("seed.glsl:" + std::to_string(bad_line) + ":"), std::string::npos);
+  ASSERT_FALSE(wait_for_line(log(), "^capture 1 ", 10).empty());
+  EXPECT_LT(mean_abs_diff(capture(1), capture(0)), 1e-3) << "a failed reload changed the image";
+  // Fixed: the worker's next program shows.
+  const std::string fixed = map_glsl("1.3", false);
+  save_by_rename(dir / "seed.glsl", fixed);
+  ASSERT_EQ(wait_for_line(log(), "^reload (ok|failed) 2 ", 90).rfind("reload ok 2 ", 0), 0u) << read_file(log());
+  ASSERT_FALSE(wait_for_line(log(), "^capture 2 ", 10).empty());
+  EXPECT_LE(max_abs_diff(capture(2), render(fixed)), 1.0 / 255.0);
+}
+
+}  // namespace
+}  // namespace ms::test
