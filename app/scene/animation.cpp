@@ -243,4 +243,16 @@ Scene animated(const Scene& scene, double time) {
   return out;
 }
 
+std::string target_value(Scene& scene, const std::string& target, std::array<double, 3>* value, int* arity,
+                         bool set) {
+  const Slot slot = find_slot(target, scene);
+  if (!slot.error.empty()) return slot.error + (slot.hint.empty() ? "" : " (" + slot.hint + ")");
+  *arity = slot.arity();
+  if (set && slot.scalar) *slot.scalar = static_cast<float>((*value)[0]);
+  if (set && slot.vec) *slot.vec = glm::vec3(glm::dvec3((*value)[0], (*value)[1], (*value)[2]));
+  if (slot.scalar) *value = {*slot.scalar, 0.0, 0.0};
+  else *value = {slot.vec->x, slot.vec->y, slot.vec->z};
+  return "";
+}
+
 }  // namespace ms

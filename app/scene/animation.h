@@ -33,4 +33,11 @@ std::array<double, 3> evaluate(const AnimationTrack& track, double time);
 // its position or its up along the view, or a zero-length light direction.
 Scene animated(const Scene& scene, double time);
 
+// The value an animation target names ("materials[0].color"), read into
+// *value (1 or 3 entries, *arity says) and, when `set`, replaced by *value
+// first. Returns the error ("unknown animation target ...") or "" (the
+// viewer's scripted --drag uses it).
+std::string target_value(Scene& scene, const std::string& target, std::array<double, 3>* value, int* arity,
+                         bool set);
+
 }  // namespace ms

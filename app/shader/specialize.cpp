@@ -24,11 +24,24 @@ void define(std::string& out, const std::string& name, const std::string& value)
 }
 void define(std::string& out, const std::string& name, int value) { define(out, name, std::to_string(value)); }
 
-// Whether an [[animation]] track drives anything under `prefix` ("lights[",
-// "materials[", "sky."): such a table must stay uniforms.
-bool animated(const Scene& scene, const std::string& prefix) {
-  return std::any_of(scene.animation.begin(), scene.animation.end(),
-                     [&](const AnimationTrack& t) { return t.target.rfind(prefix, 0) == 0; });
+// Whether an [[animation]] track drives, or a live value is, anything under
+// `prefix` ("lights[", "materials[", "sky."): such a table stays uniforms.
+bool held(const Scene& scene, const std::vector<std::string>& live, const std::string& prefix) {
+  auto under = [&](const std::string& target) { return target.rfind(prefix, 0) == 0; };
+  return std::any_of(live.begin(), live.end(), under) ||
+         std::any_of(scene.animation.begin(), scene.animation.end(),
+                     [&](const AnimationTrack& t) { return under(t.target); });
+}
+
+bool same_light(const Light& a, const Light& b) {
+  const GlslLight x = glsl_light(a), y = glsl_light(b);
+  return x.pos == y.pos && x.color == y.color && x.size == y.size && x.atten == y.atten;
+}
+
+bool same_material(const Material& a, const Material& b) {
+  return a.color == b.color && a.ambient == b.ambient && a.diffuse == b.diffuse && a.specular == b.specular &&
+         a.shininess == b.shininess && a.reflectivity == b.reflectivity && a.color2 == b.color2 &&
+         a.pattern_scale == b.pattern_scale && a.pattern_velocity == b.pattern_velocity;
 }
 
 // The lights' values as constant tables, LIGHT_POS(i) and so on reading
@@ -142,7 +155,8 @@ GlslLight glsl_light(const Light& l) {
   return g;
 }
 
-Specialized specialize(const Scene& scene, const FeatureSet& f, Specialization mode) {
+Specialized specialize(const Scene& scene, const FeatureSet& f, Specialization mode,
+                       const std::vector<std::string>& live) {
   Specialized out;
   out.quality = scene.quality;
   if (mode == Specialization::generic) return out;
@@ -172,17 +186,17 @@ Specialized specialize(const Scene& scene, const FeatureSet& f, Specialization m
   for (size_t i = 0; i < f.lights.size(); ++i)
     if (f.lights[i] == LightKind::point) point_ids += std::string(point_ids.empty() ? "" : " || ") + "(i) == " + std::to_string(i);
   define(d, "LIGHT_IS_POINT(i)", "(" + (point_ids.empty() ? std::string("false") : point_ids) + ")");
-  const bool light_uniforms = !scene.lights.empty() && (!fold || animated(scene, "lights["));
+  const bool light_uniforms = !scene.lights.empty() && (!fold || held(scene, live, "lights["));
   define(d, "LIGHT_UNIFORMS", light_uniforms ? 1 : 0);
   if (!scene.lights.empty() && !light_uniforms) out.constants += folded_lights(scene, d);
 
   // Materials: a folded sceneMaterial(), or the library's uniform lookup.
   // A table counts as a whole: one animated entry keeps all as uniforms.
-  const bool material_uniforms = !fold || animated(scene, "materials[");
+  const bool material_uniforms = !fold || held(scene, live, "materials[");
   define(d, "MATERIAL_UNIFORMS", material_uniforms ? 1 : 0);
   if (!material_uniforms) out.constants += folded_materials(scene, f.checker);
 
-  const bool sky_uniforms = !fold || animated(scene, "sky.");
+  const bool sky_uniforms = !fold || held(scene, live, "sky.");
   define(d, "SKY_UNIFORMS", sky_uniforms ? 1 : 0);
   if (!sky_uniforms)
     out.constants = "// The sky, folded: the uniforms' names, as constants.\nconst vec3 uSkyHorizon = " +
@@ -192,6 +206,22 @@ Specialized specialize(const Scene& scene, const FeatureSet& f, Specialization m
   // Library functions: only those referenced (primitives.glsl, operators.glsl).
   define(d, "MS_LIBRARY_SUBSET", 1);
   for (const std::string& name : f.library) define(d, library_define(name), 1);
+  return out;
+}
+
+std::vector<std::string> folded_differences(const Scene& a, const Scene& b) {
+  std::vector<std::string> out;
+  const size_t lights = std::max(a.lights.size(), b.lights.size());
+  for (size_t i = 0; i < lights; ++i)
+    if (i >= a.lights.size() || i >= b.lights.size() || !same_light(a.lights[i], b.lights[i]))
+      out.push_back("lights[" + std::to_string(i) + "]");
+  const size_t materials = std::max(a.materials.size(), b.materials.size());
+  for (size_t i = 0; i < materials; ++i)
+    if (i >= a.materials.size() || i >= b.materials.size() || !same_material(a.materials[i], b.materials[i]))
+      out.push_back("materials[" + std::to_string(i) + "]");
+  if (a.sky.horizon != b.sky.horizon) out.push_back("sky.horizon");
+  if (a.sky.zenith != b.sky.zenith) out.push_back("sky.zenith");
+  if (a.sky.ambient != b.sky.ambient) out.push_back("sky.ambient");
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -20,12 +21,14 @@ enum class Specialization {
   // lights in a loop that branches on their kind, materials, lights and sky
   // read from uniforms. What the library compiles when nothing is defined.
   generic,
-  // `view`: only the features the scene uses, lights unrolled; every value
-  // the viewer's panel can drag (lights, materials, sky) stays a uniform.
+  // Only the features the scene uses, lights unrolled; every value the
+  // viewer's panel can drag (lights, materials, sky) stays a uniform (what
+  // `view` compiled before it folded; kept for comparisons).
   uniforms,
-  // `render`, `bench`: only the features the scene uses, and lights,
-  // materials and sky folded into constants, except those an [[animation]]
-  // track drives, which stay uniforms.
+  // `render`, `bench`, `view`: only the features the scene uses, and lights,
+  // materials and sky folded into constants, except the tables an
+  // [[animation]] track drives or a live value (a panel drag) is in, which
+  // stay uniforms.
   folded,
 };
 
@@ -55,7 +58,16 @@ struct Specialized {
 // with, for what is folded, constant tables (kLight*, sceneMaterial(), the
 // sky's names as constants); MS_LIBRARY_SUBSET with USE_<NAME> for every
 // name in f.library. The rule for what stays a uniform: docs/specialization.md.
-Specialized specialize(const Scene& scene, const FeatureSet& f, Specialization mode);
+// `live` names values the viewer's panel is dragging, in animation target
+// form ("lights[0].color", "materials[2]", "sky.horizon"): the table each is
+// in (lights, materials or sky) stays uniforms, as an animated one does.
+Specialized specialize(const Scene& scene, const FeatureSet& f, Specialization mode,
+                       const std::vector<std::string>& live = {});
+
+// The folded values (lights, materials, sky) that differ between a and b,
+// one name per differing entry ("lights[0]", "materials[1]", "sky.zenith"),
+// in table order: what a program folded from `a` shows wrong for `b`.
+std::vector<std::string> folded_differences(const Scene& a, const Scene& b);
 
 // The program cache's key: 64-bit FNV-1a over the vertex source, then the
 // fragment source. Equal sources give equal keys in every process.

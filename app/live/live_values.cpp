@@ -1,0 +1,60 @@
+#include "live/live_values.h"
+
+#include <algorithm>
+
+#include "scene/animation.h"
+#include "shader/specialize.h"
+
+namespace ms::live {
+
+void LiveValues::built(const Scene& scene, std::vector<std::string> live) {
+  any_ = true;
+  scene_ = scene;
+  live_ = std::move(live);
+}
+
+std::optional<std::vector<std::string>> LiveValues::rebuild(const Scene& now, bool dragging) const {
+  if (!any_) return std::nullopt;
+  std::vector<std::string> changed = folded_differences(scene_, now);
+  // A table kept live shows its values through the uniforms already.
+  const auto live_table = [&](const std::string& name) {
+    const std::string table = name.substr(0, name.find_first_of("[."));
+    return std::any_of(live_.begin(), live_.end(), [&](const std::string& l) { return l.rfind(table, 0) == 0; });
+  };
+  if (dragging) {
+    changed.erase(std::remove_if(changed.begin(), changed.end(), live_table), changed.end());
+    if (changed.empty()) return std::nullopt;
+    std::vector<std::string> next = live_;
+    next.insert(next.end(), changed.begin(), changed.end());
+    return next;
+  }
+  if (live_.empty() && changed.empty()) return std::nullopt;
+  return std::vector<std::string>{};
+}
+
+std::string live_names(const std::vector<std::string>& live) {
+  std::string out;
+  for (const std::string& l : live) out += (out.empty() ? "" : ",") + l;
+  return out.empty() ? "none" : out;
+}
+
+std::string uniform_tables(const std::string& text) {
+  std::vector<std::string> out;
+  for (const char* t : {"LIGHT", "MATERIAL", "SKY"})
+    if (text.find(std::string("#define ") + t + "_UNIFORMS 1\n") != std::string::npos)
+      out.push_back(t == std::string("LIGHT") ? "lights" : t == std::string("MATERIAL") ? "materials" : "sky");
+  return live_names(out);
+}
+
+bool ScriptedDrag::apply(Scene& scene, long frame) {
+  if (first < 0 || frame < first || frame > last) return false;
+  int arity = 0;
+  if (frame == first) target_value(scene, target, &from_, &arity, false);
+  const double u = last > first ? static_cast<double>(frame - first) / static_cast<double>(last - first) : 1.0;
+  std::array<double, 3> v{};
+  for (int c = 0; c < 3; ++c) v[c] = from_[c] + (to[c] - from_[c]) * u;
+  target_value(scene, target, &v, &arity, true);
+  return true;
+}
+
+}  // namespace ms::live
