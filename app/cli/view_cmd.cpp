@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cmath>
 #include <regex>
+#include <sstream>
 
 #include "cli/flag_checks.h"
 #include "cli/input.h"
@@ -15,6 +16,7 @@
 #include "io/sequence.h"
 #include "io/video.h"
 #include "live/viewer.h"
+#include "scene/animation.h"
 #include "scene/load.h"
 #include "scene/quality.h"
 
@@ -67,6 +69,10 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_option("--shot-size", a.shot_size, "Screenshot size WxH, re-rendered (default: the window's)");
   cmd->add_option("--shot-frame", a.shot_frame, "Take both screenshots after frame N (scripts)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--drag", a.drag,
+                  "Drag TARGET (an animation target, e.g. materials[0].color) to V (x or x,y,z) over frames A..B, "
+                  "as the panel would (scripts)")
+      ->check(not_empty());
   cmd->add_option("--exit-after", a.exit_after, "Quit after this many seconds")->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-frames", a.max_frames, "Quit after this many frames")->check(CLI::NonNegativeNumber);
   cmd->add_option("--debounce-ms", a.debounce_ms, "Quiet time that ends a save, ms (default 10)")
@@ -80,13 +86,51 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   return cmd;
 }
 
+namespace {
+
+// --drag TARGET=V@A..B: checked against the scene as read now.
+live::ScriptedDrag parse_drag(const std::string& text, const fs::path& input, const SceneOverrides& set) {
+  static const std::regex form(R"(^([^=@]+)=([^@]+)@(\d{1,9})\.\.(\d{1,9})$)");
+  std::smatch m;
+  auto bad = [&](const std::string& why, const std::string& hint) {
+    fail_input("invalid --drag '" + text + "': " + why, {}, 0, "--drag", hint);
+  };
+  if (!std::regex_match(text, m, form)) bad("not TARGET=V@A..B", "e.g. materials[0].color=1,0,0@5..15");
+  live::ScriptedDrag d;
+  d.target = m[1];
+  d.first = std::stol(m[3]);
+  d.last = std::stol(m[4]);
+  if (d.last < d.first) bad("frame " + std::string(m[4]) + " is before " + std::string(m[3]), "A..B with A <= B");
+  std::vector<double> v;
+  std::stringstream in(m[2].str());
+  for (std::string part; std::getline(in, part, ',');) {
+    char* end = nullptr;
+    const double x = std::strtod(part.c_str(), &end);
+    if (part.empty() || *end != '\0' || !std::isfinite(x)) bad("'" + part + "' is not a number", "V is x or x,y,z");
+    v.push_back(x);
+  }
+  if (input.extension() != ".toml") bad("it drags a value of a scene file", "a scene .toml");
+  Scene scene = load_scene(input, set);
+  std::array<double, 3> cur{};
+  int arity = 0;
+  const std::string error = target_value(scene, d.target, &cur, &arity, false);
+  if (!error.empty()) bad(error, "a light, material or sky value, as [[animation]] targets");
+  if (static_cast<int>(v.size()) != arity)
+    bad(d.target + " takes " + std::to_string(arity) + (arity == 1 ? " value" : " values"), "V is x or x,y,z");
+  for (size_t i = 0; i < v.size(); ++i) d.to[i] = v[i];
+  return d;
+}
+
+}  // namespace
+
 int run_view(const ViewArgs& a) {
   live::ViewerOptions o;
   o.input = a.input;
   o.assemble = AssembleOptions{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
                                parse_allow_include(a.allow_include)};
-  // Specialized, but every value the panel can drag stays a uniform.
-  o.assemble.specialize = a.no_specialize ? Specialization::generic : Specialization::uniforms;
+  // Folded as `render` is; what the panel drags stays a uniform while it is
+  // dragged (live/live_values.h).
+  o.assemble.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
   // Made the initializers at every build: the panel's sliders start there.
   o.assemble.uniforms = a.overrides.uniforms;
   const fs::path input = a.input;
@@ -150,6 +194,7 @@ int run_view(const ViewArgs& a) {
   o.capture_dir = a.capture_dir;
   o.shot_dir = a.shot_dir;
   o.shot_frame = a.shot_frame;
+  if (!a.drag.empty()) o.drag = parse_drag(a.drag, input, set);
   o.exit_after = a.exit_after;
   o.max_frames = a.max_frames;
   o.debounce_ms = a.debounce_ms;

@@ -30,6 +30,7 @@ struct ViewArgs {
   std::string shot_dir = ".";
   std::string shot_size;     // "WxH"
   long shot_frame = -1;
+  std::string drag;          // --drag TARGET=V@A..B (scripts): a panel drag
   double exit_after = 0.0;
   long max_frames = 0;
   int debounce_ms = 10;

@@ -89,6 +89,10 @@ class Session {
   // the current program has (a reflectivity dragged from or to 0 adds or
   // drops the reflection loop of a specialized shader): reload(false) then.
   bool features_changed() const;
+  // The panel values the next builds keep as uniforms, folded otherwise
+  // (live/live_values.h decides which).
+  void set_live(std::vector<std::string> live) { opts_.assemble.live = std::move(live); }
+  const std::vector<std::string>& live() const { return opts_.assemble.live; }
 
   // The graph to draw (null before the first good build) and its post pass.
   PassGraph* graph() const { return graph_.get(); }

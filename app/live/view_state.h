@@ -36,6 +36,9 @@ struct ViewState {
   float mouse[4] = {0, 0, 0, 0};  // Shadertoy iMouse, pixels, origin bottom-left
   KeyboardState keys{};           // Shadertoy's keyboard texture (live/keyboard.h)
   int fb_width = 1, fb_height = 1;
+  // A panel widget is held (ImGui's active item): a drag of a folded value
+  // makes its table live until it lets go (live/live_values.h).
+  bool panel_dragging = false;
 
   // Requests, served and cleared by the loop.
   bool want_reassemble = false;   // a #define (toggle, preset, quality value) changed

@@ -20,6 +20,7 @@
 #include "live/compile_worker.h"
 #include "live/input.h"
 #include "live/keyboard.h"
+#include "live/live_values.h"
 #include "live/live_log.h"
 #include "live/overlay.h"
 #include "live/panel.h"
@@ -89,7 +90,7 @@ struct Compiling {
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& o)
-      : o_(o), log_(o.log_file), session_(SessionOptions{o.load, o.assemble}), recorder_(o.record) {}
+      : o_(o), log_(o.log_file), session_(SessionOptions{o.load, o.assemble}), drag_(o.drag), recorder_(o.record) {}
   int run();
 
  private:
@@ -98,6 +99,7 @@ class Viewer {
   void adopt_compiled(bool wait = false);
   void finish_reload(const Compiling& c, const ReloadResult& r, double warm_ms);
   void report_failure(const ReloadResult& r);
+  void rebuild_values(std::vector<std::string> live);
   void poll_files();
   void after_frame();
   void serve_requests();
@@ -116,6 +118,8 @@ class Viewer {
   long frames_ = 0, iterations_ = 0;
   int reloads_ = 0;
   PendingReload pending_;
+  LiveValues live_;     // what the program folds, and when a panel edit rebuilds it
+  ScriptedDrag drag_;   // --drag
   std::unique_ptr<CompileWorker> worker_;  // null: compile on this thread (no shared context)
   Compiling compiling_;
   Recorder recorder_;
@@ -155,6 +159,7 @@ void Viewer::watch_bounds(double now) {
 
 void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event, bool wait) {
   Compiling c{true, reloads_++, t_event, frame_at_event, iteration_at_event, frames_, session_.prepare(from_disk)};
+  live_.built(session_.scene(), session_.live());
   if (compiling_.active)  // only the newest save is adopted; the worker drops the older job
     log_.line("reload superseded " + std::to_string(compiling_.number) + " by " + std::to_string(c.number));
   compiling_.active = false;
@@ -239,12 +244,30 @@ void Viewer::poll_files() {
     s_.want_reassemble = false;
     session_.debug_view = s_.debug_view;
     const ReloadResult r = session_.reload(false);
+    live_.built(session_.scene(), session_.live());
     log_.line(std::string("rebuild ") + (r.ok ? "ok" : "failed") + " debug_view=" +
               std::to_string(session_.compiled_debug_view()) + " compile_ms=" + fmt("%.1f", r.compile_ms) +
               (r.cached ? " cached" : "") +
               (r.ok ? "" : " -- " + r.error));
     if (!r.ok) report_failure(r);
+  } else if (std::optional<std::vector<std::string>> live = live_.rebuild(session_.scene(), s_.panel_dragging)) {
+    rebuild_values(std::move(*live));
   }
+}
+
+// A folded light, material or sky value was edited: rebuild with the
+// dragged ones live (uniforms), or all folded once the drag let go. Until
+// it is built the last program draws, at the values it was built with.
+void Viewer::rebuild_values(std::vector<std::string> live) {
+  session_.set_live(std::move(live));
+  const ReloadResult r = session_.reload(false);
+  live_.built(session_.scene(), session_.live());
+  const PassGraph* g = session_.graph();
+  log_.line(std::string("values ") + (r.ok ? "ok" : "failed") + " live=" + live_names(session_.live()) +
+            " uniforms=" + (g ? uniform_tables(g->pass(g->size() - 1).source.text) : "none") +
+            " frame=" + std::to_string(frames_) + " compile_ms=" + fmt("%.1f", r.compile_ms) +
+            (r.cached ? " cached" : "") + (r.ok ? "" : " -- " + r.error));
+  if (!r.ok) report_failure(r);
 }
 
 // Runs after the swap of every frame: the reload line (with its latency in
@@ -432,9 +455,11 @@ int Viewer::run() {
     const bool window_shot = s_.want_window_shot || frames_ + 1 == o_.shot_frame;
     s_.want_window_shot = false;
     const double t_draw = seconds_now();
+    const bool scripted_drag = drag_.apply(session_.scene(), frames_);
     const bool drawn = drawer.draw(frames_, dt, [&] {
       if (s_.show_panel) draw_panel(s_, session_, ctx->info());
       draw_overlay(s_, session_);
+      s_.panel_dragging = scripted_drag || ImGui::IsAnyItemActive();
     });
     if (drawn && pending_.active) {  // where a reload's time goes: the first draw, JIT included
       glFinish();

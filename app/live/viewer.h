@@ -8,6 +8,7 @@
 #include <functional>
 #include <string>
 
+#include "live/live_values.h"
 #include "live/recording.h"
 #include "scene/scene.h"
 #include "shader/assemble.h"
@@ -34,6 +35,7 @@ struct ViewerOptions {
   int debounce_ms = 10;              // quiet time that ends a save (editors write in steps)
   bool hide_panel = false;
   RecordOptions record;              // F9 and --record (live/recording.h)
+  ScriptedDrag drag;                 // --drag: a panel drag, scripted (live/live_values.h)
   std::string audio_device = "default";  // ALSA PCM for a music input; "none": silent (live/audio_out.h)
 };
 

@@ -25,9 +25,12 @@ struct AssembleOptions {
   // Nothing else is readable (PreprocessOptions::roots).
   std::vector<std::filesystem::path> allow_include;
   // Which code and values the scene shader compiles (shader/specialize.h):
-  // render and bench fold, view keeps the panel's values as uniforms,
+  // render, bench and view fold (view keeps what the panel drags live),
   // --no-specialize (and this default) builds the generic shader.
   Specialization specialize = Specialization::generic;
+  // Folded, the values the viewer's panel is dragging (shader/specialize.h
+  // names them): their tables stay uniforms until the drag ends.
+  std::vector<std::string> live = {};
   // --uniform NAME=VALUE: each becomes the initializer of the scene's ranged
   // uniform NAME (shader/scene_params.h), in the scene pass or in whichever
   // Shadertoy pass declares it; a name no pass declares is an error.

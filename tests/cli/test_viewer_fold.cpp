@@ -1,0 +1,121 @@
+// The viewer compiles what `render` compiles (issue 17 item 5): lights,
+// materials and sky folded into constants; a scripted panel drag (--drag)
+// keeps the dragged value's table as uniforms until the drag ends, then
+// folds the final value. Under Xvfb; images against `render` within 1/255,
+// what is a uniform read from the assembled text (the `values` log line).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "io/image_io.h"
+#include "run.h"
+#include "test_viewer_util.h"
+
+namespace ms::test {
+namespace {
+namespace fs = std::filesystem;
+
+const char* kScene = R"([scene]
+map = "seed.glsl"
+[camera]
+position = [0.0, 1.6, -5.0]
+target = [0.0, 0.8, 0.0]
+[render]
+width = 160
+height = 90
+tonemap = "aces"
+[[lights]]
+position = [4.0, 5.0, -1.5]
+intensity = 2.0
+[[materials]]
+name = "floor"
+color = [0.6, 0.6, 0.6]
+[[materials]]
+name = "ball"
+color = [0.85, 0.10, 0.06]
+specular = 0.6
+)";
+
+const char* kMap =
+    "vec2 map(vec3 p) {\n"
+    "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
+    "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), 1.0), MAT_BALL);\n"
+    "  return opUnion(ground, ball);\n"
+    "}\n";
+
+class FoldedViewer : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    write_file(dir / "seed.toml", kScene);
+    write_file(dir / "seed.glsl", kMap);
+  }
+  void start(std::vector<std::string> extra) {
+    const std::string server = std::to_string(100 + (getpid() + 7321) % 20000);
+    std::vector<std::string> argv = {"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+                                     (dir / "seed.toml").string(), "--size", "160x90", "--paused", "--no-panel",
+                                     "--log", log().string(), "--capture-dir", (dir / "cap").string(),
+                                     "--shot-dir", (dir / "shots").string(), "--exit-after", "90"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    proc = std::make_unique<BackgroundProcess>(argv, dir / "out.txt", dir / "err.txt");
+    ASSERT_TRUE(proc->started());
+    ASSERT_FALSE(wait_for_line(log(), "^reload ok 0 ", 60).empty()) << read_file(log()) << read_file(dir / "err.txt");
+    ASSERT_FALSE(wait_for_line(log(), "^capture 0 ", 10).empty());
+  }
+  Image render(std::vector<std::string> more) {
+    std::vector<std::string> args = {"render", (dir / "seed.toml").string(), "--size", "160x90", "-o",
+                                     (dir / "render.png").string()};
+    args.insert(args.end(), more.begin(), more.end());
+    const RunResult r = run_marchstudio(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return read_image(dir / "render.png");
+  }
+  std::vector<std::string> values_lines() {
+    std::vector<std::string> out;
+    for (const std::string& l : file_lines(log()))
+      if (l.rfind("values ", 0) == 0) out.push_back(l);
+    return out;
+  }
+  fs::path log() const { return dir / "log.txt"; }
+
+  TempDir dir;
+  std::unique_ptr<BackgroundProcess> proc;
+};
+
+// The ball's colour dragged over frames 3..8: live (its table a uniform)
+// from the first frame after the drag starts, folded again after it ends;
+// the shot after the drag is render of the edited scene, the first frame
+// render of the file.
+TEST_F(FoldedViewer, ADragIsLiveThenFoldedAtItsFinalValue) {
+  start({"--drag", "materials[1].color=0.1,0.3,0.9@3..8", "--shot-frame", "20"});
+  ASSERT_FALSE(wait_for_line(log(), "^screenshot ", 60).empty()) << read_file(log()) << read_file(dir / "err.txt");
+  const std::vector<std::string> v = values_lines();
+  ASSERT_EQ(v.size(), 2u) << read_file(log());
+  EXPECT_EQ(v[0].rfind("values ok live=materials[1] uniforms=materials frame=", 0), 0u) << v[0];
+  // Live right after the drag's first step, folded again as many frames
+  // later as the drag lasts (frame = frames drawn before the rebuild).
+  EXPECT_GE(field(v[0], "frame"), 4) << v[0];
+  EXPECT_LE(field(v[0], "frame"), 5) << v[0];
+  EXPECT_EQ(v[1].rfind("values ok live=none uniforms=none frame=", 0), 0u) << v[1];
+  EXPECT_EQ(field(v[1], "frame") - field(v[0], "frame"), 5) << v[1];
+
+  const Image file = render({}), edited = render({"--set", "materials.ball.color=[0.1,0.3,0.9]"});
+  EXPECT_LE(max_abs_diff(read_image(dir / "cap/frame_0.png"), file), 1.0 / 255.0)
+      << "the viewer's folded first frame is not render's";
+  const Image shot = read_image(dir / "shots/seed_1.png");
+  EXPECT_LE(max_abs_diff(shot, edited), 1.0 / 255.0) << "after the drag the frame is not render of the edited scene";
+  EXPECT_GT(mean_abs_diff(shot, file), 1e-3) << "the drag changed nothing";
+}
+
+TEST_F(FoldedViewer, ABadDragIsOneLineAndExit2) {
+  for (const std::string& bad : {"materials[1].colour=1,0,0@1..2", "materials[1].color=1@1..2",
+                                 "materials[1].color=1,0,0@5..2", "materials[9].color=1,0,0@1..2", "nonsense"}) {
+    const RunResult r = run_marchstudio({"view", (dir / "seed.toml").string(), "--drag", bad});
+    EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.err;
+    EXPECT_NE(r.err.find("--drag"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace ms::test
