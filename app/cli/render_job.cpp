@@ -67,7 +67,7 @@ RenderJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::
   job.strict = a.strict;
   job.verbose = a.verbose;
   job.shadertoy = a.shadertoy;
-  job.dispatch = resolve_dispatch(parse_dispatch(a.dispatch));
+  job.dispatch = parse_dispatch(a.dispatch);  // auto: chosen once the context exists (cli/dispatch_probe.h)
   job.compute_group = parse_compute_group(a.compute_group);
   job.overrides = a.overrides;
 

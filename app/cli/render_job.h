@@ -48,7 +48,7 @@ struct RenderJob {
   int tile_size = kTileSize;         // largest square per draw (render/tiles.h)
   int tile_still = 0;                // forced tiled-still side (tests); 0: past the limits only
   ShadertoyFlags shadertoy;
-  Dispatch dispatch = Dispatch::fragment;  // --dispatch, auto already resolved
+  Dispatch dispatch = Dispatch::fragment;  // --dispatch; automatic: cli/dispatch_probe.h chooses
   ComputeGroup compute_group;              // --compute-group
   bool verbose = false;
 

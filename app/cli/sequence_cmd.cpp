@@ -13,6 +13,8 @@
 
 #include "bench/bench.h"
 #include "cli/bloom_setup.h"
+#include "cli/dispatch_flag.h"
+#include "cli/dispatch_probe.h"
 #include "cli/input.h"
 #include "cli/progress.h"
 #include "cli/render_cmd.h"
@@ -31,6 +33,7 @@
 #include "render/frame.h"
 #include "render/tiles.h"
 #include "render/graph.h"
+#include "render/scene_drawer.h"
 #include "render/still.h"
 #include "render/uniforms.h"
 #include "cli/fingerprint.h"
@@ -174,6 +177,10 @@ int run_sequence(const RenderArgs& a) {
   fp.fused_post = fuse_post(in, fp.spp, aovs, display, opts);
   assemble_input(in, opts);
   report_input_warnings(in.warnings, a.input, a.strict);
+  // --dispatch: refused here, before the context, as render refuses it (cli/dispatch_flag.h).
+  const Dispatch requested = parse_dispatch(a.dispatch);
+  const ComputeGroup group = parse_compute_group(a.compute_group);
+  check_compute_input(requested, in, false);
   const bool stateful = in.stateful();
   if (stateful && plan.shard.count > 1 && plan.mode == ShardMode::stride)
     fail_input("a shader with buffers carries its state from frame to frame: stride shards would each replay the "
@@ -247,7 +254,6 @@ int run_sequence(const RenderArgs& a) {
     ProgramCache bloom_programs;
     const std::unique_ptr<BloomStage> bloom = make_bloom_stage(in, display, opts, bloom_programs);
     fp.bloom = bloom.get();
-    FrameRenderer renderer(*ctx);
     const auto inputs_at = [&](int f, const Scene& posed) {
       FrameInputs fi;
       fi.scene = &posed;
@@ -257,6 +263,11 @@ int run_sequence(const RenderArgs& a) {
       std::copy(std::begin(scene.shadertoy.mouse), std::end(scene.shadertoy.mouse), fi.mouse);
       return fi;
     };
+    // The fragment pass or the compute dispatch (auto: cli/dispatch_probe.h), for every frame.
+    const Scene first_pose = animated(scene, frame_time(todo.front()));
+    const StillFrame probe{inputs_at(todo.front(), first_pose), fp, plan.fps};
+    SceneDrawer renderer(*ctx, graph, choose_dispatch(requested, graph, post_prog, probe, *ctx, group, a.verbose),
+                         group);
     if (stateful) {
       const std::vector<int> buffers = graph.buffers();
       if (sp.resume_from >= 0) {
@@ -302,7 +313,8 @@ int run_sequence(const RenderArgs& a) {
       Image img;
       long long nonfinite = 0;  // the NaN/Inf guard, as in render_cmd.cpp
       try {
-        Still still = render_frame(renderer, graph, post_prog, inputs_at(f, posed), fp);
+        renderer.draw(graph, post_prog, inputs_at(f, posed), fp);
+        Still still = renderer.read(aovs);
         img = std::move(still.color);
         nonfinite = count_nonfinite_pixels(img, aovs ? &still.aovs : nullptr) + still.flagged;
         if (aovs) img = append_channels(img, select_channels(still.aovs, aov_names));

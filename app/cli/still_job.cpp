@@ -7,6 +7,7 @@
 
 #include "bench/bench.h"
 #include "cli/bloom_setup.h"
+#include "cli/dispatch_probe.h"
 #include "cli/fingerprint.h"
 #include "cli/input.h"
 #include "cli/tiled_render.h"
@@ -190,6 +191,10 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
   // --dispatch compute: the same scene shader as a compute pass, compiled once (render/compute_frame.h).
   std::optional<ComputeStill> compute;
   if (job.dispatch == Dispatch::compute) compute.emplace(ctx, graph, job.compute_group);
+  // auto: the probe's or the cache's choice for this device (cli/dispatch_probe.h), made with the bloom stage in place.
+  if (job.dispatch == Dispatch::automatic &&
+      choose_dispatch(job.dispatch, graph, *post_prog, still, ctx, job.compute_group, job.verbose) == Dispatch::compute)
+    compute.emplace(ctx, graph, job.compute_group);
   if (tiling.tiled()) {  // rendered and written band by band
     StillFn draw_tile;
     if (compute) draw_tile = [&](const StillFrame& piece) { return compute->render(graph, *post_prog, piece); };

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/hash.h"
+#include "io/cache_dir.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 
@@ -89,10 +90,7 @@ glm::vec3 eval_irradiance(const IrradianceSh& sh, glm::vec3 n) {
 }
 
 fs::path irradiance_cache_path(const std::string& content_hash) {
-  const char* xdg = std::getenv("XDG_CACHE_HOME");
-  const char* home = std::getenv("HOME");
-  const fs::path base = xdg && *xdg ? fs::path(xdg) : home && *home ? fs::path(home) / ".cache" : fs::temp_directory_path();
-  return base / "marchstudio" / "irradiance" / (content_hash + ".txt");
+  return cache_dir() / "irradiance" / (content_hash + ".txt");
 }
 
 void attach_environment(Scene& scene, PassSource& pass, bool* from_cache) {

@@ -1,0 +1,210 @@
+// --dispatch on every path but the still (issue 18; the still:
+// test_dispatch.cpp): a sequence drawn with compute equals the fragment one
+// frame by frame (PNG 1/255, EXR 1e-5, step AOVs equal), also after a
+// SIGKILL and a resume; --dispatch auto probes once per device and keeps its
+// choice in $XDG_CACHE_HOME/marchstudio/dispatch (counted by its -v lines,
+// never by time), rewrites a corrupt cache, and gives an input compute
+// cannot run the fragment pass.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "image_diff.h"
+#include "io/image_io.h"
+#include "run.h"
+
+namespace ms::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Enough work per pixel that a frame takes a while on llvmpipe.
+const char* kSlow = R"(void mainImage(out vec4 c, in vec2 f) {
+  float a = 0.0;
+  for (int i = 0; i < 20000; ++i) a += sin(f.x * 0.01 + float(i) * 0.001 + iTime);
+  c = vec4(fract(a), fract(iTime), 0.5, 1.0);
+}
+)";
+
+std::string frame_name(const std::string& prefix, int f, const std::string& ext) {
+  return prefix + (f < 10 ? "0" : "") + std::to_string(f) + ext;
+}
+
+int count_with(const std::string& text, const std::string& needle) {
+  int n = 0;
+  for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
+}
+
+RunResult run_in(const TempDir& dir, const std::vector<std::string>& args) {
+  return run_marchstudio(args, dir.path(), "XDG_CACHE_HOME='" + (dir / "cache").string() + "' ");
+}
+
+TEST(DispatchSequence, ComputeEqualsFragmentFrameByFrame) {
+  TempDir dir;
+  const std::string scene = (source_dir() / "scenes" / "seed.toml").string();
+  for (const std::string d : {"fragment", "compute"}) {
+    for (const std::string ext : {".png", ".exr"}) {
+      std::vector<std::string> args = {"render", scene,   "--frames", "0..3", "--fps", "3", "--size", "96x54",
+                                       "--spp",  "2",     "--dispatch", d,    "-o",    d.substr(0, 1) + "_%02d" + ext};
+      if (ext == ".exr") args.insert(args.end(), {"--aov", "steps,cost"});
+      const RunResult r = run_in(dir, args);
+      ASSERT_EQ(r.exit_code, 0) << d << ext << ": " << r.err;
+    }
+  }
+  for (int f = 0; f < 4; ++f) {
+    const Image fp = read_image(dir / frame_name("f_", f, ".png")), cp = read_image(dir / frame_name("c_", f, ".png"));
+    EXPECT_LE(max_diff(fp, cp), 1.0 / 255 + 1e-6) << "frame " << f << " PNG";
+    const Image fe = read_image(dir / frame_name("f_", f, ".exr")), ce = read_image(dir / frame_name("c_", f, ".exr"));
+    EXPECT_LE(max_diff(fe, ce), 1e-5) << "frame " << f << " EXR";
+    EXPECT_FALSE(channel(fe, "steps").empty());
+    EXPECT_EQ(channel(fe, "steps"), channel(ce, "steps")) << "frame " << f;
+  }
+  // Frames differ from one another: the comparison is of an animation.
+  EXPECT_GT(max_diff(read_image(dir / "f_00.exr"), read_image(dir / "f_03.exr")), 1e-3);
+}
+
+// Start marchstudio in `dir`, stdout and stderr to `log`.
+pid_t spawn(const std::vector<std::string>& args, const fs::path& dir, const std::string& log) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(dir.c_str()) != 0) _exit(127);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 1);
+    dup2(fd, 2);
+    std::vector<std::string> all = {MARCH_BIN};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& a : all) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+int count_frames(const fs::path& dir, const std::string& prefix) {
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    n += name.rfind(prefix, 0) == 0 && name.find(".tmp") == std::string::npos;
+  }
+  return n;
+}
+
+TEST(DispatchSequence, KilledComputeSequenceResumesEqualToFragment) {
+  TempDir dir;
+  write_file(dir / "slow.glsl", kSlow);
+  const std::vector<std::string> args = {"render", "slow.glsl", "--frames", "0..11", "--size",
+                                         "160x90", "--dispatch", "compute", "-o",    "k_%02d.png"};
+  const pid_t pid = spawn(args, dir.path(), "first.log");
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (count_frames(dir.path(), "k_") < 3) {
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, WNOHANG), 0) << "the render ended before 3 frames: " << read_file(dir / "first.log");
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  const int before = count_frames(dir.path(), "k_");
+  ASSERT_LT(before, 12) << "killed halfway, not at the end";
+
+  const RunResult r = run_marchstudio(args, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(count_with(r.err, " skipped: "), before) << r.err;
+  EXPECT_EQ(count_with(r.err, " rendered in "), 12 - before) << r.err;
+  const RunResult f = run_marchstudio({"render", "slow.glsl", "--frames", "0..11", "--size", "160x90", "-o",
+                                       "f_%02d.png"},
+                                      dir.path());
+  ASSERT_EQ(f.exit_code, 0) << f.err;
+  for (int n = 0; n < 12; ++n)
+    EXPECT_LE(max_diff(read_image(dir / frame_name("f_", n, ".png")), read_image(dir / frame_name("k_", n, ".png"))),
+              1.0 / 255 + 1e-6)
+        << "frame " << n;
+}
+
+TEST(DispatchSequence, RefusesWhatComputeCannotRunInOneLine) {
+  TempDir dir;
+  write_file(dir / "d.glsl", "void mainImage(out vec4 c, in vec2 f) {\n  c = vec4(dFdx(f.x));\n}\n");
+  const RunResult r = run_in(dir, {"render", "d.glsl", "--frames", "0..2", "--size", "16x16", "--dispatch",
+                                   "compute", "-o", "x_%02d.png"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("d.glsl:2"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(count_frames(dir.path(), "x_"), 0);
+}
+
+TEST(DispatchAuto, ProbesOnceThenReadsTheCache) {
+  TempDir dir;
+  const std::string scene = (source_dir() / "scenes" / "seed.toml").string();
+  const auto run = [&](const std::string& out, const std::string& dispatch) {
+    const RunResult r = run_in(dir, {"render", scene, "--size", "96x54", "--dispatch", dispatch, "-v", "-o", out});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return r.err;
+  };
+  const std::string first = run("a1.exr", "auto");
+  EXPECT_EQ(count_with(first, "dispatch auto: probe: "), 1) << first;
+  const fs::path cache = dir / "cache" / "marchstudio" / "dispatch";
+  ASSERT_TRUE(fs::exists(cache));
+  const std::string kept = read_file(cache);
+  EXPECT_EQ(count_with(kept, "\n"), 1) << kept;
+  const std::string choice = kept.find("\tcompute\n") != std::string::npos ? "compute" : "fragment";
+  const std::string second = run("a2.exr", "auto");
+  EXPECT_EQ(count_with(second, "dispatch auto: probe: "), 0) << second;
+  EXPECT_NE(second.find("dispatch auto: " + choice + " (cached for "), std::string::npos) << second;
+  EXPECT_EQ(read_file(cache), kept);
+  // Whichever it chose, the image is the fragment pass's.
+  run("f.exr", "fragment");
+  EXPECT_LE(max_diff(read_image(dir / "a2.exr"), read_image(dir / "f.exr")), 1e-5);
+  EXPECT_LE(max_diff(read_image(dir / "a1.exr"), read_image(dir / "f.exr")), 1e-5);
+  // A sequence reads the same cache.
+  const RunResult seq = run_in(dir, {"render", scene, "--frames", "0..1", "--size", "32x18", "--dispatch", "auto",
+                                     "-v", "-o", "s_%02d.png"});
+  ASSERT_EQ(seq.exit_code, 0) << seq.err;
+  EXPECT_EQ(count_with(seq.err, "dispatch auto: probe: "), 0) << seq.err;
+  EXPECT_NE(seq.err.find("dispatch auto: " + choice + " (cached for "), std::string::npos) << seq.err;
+}
+
+TEST(DispatchAuto, ACorruptCacheIsIgnoredAndRewritten) {
+  TempDir dir;
+  const fs::path cache = dir / "cache" / "marchstudio" / "dispatch";
+  fs::create_directories(cache.parent_path());
+  write_file(cache, "not\ta cache line\n\x01\x02 garbage");
+  const std::string scene = (source_dir() / "scenes" / "seed.toml").string();
+  const RunResult r = run_in(dir, {"render", scene, "--size", "32x18", "--dispatch", "auto", "-v", "-o", "a.png"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("is unreadable: ignored"), std::string::npos) << r.err;
+  EXPECT_EQ(count_with(r.err, "dispatch auto: probe: "), 1) << r.err;
+  const std::string kept = read_file(cache);
+  EXPECT_EQ(count_with(kept, "\n"), 1) << kept;
+  EXPECT_TRUE(kept.find("\tfragment\n") != std::string::npos || kept.find("\tcompute\n") != std::string::npos) << kept;
+  const RunResult again = run_in(dir, {"render", scene, "--size", "32x18", "--dispatch", "auto", "-v", "-o", "b.png"});
+  EXPECT_EQ(count_with(again.err, "dispatch auto: probe: "), 0) << again.err;
+}
+
+TEST(DispatchAuto, AnInputComputeCannotRunGetsTheFragmentPass) {
+  TempDir dir;
+  write_file(dir / "d.glsl", "void mainImage(out vec4 c, in vec2 f) {\n  c = vec4(fwidth(f.x), 0.5, 0.0, 1.0);\n}\n");
+  const RunResult r = run_in(dir, {"render", "d.glsl", "--size", "16x16", "--dispatch", "auto", "-v", "-o", "a.png"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("dispatch auto: fragment (this input cannot run as compute: "), std::string::npos) << r.err;
+  EXPECT_EQ(count_with(r.err, "probe: "), 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "cache" / "marchstudio" / "dispatch")) << "no probe, nothing cached";
+  const RunResult f = run_in(dir, {"render", "d.glsl", "--size", "16x16", "-o", "f.png"});
+  ASSERT_EQ(f.exit_code, 0) << f.err;
+  EXPECT_EQ(max_diff(read_image(dir / "a.png"), read_image(dir / "f.png")), 0.0);
+}
+
+}  // namespace
+}  // namespace ms::test
