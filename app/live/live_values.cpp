@@ -46,6 +46,11 @@ std::string uniform_tables(const std::string& text) {
   return live_names(out);
 }
 
+bool fuse_frame(const Scene& scene, int accumulate, int debug_view, bool shadertoy) {
+  const int target = accumulate < 0 ? std::max(1, scene.render.spp) : accumulate;
+  return !shadertoy && debug_view == 0 && !scene.bloom.enabled && target == 1 && scene.render.spp <= 1;
+}
+
 bool ScriptedDrag::apply(Scene& scene, long frame) {
   if (first < 0 || frame < first || frame > last) return false;
   int arity = 0;

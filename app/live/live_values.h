@@ -42,6 +42,13 @@ std::string live_names(const std::vector<std::string>& live);
 // "materials", "sky", comma-separated, or "none"): its *_UNIFORMS 1 defines.
 std::string uniform_tables(const std::string& shader_text);
 
+// Whether the viewer draws render's one-pass frame (FrameParams::fused_post,
+// shader/assemble.h fused_post_defines()): one sample a frame with no
+// accumulation (`accumulate`: ViewState's target, -1 the scene's spp, 0 no
+// limit; and the scene's spp 1, which screenshots use), no bloom, no debug
+// view, not a Shadertoy shader. Otherwise the accumulating pass and post.
+bool fuse_frame(const Scene& scene, int accumulate, int debug_view, bool shadertoy);
+
 struct ScriptedDrag {
   std::string target;         // an animation target: "materials[0].color"
   std::array<double, 3> to{};  // where the drag ends

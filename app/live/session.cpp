@@ -60,6 +60,9 @@ Session::PreparedReload Session::prepare(bool from_disk) {
     }
     const int view = shadertoy() ? 0 : debug_view;
     if (view > 0) opts.defines.emplace_back("DEBUG_VIEW", std::to_string(view));
+    p.fused = fuse_frame(scene_, accumulate_, view, shadertoy());  // render's one pass at spp 1
+    if (p.fused)
+      for (auto& d : fused_post_defines(scene_.render.tonemap, true)) opts.defines.push_back(std::move(d));
     // The same passes `render` builds (cli/input.cpp): a scene's one pass,
     // or a Shadertoy shader's buffers and Image pass, media found.
     if (shadertoy()) {
@@ -143,6 +146,7 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
     carry_over_values(params, params_);
     params_ = std::move(params);
     compiled_debug_view_ = p.view;
+    fused_ = p.fused;
     ++generation_;
     error_.clear();
     error_log_.clear();

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "live/live_values.h"
 #include "live/scene_params.h"
 #include "render/bloom.h"
 #include "render/graph.h"
@@ -72,6 +73,7 @@ class Session {
     ShaderSource post_src;
     std::vector<ShaderSource> bloom_src;  // empty without bloom
     int view = 0;
+    bool fused = false;  // the one-pass frame (fuse_frame())
     std::vector<ShaderSource> compiling;  // what to_compile() listed: adopt()'s `compiled` match these
   };
   PreparedReload prepare(bool from_disk);
@@ -93,6 +95,12 @@ class Session {
   // (live/live_values.h decides which).
   void set_live(std::vector<std::string> live) { opts_.assemble.live = std::move(live); }
   const std::vector<std::string>& live() const { return opts_.assemble.live; }
+  // The accumulation target the next builds are for (ViewState::accumulate):
+  // with none, they compile render's one-pass frame (fuse_frame()).
+  // fused(): the current program is that one (FrameParams::fused_post).
+  void set_accumulate(int accumulate) { accumulate_ = accumulate; }
+  bool fuse_wanted() const { return fuse_frame(scene_, accumulate_, shadertoy() ? 0 : debug_view, shadertoy()); }
+  bool fused() const { return fused_; }
 
   // The graph to draw (null before the first good build) and its post pass.
   PassGraph* graph() const { return graph_.get(); }
@@ -155,6 +163,8 @@ class Session {
   FeatureSet features_;    // of the last program built or tried, when specialized
   int generation_ = 0;
   int compiled_debug_view_ = 0;
+  int accumulate_ = -1;  // set_accumulate()
+  bool fused_ = false;
   std::string error_, error_log_, error_file_;
   std::vector<std::filesystem::path> deps_;
   std::vector<SceneParam> params_;

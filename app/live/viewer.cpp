@@ -197,6 +197,7 @@ void Viewer::finish_reload(const Compiling& c, const ReloadResult& r, double war
   watcher_.watch(session_.watched_files());
   watcher_.set_match_any(!r.ok);
   if (!r.ok) report_failure(r);
+  if (r.ok) log_.line(std::string("program fused=") + (session_.fused() ? "1" : "0"));  // docs/viewer.md#folding
   if (r.ok && session_.audio().get() != audio_clip_) {  // a music input came, went or changed
     audio_clip_ = session_.audio().get();
     if (!audio_clip_) {
@@ -226,6 +227,7 @@ void Viewer::report_failure(const ReloadResult& r) {
 }
 
 void Viewer::poll_files() {
+  session_.set_accumulate(s_.accumulate);  // O, or accumulation turned off: the one-pass frame or not
   std::vector<fs::path> changed = watcher_.poll();
   if (!changed.empty()) {
     const double t_event = seconds_now();
@@ -252,6 +254,8 @@ void Viewer::poll_files() {
     if (!r.ok) report_failure(r);
   } else if (std::optional<std::vector<std::string>> live = live_.rebuild(session_.scene(), s_.panel_dragging)) {
     rebuild_values(std::move(*live));
+  } else if (session_.graph() && session_.error().empty() && session_.fuse_wanted() != session_.fused()) {
+    rebuild_values(session_.live());  // accumulation turned on or off
   }
 }
 
@@ -265,6 +269,7 @@ void Viewer::rebuild_values(std::vector<std::string> live) {
   const PassGraph* g = session_.graph();
   log_.line(std::string("values ") + (r.ok ? "ok" : "failed") + " live=" + live_names(session_.live()) +
             " uniforms=" + (g ? uniform_tables(g->pass(g->size() - 1).source.text) : "none") +
+            " fused=" + (session_.fused() ? "1" : "0") +
             " frame=" + std::to_string(frames_) + " compile_ms=" + fmt("%.1f", r.compile_ms) +
             (r.cached ? " cached" : "") + (r.ok ? "" : " -- " + r.error));
   if (!r.ok) report_failure(r);
@@ -419,6 +424,7 @@ int Viewer::run() {
   s_.accumulate = s_.accumulate_default = o_.accumulate;
   s_.debug_view = session_.debug_view = std::clamp(o_.debug_view, 0, kDebugViews - 1);
   session_.set_preset(o_.preset);
+  session_.set_accumulate(s_.accumulate);  // the first build is already the one-pass frame where it can be
   reload(true, seconds_now(), 0, 1, true);  // the initial build is number 0 (frame_0.png)
   s_.shadertoy = session_.shadertoy();
   s_.start_time = o_.time >= 0.0 ? o_.time : session_.scene().render.time;

@@ -123,6 +123,7 @@ bool FrameDrawer::draw(long frame, double dt, const std::function<void()>& ui) {
     fp.spp = 1;  // interactive: one sample per pixel, more while nothing changes; screenshots use the scene's spp
     fp.exposure = session_.display_exposure();
     fp.bloom = session_.bloom();
+    fp.fused_post = session_.fused();  // one pass straight into the result, as render at spp 1
     just_converged_ = false;
     try {
       const Scene view = posed(static_cast<float>(s_.time));
@@ -209,6 +210,7 @@ void FrameDrawer::screenshot(const fs::path& path, int w, int h) {
   fp.spp = std::max(1, session_.scene().render.spp);
   fp.exposure = session_.display_exposure();
   fp.bloom = session_.bloom();
+  fp.fused_post = session_.fused();  // only at spp 1 (fuse_frame())
   // A screenshot draws the frame as it stands: the buffers are not stepped
   // (they hold the window's size; a different size starts them afresh).
   const Scene view = posed(static_cast<float>(s_.time));

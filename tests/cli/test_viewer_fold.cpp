@@ -91,20 +91,43 @@ TEST_F(FoldedViewer, ADragIsLiveThenFoldedAtItsFinalValue) {
   ASSERT_FALSE(wait_for_line(log(), "^screenshot ", 60).empty()) << read_file(log()) << read_file(dir / "err.txt");
   const std::vector<std::string> v = values_lines();
   ASSERT_EQ(v.size(), 2u) << read_file(log());
-  EXPECT_EQ(v[0].rfind("values ok live=materials[1] uniforms=materials frame=", 0), 0u) << v[0];
+  EXPECT_EQ(v[0].rfind("values ok live=materials[1] uniforms=materials fused=1 frame=", 0), 0u) << v[0];
   // Live right after the drag's first step, folded again as many frames
   // later as the drag lasts (frame = frames drawn before the rebuild).
   EXPECT_GE(field(v[0], "frame"), 4) << v[0];
   EXPECT_LE(field(v[0], "frame"), 5) << v[0];
-  EXPECT_EQ(v[1].rfind("values ok live=none uniforms=none frame=", 0), 0u) << v[1];
+  EXPECT_EQ(v[1].rfind("values ok live=none uniforms=none fused=1 frame=", 0), 0u) << v[1];
   EXPECT_EQ(field(v[1], "frame") - field(v[0], "frame"), 5) << v[1];
 
+  // spp 1, no accumulation: render's one-pass frame, as `render` draws it.
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=1$", 1).empty()) << read_file(log());
+  EXPECT_NE(v[0].find(" fused=1 "), std::string::npos) << "the live program is one pass too: " << v[0];
   const Image file = render({}), edited = render({"--set", "materials.ball.color=[0.1,0.3,0.9]"});
   EXPECT_LE(max_abs_diff(read_image(dir / "cap/frame_0.png"), file), 1.0 / 255.0)
       << "the viewer's folded first frame is not render's";
   const Image shot = read_image(dir / "shots/seed_1.png");
   EXPECT_LE(max_abs_diff(shot, edited), 1.0 / 255.0) << "after the drag the frame is not render of the edited scene";
   EXPECT_GT(mean_abs_diff(shot, file), 1e-3) << "the drag changed nothing";
+}
+
+// Accumulating (or in a debug view) the frame is the accumulating pass and
+// post; turning accumulation off (--accumulate 1) gives the one-pass frame.
+TEST_F(FoldedViewer, AccumulatingIsNotTheOnePassFrame) {
+  start({"--accumulate", "4", "--max-frames", "8"});
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=0$", 5).empty()) << read_file(log());
+  ASSERT_FALSE(wait_for_line(log(), "^exit ", 30).empty());
+  EXPECT_EQ(read_file(log()).find("fused=1"), std::string::npos) << read_file(log());
+}
+
+TEST_F(FoldedViewer, ADebugViewIsNotTheOnePassFrame) {
+  start({"--debug-view", "2", "--max-frames", "4"});
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=0$", 5).empty()) << read_file(log());
+}
+
+TEST_F(FoldedViewer, TheOnePassFrameIsRendersAtSpp1) {
+  start({"--accumulate", "1"});
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=1$", 5).empty()) << read_file(log());
+  EXPECT_LE(max_abs_diff(read_image(dir / "cap/frame_0.png"), render({})), 1.0 / 255.0);
 }
 
 TEST_F(FoldedViewer, ABadDragIsOneLineAndExit2) {
