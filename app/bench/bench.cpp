@@ -68,17 +68,39 @@ BenchCost measure_cost(const Image& aovs) {
   return c;
 }
 
-BenchCost count_frame_cost(FrameRenderer& renderer, const Program& counting, const Program& post,
-                           const Scene& posed, float time, FrameParams fp) {
+namespace {
+
+void draw_main(FrameRenderer& r, const Program& main, const UniformFn& u, const Program& post, const FrameParams& p) {
+  r.draw(main, u, post, p);
+}
+void draw_main(SceneDrawer& d, const Program& main, const UniformFn& u, const Program& post, const FrameParams& p) {
+  d.draw_program(main, u, post, p);
+}
+
+template <class Renderer>
+BenchCost count_cost(Renderer& renderer, const Program& counting, const Program& post, const Scene& posed, float time,
+                     FrameParams fp) {
   fp.spp = 1;
   fp.aovs = true;
   fp.fused_post = false;
-  renderer.draw(counting, [&](const Program& p) { set_scene_uniforms(p, posed, fp.width, fp.height, time, 0); },
-                post, fp);
+  draw_main(renderer, counting,
+            [&](const Program& p) { set_scene_uniforms(p, posed, fp.width, fp.height, time, 0); }, post, fp);
   const Image aovs = renderer.read_aovs(), colour = renderer.read_color();
   BenchCost c = measure_cost(aovs);
   c.nonfinite_pixels = count_nonfinite_pixels(colour, &aovs);
   return c;
+}
+
+}  // namespace
+
+BenchCost count_frame_cost(FrameRenderer& renderer, const Program& counting, const Program& post,
+                           const Scene& posed, float time, FrameParams fp) {
+  return count_cost(renderer, counting, post, posed, time, fp);
+}
+
+BenchCost count_frame_cost(SceneDrawer& drawer, const Program& counting, const Program& post, const Scene& posed,
+                           float time, FrameParams fp) {
+  return count_cost(drawer, counting, post, posed, time, fp);
 }
 
 BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<PassSource>& passes,
@@ -91,7 +113,6 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   r.gl_vendor = ctx.info().vendor;
   r.gl_version = ctx.info().version;
 
-  FrameRenderer renderer(ctx);
   FrameParams fp;
   fp.width = s.width;
   fp.height = s.height;
@@ -127,21 +148,29 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
     bloom = std::make_unique<BloomStage>(scene.bloom, std::make_shared<const Program>(vs, s.bloom[0]),
                                          std::make_shared<const Program>(vs, s.bloom[1]));
   fp.bloom = bloom.get();
+  Dispatch dispatch = s.dispatch;
+  if (dispatch == Dispatch::automatic) {
+    StillFrame probe{next(), fp, fps};
+    frame = 0;
+    dispatch = s.choose ? s.choose(graph, post_prog, probe) : Dispatch::fragment;
+  }
+  SceneDrawer renderer(ctx, graph, dispatch, s.group);
+  r.dispatch = renderer.dispatch();
   r.link_ms = ms_since(t0);
   FrameParams tiny = fp;
   tiny.width = tiny.height = 1;
   tiny.spp = 1;
-  graph.draw(renderer, post_prog, next(), tiny);
+  renderer.draw(graph, post_prog, next(), tiny);
   glFinish();
   r.compile_link_ms = ms_since(t0);
   frame = 0;
-  graph.draw(renderer, post_prog, next(), fp);
+  renderer.draw(graph, post_prog, next(), fp);
   glFinish();
   r.first_frame_ms = ms_since(t0);
 
   // Timed frames: the GPU timer brackets exactly the draw; wall time adds
   // the wait for completion (glFinish), which is what a user sees.
-  for (int i = 0; i < s.warmup; ++i) graph.draw(renderer, post_prog, next(), fp);
+  for (int i = 0; i < s.warmup; ++i) renderer.draw(graph, post_prog, next(), fp);
   glFinish();
   // Each timed frame is followed by one timed pass by pass, so the sum of the
   // passes and the frame see the same machine load: their ratio shows what
@@ -153,13 +182,13 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
     const FrameInputs in = next();
     const Clock::time_point w0 = Clock::now();
     timer.begin();
-    graph.draw(renderer, post_prog, in, fp);
+    renderer.draw(graph, post_prog, in, fp);
     timer.end();
     glFinish();
     wall.push_back(ms_since(w0));
     gpu.push_back(timer.wait_ms());
     graph.set_timing(true);
-    graph.draw(renderer, post_prog, next(), fp);
+    renderer.draw(graph, post_prog, next(), fp);
     graph.set_timing(false);
     for (size_t p = 0; p < graph.size(); ++p) per[p].push_back(graph.pass_ms()[p]);
   }
@@ -169,7 +198,7 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   for (size_t p = 0; p < graph.size(); ++p) r.passes.push_back({graph.name(p), summarize(per[p])});
 
   if (counting) {
-    const Program count_prog(vs, *counting);
+    const Program count_prog = renderer.program(*counting);
     r.cost = count_frame_cost(renderer, count_prog, post_prog, scene, s.time, fp);
     r.has_cost = true;
   }

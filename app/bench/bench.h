@@ -3,6 +3,7 @@
 // Drives the same FrameRenderer as `render`; never forks the pipeline.
 // Output format and schema: docs/bench.md.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "io/image.h"
 #include "render/frame.h"
 #include "render/graph.h"
+#include "render/scene_drawer.h"
 #include "scene/scene.h"
 #include "shader/preprocess.h"
 
@@ -32,6 +34,12 @@ struct BenchSettings {
   // [extract, blur] (shader/assemble.h assemble_bloom): the timed frames run
   // the scene's [post.bloom] stage, with a post pass assembled with bloom.
   std::vector<ShaderSource> bloom;
+  // Which pass draws the scene (--dispatch): fragment or compute, or
+  // automatic, then `choose` decides once the programs exist (cli/ gives it
+  // cli/dispatch_probe.h's choose_dispatch). Buffer passes stay fragment.
+  Dispatch dispatch = Dispatch::fragment;
+  ComputeGroup group;
+  std::function<Dispatch(PassGraph& graph, const Program& post, const StillFrame& frame)> choose;
 };
 
 // The deterministic cost of one frame at spp 1, from the AOV counters.
@@ -63,6 +71,9 @@ BenchCost measure_cost(const Image& aovs);
 // with it.
 BenchCost count_frame_cost(FrameRenderer& renderer, const Program& counting, const Program& post,
                            const Scene& posed, float time, FrameParams fp);
+// The same drawn by `drawer`'s dispatch, `counting` from drawer.program().
+BenchCost count_frame_cost(SceneDrawer& drawer, const Program& counting, const Program& post, const Scene& posed,
+                           float time, FrameParams fp);
 
 // One pass of the graph, timed on its own (glFinish before and after).
 struct PassTiming {
@@ -72,6 +83,7 @@ struct PassTiming {
 
 struct BenchResult {
   std::string backend, gl_renderer, gl_vendor, gl_version;
+  Dispatch dispatch = Dispatch::fragment;  // what drew the scene pass (auto resolved)
   // Startup, milliseconds of wall time. llvmpipe compiles a program's
   // machine code lazily at its first draw, so link_ms (the Program
   // constructors returning) hides most of the work: compile_link_ms also

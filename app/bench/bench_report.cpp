@@ -31,6 +31,7 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
                    {"frames", s.frames}, {"warmup", s.warmup}, {"time", s.time},
                    {"disable", subject.disable}, {"shader_cache", s.shader_cache},
                    {"specialize", subject.specialize}, {"passes", s.fused_post ? 1 : 2},
+                   {"dispatch", dispatch_name(r.dispatch)},
                    {"overrides", subject.overrides}};
   j["machine"] = {{"backend", r.backend},
                   {"gl_renderer", r.gl_renderer},
@@ -65,11 +66,12 @@ std::string bench_table(const BenchSubject& subject, const BenchSettings& s, con
   std::string out;
   char buf[256];
   std::snprintf(buf, sizeof buf,
-                "scene     %s (%s)\nsettings  %dx%d, spp %d, %d frames after %d warm-up, %s shader, %s\n",
+                "scene     %s (%s)\nsettings  %dx%d, spp %d, %d frames after %d warm-up, %s shader, %s, %s dispatch\n",
                 subject.scene_name.c_str(), subject.scene_file.c_str(), s.width, s.height, s.spp, s.frames,
                 s.warmup, subject.specialize.c_str(), s.fused_post        ? "one pass"
                 : !s.bloom.empty() ? "main, bloom and post passes"
-                                   : "main + post pass");
+                                   : "main + post pass",
+                dispatch_name(r.dispatch));
   out += buf;
   std::snprintf(buf, sizeof buf, "machine   %s, %s, GL %s\n", r.backend.c_str(), r.gl_renderer.c_str(),
                 r.gl_version.c_str());

@@ -10,6 +10,8 @@
 #include "bench/bench.h"
 #include "bench/bench_report.h"
 #include "cli/bloom_setup.h"
+#include "cli/dispatch_flag.h"
+#include "cli/dispatch_probe.h"
 #include "cli/flag_checks.h"
 #include "cli/input.h"
 #include "cli/shader_dir.h"
@@ -53,6 +55,10 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
                 "the report is still printed");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Time the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
+  cmd->add_option("--dispatch", a.dispatch,
+                  "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
+  cmd->add_option("--compute-group", a.compute_group, "Compute work group WxH (default 8x8)")->group("");
+  cmd->add_flag("-v,--verbose", a.verbose, "Say which dispatch --dispatch auto chose, and why");
   return cmd;
 }
 
@@ -104,11 +110,17 @@ int run_bench_command(const BenchArgs& a) {
   report_input_warnings(in.warnings, a.input, a.strict);
 
   s.shader_cache = a.shader_cache;
+  s.dispatch = parse_dispatch(a.dispatch);
+  s.group = parse_compute_group(a.compute_group);
+  check_compute_input(s.dispatch, in, false);
   check_bench_settings(s);  // before the (slow) context
   set_shader_cache(s.shader_cache);
   std::unique_ptr<Context> ctx = create_headless_context(backend);
   // Keyframed values at the benchmarked time, as render poses them.
   const Scene posed = animated(in.scene, s.time);
+  s.choose = [&](PassGraph& graph, const Program& post_prog, const StillFrame& f) {
+    return choose_dispatch(s.dispatch, graph, post_prog, f, *ctx, s.group, a.verbose);
+  };
   const BenchResult r = run_bench(*ctx, posed, in.passes, counting ? &*counting : nullptr, post, s);
   if (!in.shadertoy) {
     const std::string bw = bounds_warning(a.input, check_bounds(posed, opts, [&](const Program& p) {  // render/bounds_check.h

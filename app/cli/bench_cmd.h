@@ -30,6 +30,9 @@ struct BenchArgs {
   std::vector<std::string> allow_include;  // more directories #include may read
   ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
   Overrides overrides;       // --set, --uniform (cli/override_flags.h)
+  std::string dispatch = "fragment";  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
+  std::string compute_group = "8x8";  // hidden --compute-group
+  bool verbose = false;               // -v: what --dispatch auto chose, and why
 };
 
 CLI::App* add_bench_command(CLI::App& app, BenchArgs& args);
