@@ -25,8 +25,15 @@
   frame, waited for), against a warm frame (the median `frame_ms` of the
   last second). Mesa's disk cache starts empty.
 
-Needs xvfb-run. Usage: /usr/bin/python3 tools/viewer-figures.py [--images|--split] [path/to/marchstudio]
-(--images: only the pictures; --split: only the reload split)
+- frame-vs-render: for each scene in scenes/ at 1280x720, one sample per
+  pixel: the viewer's frame time (the median `frame_ms` of its last
+  second, `--accumulate 1`, paused, no panel: folded, and the one-pass
+  frame where `program fused=1`) against `render`'s (`bench --spp 1`,
+  the median wall time of its timed frames: the same folded, one-pass
+  program `render` draws).
+
+Needs xvfb-run. Usage: /usr/bin/python3 tools/viewer-figures.py [--images|--split|--frames] [path/to/marchstudio]
+(--images: only the pictures; --split: only the reload split; --frames: only frame-vs-render)
 """
 import datetime
 import os
@@ -43,7 +50,8 @@ import time
 from doc_markers import put  # tools/doc_markers.py: this directory is on sys.path
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'))
-ARGS = [a for a in sys.argv[1:] if a not in ('--images', '--split')]
+ARGS = [a for a in sys.argv[1:] if a not in ('--images', '--split', '--frames')]
+FRAMES_ONLY = '--frames' in sys.argv[1:]
 IMAGES_ONLY = '--images' in sys.argv[1:]
 SPLIT_ONLY = '--split' in sys.argv[1:]
 SPLIT = re.compile(r'compile_ms=([\d.]+) assemble_ms=([\d.]+) gl_ms=([\d.]+) first_draw_ms=([\d.]+) warm_ms=([\d.]+)')
@@ -194,6 +202,35 @@ def reload_split(date, cpu, renderer):
             '|---|---|---|---|---|---|---|'] + rows
 
 
+def frame_vs_render(date, cpu, renderer):
+    rows = []
+    for toml in sorted(f for f in os.listdir(os.path.join(ROOT, 'scenes')) if f.endswith('.toml')):
+        path = os.path.join(ROOT, 'scenes', toml)
+        with tempfile.TemporaryDirectory() as work:
+            log = os.path.join(work, 'log.txt')
+            subprocess.run(['xvfb-run', '-a', '-s', '-screen 0 1920x1080x24', BIN, 'view', path, '--size', '1280x720',
+                            '--accumulate', '1', '--paused', '--no-panel', '--log', log, '--exit-after', '9'],
+                           env=ENV, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=180)
+            text = open(log).read()
+        viewer = [float(x) for x in re.findall(r'^frames \d+ .*frame_ms=([\d.]+)', text, re.M)]
+        fused = re.findall(r'^program fused=(\d)', text, re.M)
+        bench = subprocess.run([BIN, 'bench', path, '--size', '1280x720', '--spp', '1', '--frames', '5', '--warmup', '1',
+                                '--json'], env=ENV, capture_output=True, text=True, check=True, timeout=300).stdout
+        render = re.search(r'"wall":\s*\{\s*"min":\s*[\d.]+,\s*"median":\s*([\d.]+)', bench).group(1)
+        rows.append('| %s | %s | %.0f | %.0f |' % (toml[:-5], 'yes' if fused and fused[-1] == '1' else 'no',
+                                                  viewer[-1] if viewer else float('nan'), float(render)))
+        print('frames %s' % toml, file=sys.stderr)
+    return ['Measured by `tools/viewer-figures.py --frames` on %s (%d cores), Xvfb, `GL_RENDERER` = `%s`, %s:'
+            % (cpu, os.cpu_count(), renderer, date),
+            'each scene at 1280x720, one sample per pixel. *viewer*: `view --accumulate 1 --paused --no-panel`, the',
+            'median frame time (swap to swap) of its last second; *one pass*: its program is the fused one',
+            '(`program fused=1`; bloom scenes keep the post pass, as `render` does); *render*: `bench --spp 1`, the',
+            'median wall time of 5 frames, the program `render` draws. Both fold the scene\'s values.',
+            '',
+            '| scene | one pass | viewer frame (ms) | render frame (ms) |',
+            '|---|---|---|---|'] + rows
+
+
 def machine():
     renderer = subprocess.run([BIN, 'bench', os.path.join(ROOT, 'scenes', 'seed.toml'), '--size', '16x16', '--frames', '1',
                                '--json'], env=ENV, capture_output=True, text=True, check=True).stdout
@@ -219,9 +256,12 @@ def main():
         return images()
     doc = os.path.join(ROOT, 'docs', 'viewer.md')
     date, cpu, renderer = machine()
+    if FRAMES_ONLY:
+        return put(doc, 'frame-vs-render', frame_vs_render(date, cpu, renderer))
     put(doc, 'reload-split', reload_split(date, cpu, renderer))
     if SPLIT_ONLY:
         return
+    put(doc, 'frame-vs-render', frame_vs_render(date, cpu, renderer))
     table = ['Measured by `tools/viewer-figures.py` on %s (%d cores), Xvfb, `GL_RENDERER` = `%s`, %s: the seed'
              % (cpu, os.cpu_count(), renderer, date),
              'scene, spp 1, %d saves of each kind per window size, one second apart. *save to log line*: wall time from'
