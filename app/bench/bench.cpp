@@ -198,8 +198,8 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   for (size_t p = 0; p < graph.size(); ++p) r.passes.push_back({graph.name(p), summarize(per[p])});
 
   if (counting) {
-    const Program count_prog = renderer.program(*counting);
-    r.cost = count_frame_cost(renderer, count_prog, post_prog, scene, s.time, fp);
+    const std::unique_ptr<Program> count_prog = renderer.program(*counting);
+    r.cost = count_frame_cost(renderer, *count_prog, post_prog, scene, s.time, fp);
     r.has_cost = true;
   }
   return r;

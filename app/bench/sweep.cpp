@@ -15,6 +15,7 @@
 #include "render/aov.h"
 #include "render/frame.h"
 #include "render/gpu_timer.h"
+#include "render/scene_drawer.h"
 #include "render/uniforms.h"
 
 namespace ms {
@@ -38,7 +39,7 @@ int channel_of(const Image& img, const std::string& name) {
 class RowRenderer {
  public:
   RowRenderer(const Context& ctx, const Scene& scene, const AssembleOptions& opts, const SweepSettings& s)
-      : renderer_(ctx), scene_(scene), opts_(opts), s_(s), vs_(fullscreen_vertex_source()),
+      : renderer_(ctx, s.dispatch, s.group), scene_(scene), opts_(opts), s_(s), vs_(fullscreen_vertex_source()),
         post_(vs_, assemble_post(scene.render.tonemap, true, opts)) {}
 
   Scene scene_for(const SweepConfig& c) const {
@@ -74,8 +75,8 @@ class RowRenderer {
   // The image at `spp`, with AOVs when asked.
   Frame render(const SweepConfig& c, int spp, bool aovs) {
     const Scene sc = scene_for(c);
-    const Program prog(vs_, assemble_scene(sc, opts_for(c, aovs)));
-    renderer_.draw(prog, uniforms(sc, s_.width, s_.height), post_, params(spp, aovs));
+    const std::unique_ptr<Program> prog = renderer_.program(assemble_scene(sc, opts_for(c, aovs)));
+    renderer_.draw_program(*prog, uniforms(sc, s_.width, s_.height), post_, params(spp, aovs));
     Frame f;
     f.color = renderer_.read_color();
     if (aovs) f.aovs = renderer_.read_aovs();
@@ -90,10 +91,10 @@ class RowRenderer {
     const Scene sc = scene_for(c);
     const ShaderSource src = assemble_scene(sc, opts_for(c, false, fused()));
     const Clock::time_point t0 = Clock::now();
-    auto prog = std::make_unique<Program>(vs_, src);
+    std::unique_ptr<Program> prog = renderer_.program(src);
     FrameParams tiny = params(1, false, fused());
     tiny.width = tiny.height = 1;
-    renderer_.draw(*prog, uniforms(sc, 1, 1), post_, tiny);
+    renderer_.draw_program(*prog, uniforms(sc, 1, 1), post_, tiny);
     glFinish();
     row.compile_ms = ms_since(t0);
     image = render(c, s_.spp, true);
@@ -110,14 +111,14 @@ class RowRenderer {
                      std::vector<double>& cpu) {
     const Scene sc = scene_for(c);
     const FrameParams fp = params(s_.spp, false, fused());
-    for (int i = 0; i < s_.warmup; ++i) renderer_.draw(prog, uniforms(sc, s_.width, s_.height), post_, fp);
+    for (int i = 0; i < s_.warmup; ++i) renderer_.draw_program(prog, uniforms(sc, s_.width, s_.height), post_, fp);
     glFinish();
     std::vector<double> g, w, u;
     for (int i = 0; i < s_.frames; ++i) {
       const Clock::time_point w0 = Clock::now();
       const double u0 = process_cpu_ms();
       timer_.begin();
-      renderer_.draw(prog, uniforms(sc, s_.width, s_.height), post_, fp);
+      renderer_.draw_program(prog, uniforms(sc, s_.width, s_.height), post_, fp);
       timer_.end();
       glFinish();
       u.push_back(process_cpu_ms() - u0);
@@ -131,7 +132,7 @@ class RowRenderer {
   }
 
  private:
-  FrameRenderer renderer_;
+  SceneDrawer renderer_;  // the fragment pass or the compute dispatch (s.dispatch)
   const Scene& scene_;
   const AssembleOptions& opts_;
   const SweepSettings& s_;
@@ -245,6 +246,7 @@ SweepResult run_sweep(const Context& ctx, const Scene& scene, const std::vector<
   result.gl_renderer = ctx.info().renderer;
   result.gl_vendor = ctx.info().vendor;
   result.gl_version = ctx.info().version;
+  result.dispatch = s.dispatch == Dispatch::compute ? Dispatch::compute : Dispatch::fragment;
   RowRenderer rr(ctx, scene, opts, s);
 
   // The references: converged tracing, the scene's own shading.

@@ -39,6 +39,10 @@ struct SweepSettings {
   float time = 0.0f;  // scene time
   SweepGrid grid = SweepGrid::quick;
   SweepClock clock = SweepClock::gpu;
+  // What draws every image and timed frame (--dispatch; automatic is
+  // resolved by the caller first): the errors are the same with either.
+  Dispatch dispatch = Dispatch::fragment;
+  ComputeGroup group;
 };
 
 // Error of an image (and its AOVs) against a reference. NaN where a figure
@@ -73,6 +77,7 @@ struct SweepRow {
 
 struct SweepResult {
   std::string backend, gl_renderer, gl_vendor, gl_version;
+  Dispatch dispatch = Dispatch::fragment;  // s.dispatch, as drawn
   bool gpu_timer = true;      // false: no GL_TIME_ELAPSED (gpu figures are 0; --time-by gpu uses wall)
   SweepClock clock = SweepClock::gpu;  // the time the fronts use
   Quality reference_quality;  // both references' settings

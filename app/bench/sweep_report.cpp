@@ -92,7 +92,7 @@ std::string sweep_json(const SweepSubject& subject, const SweepSettings& s, cons
   j["settings"] = {{"width", s.width},   {"height", s.height}, {"spp", s.spp},       {"ref_spp", s.ref_spp},
                    {"frames", s.frames}, {"rounds", s.rounds}, {"warmup", s.warmup}, {"time", s.time},
                    {"grid", sweep_grid_name(s.grid)}, {"specialize", subject.specialize},
-                   {"time_by", sweep_clock_name(s.clock)}};
+                   {"time_by", sweep_clock_name(s.clock)}, {"dispatch", dispatch_name(r.dispatch)}};
   j["machine"] = {{"backend", r.backend},
                   {"gl_renderer", r.gl_renderer},
                   {"gl_vendor", r.gl_vendor},
@@ -153,7 +153,8 @@ std::string sweep_table(const SweepSubject& subject, const SweepSettings& s, con
   out += "settings  " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", spp " +
          std::to_string(s.spp) + ", " + std::to_string(s.frames) + " timed frames per row in each of " +
          std::to_string(s.rounds) + " rounds (best round's median), grid " +
-         sweep_grid_name(s.grid) + ", " + subject.specialize + " shader\n";
+         sweep_grid_name(s.grid) + ", " + subject.specialize + " shader, " + dispatch_name(r.dispatch) +
+         " dispatch\n";
   out += "machine   " + r.backend + ", " + r.gl_renderer + ", " + r.gl_version + "\n";
   out += "reference " + std::to_string(r.reference_quality.max_steps) + " steps, tolerance " +
          fmt("%g", r.reference_quality.hit_tolerance) + " px, epsilon " +

@@ -13,6 +13,8 @@
 #include "bench/plot.h"
 #include "bench/sweep.h"
 #include "bench/sweep_report.h"
+#include "cli/dispatch_flag.h"
+#include "cli/dispatch_probe.h"
 #include "cli/flag_checks.h"
 #include "cli/input.h"
 #include "cli/shader_dir.h"
@@ -55,6 +57,9 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Measure the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   add_override_flags(cmd, a.overrides);
+  cmd->add_option("--dispatch", a.dispatch,
+                  "Draw every row as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
+  cmd->add_option("--compute-group", a.compute_group, "Compute work group WxH (default 8x8)")->group("");
   return cmd;
 }
 
@@ -77,6 +82,7 @@ std::string command_line(const SweepArgs& a) {
   }
   if (a.backend != "auto") c += " --backend " + a.backend;
   if (a.no_specialize) c += " --no-specialize";
+  if (a.dispatch != "fragment") c += " --dispatch " + a.dispatch;
   for (const std::string& o : a.overrides.as_given) {  // "--set KEY=VALUE": the value quoted, brackets are shell globs
     const size_t space = o.find(' ');
     std::string value = o.substr(space + 1);
@@ -115,6 +121,9 @@ int run_sweep_command(const SweepArgs& a) {
     fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
                "wrap the map in a scene .toml");
   s.time = in.scene.render.time;
+  s.dispatch = parse_dispatch(a.dispatch);
+  s.group = parse_compute_group(a.compute_group);
+  check_compute_input(s.dispatch, in, false);
 
   std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.preset);
   if (!a.only.empty()) {
@@ -144,6 +153,15 @@ int run_sweep_command(const SweepArgs& a) {
   std::unique_ptr<Context> ctx = create_headless_context(backend);
   if (a.time_by == "auto") s.clock = ctx->info().software() ? SweepClock::cpu : SweepClock::gpu;
   const Scene posed = animated(in.scene, s.time);
+  if (s.dispatch == Dispatch::automatic) {  // probed on the scene's own pass (cli/dispatch_probe.h)
+    PassGraph graph(in.passes);
+    const Program post(fullscreen_vertex_source(), assemble_post(in.scene.render.tonemap, true, opts));
+    StillFrame f;
+    f.in.scene = &posed;
+    f.in.time = s.time;
+    f.params.exposure = posed.render.exposure;
+    s.dispatch = choose_dispatch(s.dispatch, graph, post, f, *ctx, s.group, !a.quiet);
+  }
   const size_t n = configs.size();
   const SweepResult r = run_sweep(*ctx, posed, configs, opts, s, [&](size_t i, const std::string& name) {
     if (a.quiet) return;

@@ -14,6 +14,12 @@ SceneDrawer::SceneDrawer(const Context& ctx, const PassGraph& graph, Dispatch d,
   }
 }
 
+SceneDrawer::SceneDrawer(const Context& ctx, Dispatch d, ComputeGroup group)
+    : dispatch_(d == Dispatch::compute ? Dispatch::compute : Dispatch::fragment), group_(group) {
+  if (dispatch_ == Dispatch::compute) compute_ = std::make_unique<ComputeFrameRenderer>(ctx);
+  else fragment_.emplace(ctx);
+}
+
 SceneDrawer::~SceneDrawer() = default;
 
 void SceneDrawer::draw(PassGraph& graph, const Program& post, const FrameInputs& in, const FrameParams& p,
@@ -40,11 +46,11 @@ Still SceneDrawer::read(bool aovs) const {
   return out;
 }
 
-Program SceneDrawer::program(const ShaderSource& src) const {
-  if (fragment_) return Program(fullscreen_vertex_source(), src);
+std::unique_ptr<Program> SceneDrawer::program(const ShaderSource& src) const {
+  if (fragment_) return std::make_unique<Program>(fullscreen_vertex_source(), src);
   PassSource pass;
   pass.source = src;
-  return Program(Program::Compute{}, compute_source(pass, group_));
+  return std::make_unique<Program>(Program::Compute{}, compute_source(pass, group_));
 }
 
 void SceneDrawer::draw_program(const Program& main, const UniformFn& set_uniforms, const Program& post,

@@ -7,8 +7,9 @@
 //   SceneDrawer d(ctx, graph, Dispatch::compute, group);  // compiles the compute pass once
 //   d.draw(graph, post, in, fp);                          // as graph.draw(renderer, post, in, fp)
 //   Still s = d.read(fp.aovs);
-//   Program counting = d.program(counting_src);           // fragment or compute, to match
-//   d.draw_program(counting, set_uniforms, post, fp);
+//   auto counting = d.program(counting_src);              // fragment or compute, to match
+//   d.draw_program(*counting, set_uniforms, post, fp);
+//   SceneDrawer rows(ctx, Dispatch::compute);             // no graph: programs of its own only (sweep)
 #pragma once
 #include <memory>
 #include <optional>
@@ -27,6 +28,8 @@ class SceneDrawer {
   // compiles graph's last pass as a compute program; throws bad_input
   // (compute_source) for a pass that cannot run as one.
   SceneDrawer(const Context& ctx, const PassGraph& graph, Dispatch d, ComputeGroup group = {});
+  // Without a graph: draw_program() only, with programs from program().
+  SceneDrawer(const Context& ctx, Dispatch d, ComputeGroup group = {});
   ~SceneDrawer();
   SceneDrawer(const SceneDrawer&) = delete;
   SceneDrawer& operator=(const SceneDrawer&) = delete;
@@ -43,7 +46,7 @@ class SceneDrawer {
 
   // A program of its own drawn as the scene pass (bench's counting pass):
   // `src`, a scene fragment shader, compiled for this dispatch.
-  Program program(const ShaderSource& src) const;
+  std::unique_ptr<Program> program(const ShaderSource& src) const;
   void draw_program(const Program& main, const UniformFn& set_uniforms, const Program& post, const FrameParams& p);
 
  private:

@@ -1,6 +1,8 @@
-// bench --dispatch (issue 18): each row names the dispatch that drew it, and
-// the counting pass's step counts are the same with either; auto records
-// what it resolved to; what compute cannot run is refused in one line.
+// bench and sweep --dispatch (issue 18): each bench row names the dispatch
+// that drew it, and the counting pass's step counts are the same with
+// either; auto records what it resolved to; what compute cannot run is
+// refused in one line. A sweep with compute gives the fragment sweep's
+// rows: step counts equal, errors within what 1e-5 per channel allows.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -49,6 +51,36 @@ TEST(DispatchBench, RefusesWhatComputeCannotRunInOneLine) {
   EXPECT_NE(r.err.find("d.glsl:2"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+json sweep(const TempDir& dir, const std::string& dispatch) {
+  const fs::path out = dir / dispatch;
+  const RunResult r = run_marchstudio({"sweep", (source_dir() / "scenes" / "seed.toml").string(), "--size", "48x27",
+                                       "--frames", "1", "--rounds", "1", "--warmup", "0", "--ref-spp", "2", "--only",
+                                       "textbook,fast,balanced", "--dispatch", dispatch, "-q", "-o", out.string()},
+                                      dir.path(), "XDG_CACHE_HOME='" + (dir / "cache").string() + "' ");
+  EXPECT_EQ(r.exit_code, 0) << dispatch << ": " << r.err;
+  return r.exit_code == 0 ? json::parse(read_file(out / "seed.sweep.json")) : json();
+}
+
+TEST(DispatchSweep, ComputeRowsEqualFragmentRows) {
+  TempDir dir;
+  const json f = sweep(dir, "fragment"), c = sweep(dir, "compute");
+  ASSERT_FALSE(f.is_null() || c.is_null());
+  EXPECT_EQ(f["settings"]["dispatch"], "fragment");
+  EXPECT_EQ(c["settings"]["dispatch"], "compute");
+  ASSERT_EQ(f["rows"].size(), 3u);
+  ASSERT_EQ(c["rows"].size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    const json& a = f["rows"][i];
+    const json& b = c["rows"][i];
+    EXPECT_EQ(a["name"], b["name"]);
+    EXPECT_EQ(a["cost"], b["cost"]) << a["name"];
+    for (const char* ref : {"same_spp", "supersampled"}) {
+      EXPECT_NEAR(a["error"][ref]["mae"].get<double>(), b["error"][ref]["mae"].get<double>(), 1e-5) << a["name"];
+    }
+    EXPECT_EQ(a["error"]["same_spp"]["misclassified"], b["error"]["same_spp"]["misclassified"]) << a["name"];
+  }
 }
 
 }  // namespace
