@@ -110,6 +110,22 @@ TEST_F(FoldedViewer, ADragIsLiveThenFoldedAtItsFinalValue) {
   EXPECT_GT(mean_abs_diff(shot, file), 1e-3) << "the drag changed nothing";
 }
 
+// Mid-drag the live program draws the value as it stands: the shot after
+// frame 6 (re-rendered, as P does) has the colour the drag set before that
+// frame's draw, 2/5 of the way (frame 5 of 3..8), and equals render of it.
+TEST_F(FoldedViewer, MidDragTheLiveProgramShowsTheCurrentValue) {
+  start({"--drag", "materials[1].color=0.1,0.3,0.9@3..8", "--shot-frame", "6"});
+  ASSERT_FALSE(wait_for_line(log(), "^screenshot ", 60).empty()) << read_file(log()) << read_file(dir / "err.txt");
+  const std::vector<std::string> v = values_lines();
+  ASSERT_GE(v.size(), 1u) << read_file(log());
+  EXPECT_EQ(v[0].rfind("values ok live=materials[1] uniforms=materials ", 0), 0u) << v[0];
+  const Image shot = read_image(dir / "shots/seed_1.png");
+  // 0.85 + (0.1 - 0.85) * 0.4, 0.1 + (0.3 - 0.1) * 0.4, 0.06 + (0.9 - 0.06) * 0.4
+  const Image mid = render({"--set", "materials.ball.color=[0.55,0.18,0.396]"});
+  EXPECT_LE(max_abs_diff(shot, mid), 1.0 / 255.0) << "mid-drag the frame is not render of the dragged value";
+  EXPECT_GT(mean_abs_diff(shot, render({})), 1e-3) << "mid-drag the frame still shows the file's value";
+}
+
 // Accumulating (or in a debug view) the frame is the accumulating pass and
 // post; turning accumulation off (--accumulate 1) gives the one-pass frame.
 TEST_F(FoldedViewer, AccumulatingIsNotTheOnePassFrame) {
