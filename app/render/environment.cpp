@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <memory>
+#include <mutex>
 #include <sstream>
 
 #include "core/error.h"
@@ -93,20 +95,58 @@ fs::path irradiance_cache_path(const std::string& content_hash) {
   return cache_dir() / "irradiance" / (content_hash + ".txt");
 }
 
+namespace {
+
+// The last map read, kept by path, size and modification time: the viewer
+// prepares a reload on every save, and decoding an unchanged EXR again was
+// almost all of envlight's reload (docs/viewer.md).
+struct LoadedMap {
+  fs::path file;
+  std::uintmax_t size = 0;
+  fs::file_time_type mtime;
+  std::shared_ptr<const Image> image;
+  IrradianceSh sh{};
+};
+
+}  // namespace
+
 void attach_environment(Scene& scene, PassSource& pass, bool* from_cache) {
   if (scene.sky.environment.empty()) return;
   const fs::path& file = scene.sky.environment;
-  std::ifstream in(file, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  auto img = std::make_shared<Image>(read_image(file));  // bad_input naming the file
-  if (img->width < 2 || img->height < 1)
-    fail_input("environment " + file.string() + " is " + std::to_string(img->width) + "x" + std::to_string(img->height),
-               scene.file.string(), 0, "sky.environment", "an equirectangular image, twice as wide as high");
-  const fs::path cache = irradiance_cache_path(Hash128().add(bytes).hex());
-  const bool cached = read_cache(cache, scene.sky.irradiance);
-  if (!cached) {
-    scene.sky.irradiance = irradiance_sh(*img);
-    write_cache(cache, scene.sky.irradiance);
+  static std::mutex m;  // render's and the viewer's threads may both load
+  static LoadedMap last;
+  std::error_code e1, e2;
+  const std::uintmax_t size = fs::file_size(file, e1);
+  const fs::file_time_type mtime = fs::last_write_time(file, e2);
+  std::shared_ptr<const Image> img;
+  bool cached = false;
+  {
+    std::lock_guard<std::mutex> lock(m);
+    if (!e1 && !e2 && last.image && last.file == file && last.size == size && last.mtime == mtime) {
+      img = last.image;
+      scene.sky.irradiance = last.sh;
+      cached = true;  // nothing computed this time
+    }
+  }
+  if (!img) {
+    std::ifstream in(file, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    auto decoded = std::make_shared<const Image>(read_image(file));  // bad_input naming the file
+    if (decoded->width < 2 || decoded->height < 1)
+      fail_input("environment " + file.string() + " is " + std::to_string(decoded->width) + "x" +
+                     std::to_string(decoded->height),
+                 scene.file.string(), 0, "sky.environment", "an equirectangular image, twice as wide as high");
+    const fs::path cache = irradiance_cache_path(Hash128().add(bytes).hex());
+    cached = read_cache(cache, scene.sky.irradiance);
+    if (!cached) {
+      scene.sky.irradiance = irradiance_sh(*decoded);
+      write_cache(cache, scene.sky.irradiance);
+    }
+    img = decoded;
+    if (!e1 && !e2) {
+      std::lock_guard<std::mutex> lock(m);
+      last = LoadedMap{file, size, mtime, img, scene.sky.irradiance};
+    }
   }
   if (from_cache) *from_cache = cached;
   GraphInput& g = pass.inputs[0];

@@ -40,7 +40,9 @@ std::filesystem::path irradiance_cache_path(const std::string& content_hash);
 // For a scene with [sky] environment: reads the map (bad_input naming it
 // when it cannot), sets scene.sky.irradiance (from the cache when the same
 // bytes were seen before) and binds the map to `pass` as uEnvMap. Nothing
-// for a scene without one. `from_cache`, when given, says which it was.
+// for a scene without one. `from_cache`, when given, says which it was. The
+// last map read is kept in memory: the same file (path, size, modification
+// time) again is not read, decoded or hashed again (the viewer's reloads).
 void attach_environment(Scene& scene, PassSource& pass, bool* from_cache = nullptr);
 
 }  // namespace ms

@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
 
 #include <glm/geometric.hpp>
 
+#include "io/image_io.h"
 #include "render/environment.h"
 
 namespace ms {
@@ -47,6 +51,33 @@ TEST(Environment, UpperHalfSpaceFollowsTheCosineLobe) {
   EXPECT_NEAR(eval_irradiance(sh, {0, -1, 0}).x, 0.0f, 0.08f);
   EXPECT_NEAR(eval_irradiance(sh, {1, 0, 0}).x, 0.5f, 0.02f);
   EXPECT_NEAR(eval_irradiance(sh, {0, 0, 1}).x, 0.5f, 0.02f);
+}
+
+// The viewer prepares a reload on every save: an unchanged map is not read
+// and decoded again (the same image object), a changed one is.
+TEST(Environment, AnUnchangedMapIsNotReadAgain) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("ms_env_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  setenv("XDG_CACHE_HOME", (dir / "cache").c_str(), 1);  // the irradiance cache, not the user's
+  const fs::path file = dir / "sky.exr";
+  write_image(map_of(16, 8, [](glm::vec3) { return 1.0f; }), file);
+  Scene scene;
+  scene.sky.environment = file;
+  PassSource a, b, c;
+  bool from_cache = false;
+  attach_environment(scene, a, &from_cache);
+  attach_environment(scene, b, &from_cache);
+  EXPECT_EQ(a.inputs[0].image, b.inputs[0].image) << "the same file was decoded twice";
+  EXPECT_TRUE(from_cache);
+  write_image(map_of(16, 8, [](glm::vec3) { return 2.0f; }), file);
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(2));  // past any timestamp granularity
+  attach_environment(scene, c, &from_cache);
+  ASSERT_NE(c.inputs[0].image, a.inputs[0].image) << "a changed file was not read again";
+  EXPECT_NEAR(c.inputs[0].image->pixels[0], 2.0f, 1e-6f);
+  EXPECT_NEAR(eval_irradiance(scene.sky.irradiance, glm::vec3(0, 1, 0)).x, 2.0f, 0.05f);  // the new map lights (the old: 1)
+  unsetenv("XDG_CACHE_HOME");
+  fs::remove_all(dir);
 }
 
 }  // namespace
