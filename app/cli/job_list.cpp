@@ -118,6 +118,7 @@ const std::map<std::string, Handler>& handlers() {
        }},
       {"strict", [](const KeyValue& kv, RenderArgs& a) { a.strict = boolean(kv); }},
       {"no-specialize", [](const KeyValue& kv, RenderArgs& a) { a.no_specialize = boolean(kv); }},
+      {"dispatch", [](const KeyValue& kv, RenderArgs& a) { a.dispatch = text(kv); }},
       {"timeout", [](const KeyValue& kv, RenderArgs& a) { a.timeout = number(kv); }},
       {"media-dir", [](const KeyValue& kv, RenderArgs& a) { a.shadertoy.media_dir = path(kv); }},
       {"missing-media", [](const KeyValue& kv, RenderArgs& a) { a.shadertoy.missing_media = text(kv); }},

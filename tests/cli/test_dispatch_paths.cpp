@@ -4,7 +4,8 @@
 // SIGKILL and a resume; --dispatch auto probes once per device and keeps its
 // choice in $XDG_CACHE_HOME/marchstudio/dispatch (counted by its -v lines,
 // never by time), rewrites a corrupt cache, and gives an input compute
-// cannot run the fragment pass.
+// cannot run the fragment pass. A --jobs batch takes a `dispatch` key per
+// line, and its auto jobs share one probe.
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -204,6 +205,26 @@ TEST(DispatchAuto, AnInputComputeCannotRunGetsTheFragmentPass) {
   const RunResult f = run_in(dir, {"render", "d.glsl", "--size", "16x16", "-o", "f.png"});
   ASSERT_EQ(f.exit_code, 0) << f.err;
   EXPECT_EQ(max_diff(read_image(dir / "a.png"), read_image(dir / "f.png")), 0.0);
+}
+
+TEST(DispatchBatch, JobLinesChooseTheirDispatchAndShareOneProbe) {
+  TempDir dir;
+  const std::string scene = (source_dir() / "scenes" / "stilllife.toml").string();
+  write_file(dir / "jobs.jsonl", "{\"scene\": \"" + scene + "\", \"output\": \"f.exr\"}\n"
+                                 "{\"scene\": \"" + scene + "\", \"output\": \"c.exr\", \"dispatch\": \"compute\"}\n"
+                                 "{\"scene\": \"" + scene + "\", \"output\": \"a1.exr\", \"dispatch\": \"auto\"}\n"
+                                 "{\"scene\": \"" + scene + "\", \"output\": \"a2.exr\", \"dispatch\": \"auto\"}\n");
+  const RunResult r = run_in(dir, {"render", "--jobs", "jobs.jsonl", "--size", "64x36", "--spp", "2", "-v"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(count_with(r.err, "dispatch auto: probe: "), 1) << r.err;
+  EXPECT_EQ(count_with(r.err, " (cached for "), 1) << r.err;
+  const Image f = read_image(dir / "f.exr");
+  for (const char* name : {"c.exr", "a1.exr", "a2.exr"}) EXPECT_LE(max_diff(f, read_image(dir / name)), 1e-5) << name;
+  write_file(dir / "bad.jsonl", "{\"scene\": \"" + scene + "\", \"output\": \"x.png\", \"dispatch\": \"gpu\"}\n");
+  const RunResult refused = run_in(dir, {"render", "--jobs", "bad.jsonl"});
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("'gpu' is not one of fragment, compute, auto"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
 
 }  // namespace
