@@ -7,6 +7,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "bench/clock.h"
 #include "bench/flip.h"
@@ -213,20 +214,25 @@ void check_images(Gl& gl, const PreparedCase& pc, const RunOptions& opts, CaseRe
   bool shown = false;
   std::vector<bool> seen(r.checks.size(), false);  // a check has a value from some frame
   const std::vector<FrameSpec> frames = frames_of(pc);
+  std::optional<SceneDrawer> compute;  // test --dispatch compute (render/scene_drawer.h)
+  if (opts.dispatch == Dispatch::compute) compute.emplace(gl.ctx, graph, Dispatch::compute);
   for (const FrameSpec& f : frames) {
     const Scene posed = animated(pc.scene, f.time);
     const StillFrame sf = still_of(gl, pc, posed, f);
     // A stateful shader's frames follow on: the first is a still (frames
     // 0..first replayed), the rest each one frame more, as a sequence.
-    const Still still = &f == &frames.front() || !graph.stateful()
-                            ? render_still(gl.renderer, graph, *post, sf)
-                            : render_frame(gl.renderer, graph, *post, sf.in, sf.params);
+    const bool from_start = &f == &frames.front() || !graph.stateful();
+    if (compute) from_start ? compute->draw_still(graph, *post, sf) : compute->draw(graph, *post, sf.in, sf.params);
+    const Still still = compute      ? compute->read(sf.params.aovs)
+                        : from_start ? render_still(gl.renderer, graph, *post, sf)
+                                     : render_frame(gl.renderer, graph, *post, sf.in, sf.params);
     if (c.deterministic && &f == &frames.front()) {
       // From scratch: a fresh compile and fresh targets, as another run would.
       PassGraph graph2(pc.passes);
       const Program post2(gl.vs, pc.post);
-      FrameRenderer again(gl.ctx);
-      r.nondeterministic_values = differing_values(still.color, render_still(again, graph2, post2, sf).color);
+      SceneDrawer again(gl.ctx, graph2, opts.dispatch);
+      again.draw_still(graph2, post2, sf);
+      r.nondeterministic_values = differing_values(still.color, again.read(false).color);
     }
     if (c.checks.empty()) continue;
     const Image got = stored_pixels(still.color, pc.format);
@@ -315,7 +321,12 @@ CaseResult run_case(Gl& gl, const Suite& suite, const PreparedCase& pc, const Pr
     const FrameSpec f = frames_of(pc).front();
     FrameParams fp = pc.params;
     fp.bloom = gl.bloom(pc);  // its post pass adds bloom
-    r.cost = count_frame_cost(gl.renderer, *counting, *post, animated(pc.scene, f.time), f.time, fp);
+    if (opts.dispatch == Dispatch::compute) {
+      SceneDrawer d(gl.ctx, gl.graph(pc), Dispatch::compute);
+      r.cost = count_frame_cost(d, *d.program(pc.counting), *post, animated(pc.scene, f.time), f.time, fp);
+    } else {
+      r.cost = count_frame_cost(gl.renderer, *counting, *post, animated(pc.scene, f.time), f.time, fp);
+    }
     check_cost(*c.cost, *r.cost, r);
   }
   if (c.time_budget && cal) check_time(gl, suite, pc, *cal, r);

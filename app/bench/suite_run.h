@@ -87,6 +87,9 @@ struct CaseResult {
 
 struct RunOptions {
   bool update = false;                 // write missing and failing references
+  // What draws each case's images and counting pass (test --dispatch):
+  // fragment or compute; frame-time budgets are timed with fragment.
+  Dispatch dispatch = Dispatch::fragment;
   std::filesystem::path report_dir;    // write each case's images here ("" = none)
   // Progress: before a case and after it (in run order: grouped by backend).
   std::function<void(const SuiteCase&, int index, int total)> on_start;

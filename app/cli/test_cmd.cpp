@@ -16,6 +16,7 @@
 #include "bench/suite_html.h"
 #include "bench/suite_report.h"
 #include "bench/suite_run.h"
+#include "cli/dispatch_flag.h"
 #include "cli/exit_codes.h"
 #include "cli/input.h"
 #include "cli/progress.h"
@@ -45,6 +46,9 @@ CLI::App* add_test_command(CLI::App& app, TestArgs& a) {
   cmd->add_option("--only", a.only, "Run only the cases whose name matches this glob (repeatable)");
   cmd->add_flag("--list", a.list, "Print the suite's cases, as expanded, and exit");
   cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
+  cmd->add_option("--dispatch", a.dispatch,
+                  "Draw every case's images and counting pass as a fragment pass (default) or a compute dispatch "
+                  "(docs/gpu.md)");
   return cmd;
 }
 
@@ -137,6 +141,10 @@ int run(const TestArgs& a, ExitCodes codes) {
   if (a.update && ci_is_set() && !a.force)
     fail_input("refusing to write references with CI set: a regression would become the new reference", {}, 0,
                "--update", "update references by hand, look at them and commit them; --force overrides");
+  const Dispatch dispatch = parse_dispatch(a.dispatch);
+  if (dispatch == Dispatch::automatic)
+    fail_input("test --dispatch auto: a suite checks one dispatch at a time", {}, 0, "--dispatch",
+               "give fragment or compute");
   const Suite suite = load_suite(a.suite);
   const std::vector<const SuiteCase*> selected = select_cases(suite, a.only);
   if (a.list) {
@@ -175,6 +183,7 @@ int run(const TestArgs& a, ExitCodes codes) {
   Terminal term(a.json);
   RunOptions opts;
   opts.update = a.update;
+  opts.dispatch = dispatch;
   opts.report_dir = a.report;
   opts.on_start = [&](const SuiteCase& c, int i, int n) { term.start(c, i, n); };
   opts.on_done = [&](const CaseResult& r, int i, int n) { term.done(r, i, n); };

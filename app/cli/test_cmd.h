@@ -23,6 +23,7 @@ struct TestArgs {
   std::vector<std::string> only;      // case-name globs
   bool list = false;                  // print the cases and exit
   std::string shader_dir;
+  std::string dispatch = "fragment";  // --dispatch fragment|compute (cli/dispatch_flag.h)
 };
 
 CLI::App* add_test_command(CLI::App& app, TestArgs& args);

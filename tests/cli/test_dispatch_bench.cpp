@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,14 @@ TEST(DispatchSweep, ComputeRowsEqualFragmentRows) {
     }
     EXPECT_EQ(a["error"]["same_spp"]["misclassified"], b["error"]["same_spp"]["misclassified"]) << a["name"];
   }
+}
+
+TEST(DispatchTestCmd, AutoIsRefusedBeforeAnyCase) {
+  const RunResult r = run_marchstudio(
+      {"test", (source_dir() / "tests" / "cost" / "suite.toml").string(), "--dispatch", "auto"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("a suite checks one dispatch at a time"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
 }  // namespace
