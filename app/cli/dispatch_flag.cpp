@@ -24,8 +24,6 @@ ComputeGroup parse_compute_group(const std::string& text) {
   return g;
 }
 
-Dispatch resolve_dispatch(Dispatch d) { return d == Dispatch::automatic ? Dispatch::fragment : d; }
-
 void check_compute_input(Dispatch d, const LoadedInput& in, bool /*tiled_still: compute draws tiles too*/) {
   if (d != Dispatch::compute) return;
   // The frame's pass as compute (render/compute_frame.h); buffer and Cube A

@@ -1,5 +1,6 @@
 // --dispatch fragment|compute|auto and the hidden --compute-group WxH
-// (issue 18): parsed once here into render/compute_frame.h's Dispatch and
+// (issue 18): parsed once here into render/compute_frame.h's Dispatch (auto
+// is chosen once a context exists: cli/dispatch_probe.h) and
 // shader/compute_wrap.h's ComputeGroup; what a job may not draw with compute.
 #pragma once
 #include <string>
@@ -15,8 +16,6 @@ struct LoadedInput;
 Dispatch parse_dispatch(const std::string& name);
 // "WxH", each >= 1, W x H <= 1024; throws bad_input (key "--compute-group").
 ComputeGroup parse_compute_group(const std::string& text);
-// What `auto` draws with: the fragment pass for now (no probe yet).
-Dispatch resolve_dispatch(Dispatch d);
 // Throws bad_input (key "--dispatch", at file:line) when `d` is compute and
 // the frame's pass cannot run as one (render/compute_frame.h's
 // compute_source: derivative calls, implicit-LOD lookups of a mipmapped
