@@ -136,6 +136,10 @@ class Viewer {
 
 void Viewer::watch_bounds(double now) {
   if (!session_.main_program() || session_.shadertoy()) return;
+  // The probe assembles the files as they are now: while the worker compiles
+  // a save, that is the new map, linked here on the UI thread (a stall of
+  // seconds for a heavy shader). It waits for the adoption instead.
+  if (compiling_.active) return;
   const bool same_params = std::equal(bounds_params_.begin(), bounds_params_.end(), session_.params().begin(),
                                       session_.params().end(),
                                       [](const SceneParam& a, const SceneParam& b) { return a.value == b.value; });
