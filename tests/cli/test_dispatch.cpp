@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "image_diff.h"
 #include "io/image_io.h"
 #include "run.h"
 
@@ -41,31 +42,6 @@ Image render(const TempDir& dir, const fs::path& scene, const std::string& dispa
   EXPECT_EQ(r.exit_code, 0) << scene << " " << dispatch << ": " << r.err;
   if (r.exit_code != 0) return {};
   return read_image(dir / name);
-}
-
-// Largest |a - b| over every channel; channels named the same and in order.
-// Infinity when the images do not match in shape.
-double max_diff(const Image& a, const Image& b) {
-  if (a.width != b.width || a.height != b.height || a.channels != b.channels || a.pixels.size() != b.pixels.size() ||
-      a.pixels.empty())
-    return INFINITY;
-  double m = 0.0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) {
-    const float x = a.pixels[i], y = b.pixels[i];
-    if (std::isnan(x) != std::isnan(y)) return INFINITY;
-    if (!std::isnan(x)) m = std::max(m, static_cast<double>(std::fabs(x - y)));
-  }
-  return m;
-}
-
-// Channel `name`'s values.
-std::vector<float> channel(const Image& img, const std::string& name) {
-  std::vector<float> out;
-  const auto it = std::find(img.channels.begin(), img.channels.end(), name);
-  if (it == img.channels.end()) return out;
-  const size_t c = static_cast<size_t>(it - img.channels.begin()), n = img.channels.size();
-  for (size_t i = c; i < img.pixels.size(); i += n) out.push_back(img.pixels[i]);
-  return out;
 }
 
 class DispatchScene : public ::testing::TestWithParam<std::string> {};

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "image_diff.h"
 #include "io/image_io.h"
 #include "run.h"
 #include "test_texture.h"
@@ -30,14 +31,6 @@ Image render(const TempDir& dir, const std::string& input, const std::string& di
   EXPECT_EQ(r.exit_code, 0) << input << " " << dispatch << ": " << r.err;
   if (r.exit_code != 0) return {};
   return read_image(dir / out);
-}
-
-double max_diff(const Image& a, const Image& b) {
-  if (a.width != b.width || a.height != b.height || a.pixels.size() != b.pixels.size() || a.pixels.empty())
-    return INFINITY;
-  double m = 0.0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) m = std::max(m, static_cast<double>(std::fabs(a.pixels[i] - b.pixels[i])));
-  return m;
 }
 
 // A pass as Shadertoy API JSON (as tests/cli/test_multipass.cpp writes them).
