@@ -18,28 +18,6 @@ namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-// A scene of its own (the shipped ones change with the tracer): a grey
-// floor and a ball of `radius` in material `mat`, both in map().
-const char* kScene = R"([scene]
-map = "seed.glsl"
-[camera]
-position = [0.0, 1.6, -5.0]
-target = [0.0, 0.8, 0.0]
-[render]
-width = 160
-height = 90
-tonemap = "aces"
-[[lights]]
-position = [4.0, 5.0, -1.5]
-intensity = 2.0
-[[materials]]
-name = "floor"
-color = [0.6, 0.6, 0.6]
-[[materials]]
-name = "ball"
-color = [0.85, 0.10, 0.06]
-)";
-
 // The map: a ball of `radius` in material `mat` on the floor.
 std::string map_glsl(const std::string& mat, const std::string& radius = "1.0", const std::string& prefix = "") {
   return prefix +
@@ -54,7 +32,7 @@ class ViewerAttack : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
-    toml = kScene;
+    toml = kBallScene;
     write_file(dir / "seed.toml", toml);
     write_file(dir / "seed.glsl", map_glsl("MAT_FLOOR"));
   }

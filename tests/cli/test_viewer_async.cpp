@@ -17,26 +17,6 @@ namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-const char* kScene = R"([scene]
-map = "seed.glsl"
-[camera]
-position = [0.0, 1.6, -5.0]
-target = [0.0, 0.8, 0.0]
-[render]
-width = 160
-height = 90
-tonemap = "aces"
-[[lights]]
-position = [4.0, 5.0, -1.5]
-intensity = 2.0
-[[materials]]
-name = "floor"
-color = [0.6, 0.6, 0.6]
-[[materials]]
-name = "ball"
-color = [0.85, 0.10, 0.06]
-)";
-
 // The ball of `radius` on the floor. heavy: plus a long function behind a
 // branch no ray takes (p.y > 1e6), so the image stays the same while the
 // driver's compile and JIT take seconds on llvmpipe. Its constant differs
@@ -63,7 +43,7 @@ class AsyncReload : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
-    write_file(dir / "seed.toml", kScene);
+    write_file(dir / "seed.toml", kBallScene);
     write_file(dir / "seed.glsl", map_glsl("1.0", false));
     const std::string server = std::to_string(100 + (getpid() + 4111) % 20000);
     proc = std::make_unique<BackgroundProcess>(
@@ -79,7 +59,7 @@ class AsyncReload : public ::testing::Test {
   Image capture(int k) { return read_image(dir / "cap" / ("frame_" + std::to_string(k) + ".png")); }
   Image render(const std::string& glsl) {
     TempDir r;
-    write_file(r / "seed.toml", kScene);
+    write_file(r / "seed.toml", kBallScene);
     write_file(r / "seed.glsl", glsl);
     const RunResult run = run_marchstudio({"render", (r / "seed.toml").string(), "--size", "160x90", "-o",
                                            (r / "out.png").string()});

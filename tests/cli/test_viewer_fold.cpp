@@ -15,26 +15,8 @@ namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-const char* kScene = R"([scene]
-map = "seed.glsl"
-[camera]
-position = [0.0, 1.6, -5.0]
-target = [0.0, 0.8, 0.0]
-[render]
-width = 160
-height = 90
-tonemap = "aces"
-[[lights]]
-position = [4.0, 5.0, -1.5]
-intensity = 2.0
-[[materials]]
-name = "floor"
-color = [0.6, 0.6, 0.6]
-[[materials]]
-name = "ball"
-color = [0.85, 0.10, 0.06]
-specular = 0.6
-)";
+// kBallScene with a specular ball, so the folded material table matters.
+const std::string kScene = std::string(kBallScene) + "specular = 0.6\n";
 
 const char* kMap =
     "vec2 map(vec3 p) {\n"

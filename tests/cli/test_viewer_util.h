@@ -153,6 +153,29 @@ inline double max_abs_diff(const Image& a, const Image& b) {
   return m;
 }
 
+// A scene of the viewer tests' own (the shipped ones change with the
+// tracer): a grey floor and a red ball of material `ball` at 160x90; each
+// test writes its map (`seed.glsl`), a ball on the floor.
+inline const char* const kBallScene = R"([scene]
+map = "seed.glsl"
+[camera]
+position = [0.0, 1.6, -5.0]
+target = [0.0, 0.8, 0.0]
+[render]
+width = 160
+height = 90
+tonemap = "aces"
+[[lights]]
+position = [4.0, 5.0, -1.5]
+intensity = 2.0
+[[materials]]
+name = "floor"
+color = [0.6, 0.6, 0.6]
+[[materials]]
+name = "ball"
+color = [0.85, 0.10, 0.06]
+)";
+
 // Replace a file the way vim and VS Code save it: write a temporary next to
 // it, then rename it over the original.
 inline void save_by_rename(const std::filesystem::path& p, const std::string& text) {
