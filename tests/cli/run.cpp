@@ -1,5 +1,6 @@
 #include "run.h"
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -30,6 +31,24 @@ void write_file(const fs::path& p, const std::string& text) {
 }
 
 fs::path source_dir() { return MARCH_SOURCE_DIR; }
+
+pid_t spawn_marchstudio(const std::vector<std::string>& args, const fs::path& dir, const std::string& log) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(dir.c_str()) != 0) _exit(127);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 1);
+    dup2(fd, 2);
+    std::vector<std::string> all = {MARCH_BIN};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& a : all) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return pid;
+}
 
 RunResult run_marchstudio(const std::vector<std::string>& args, const fs::path& cwd, const std::string& shell_prefix) {
   TempDir io;

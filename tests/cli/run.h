@@ -1,6 +1,8 @@
 // Runs the real marchstudio binary for integration tests and captures its
 // exit code, stdout and stderr.
 #pragma once
+#include <sys/types.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -17,6 +19,10 @@ struct RunResult {
 // `shell_prefix` runs in the same sh first, e.g. "ulimit -s 1024; ".
 RunResult run_marchstudio(const std::vector<std::string>& args, const std::filesystem::path& cwd = {},
                           const std::string& shell_prefix = {});
+
+// Starts marchstudio in the background in `dir`, stdout and stderr to the
+// file `log` (relative to `dir`); the caller waits for or kills the pid.
+pid_t spawn_marchstudio(const std::vector<std::string>& args, const std::filesystem::path& dir, const std::string& log);
 
 // A fresh empty directory under the system temp dir, removed by the destructor.
 class TempDir {

@@ -73,25 +73,6 @@ TEST(DispatchSequence, ComputeEqualsFragmentFrameByFrame) {
   EXPECT_GT(max_diff(read_image(dir / "f_00.exr"), read_image(dir / "f_03.exr")), 1e-3);
 }
 
-// Start marchstudio in `dir`, stdout and stderr to `log`.
-pid_t spawn(const std::vector<std::string>& args, const fs::path& dir, const std::string& log) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (chdir(dir.c_str()) != 0) _exit(127);
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(fd, 1);
-    dup2(fd, 2);
-    std::vector<std::string> all = {MARCH_BIN};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& a : all) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
 int count_frames(const fs::path& dir, const std::string& prefix) {
   int n = 0;
   for (const auto& e : fs::directory_iterator(dir)) {
@@ -106,7 +87,7 @@ TEST(DispatchSequence, KilledComputeSequenceResumesEqualToFragment) {
   write_file(dir / "slow.glsl", kSlow);
   const std::vector<std::string> args = {"render", "slow.glsl", "--frames", "0..11", "--size",
                                          "160x90", "--dispatch", "compute", "-o",    "k_%02d.png"};
-  const pid_t pid = spawn(args, dir.path(), "first.log");
+  const pid_t pid = spawn_marchstudio(args, dir.path(), "first.log");
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   while (count_frames(dir.path(), "k_") < 3) {
     int status = 0;

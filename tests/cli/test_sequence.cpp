@@ -47,25 +47,6 @@ std::vector<std::string> temp_files(const fs::path& dir) {
   return out;
 }
 
-// Start marchstudio in the background, stdout/stderr to files in `dir`.
-pid_t spawn(const std::vector<std::string>& args, const fs::path& dir, const std::string& log) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (chdir(dir.c_str()) != 0) _exit(127);
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(fd, 1);
-    dup2(fd, 2);
-    std::vector<std::string> all = {MARCH_BIN};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& a : all) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
 int count_frames(const fs::path& dir, const std::string& prefix) {
   int n = 0;
   for (const auto& e : fs::directory_iterator(dir))
@@ -160,7 +141,7 @@ TEST(Sequence, ResumesAfterSigkill) {
   write_file(dir / "slow.glsl", kSlow);
   const std::vector<std::string> args = {"render", "slow.glsl", "--frames", "0..23", "--size", "160x90",
                                          "-o", "k_%03d.png"};
-  const pid_t pid = spawn(args, dir.path(), "first.log");
+  const pid_t pid = spawn_marchstudio(args, dir.path(), "first.log");
   wait_for_frames(dir.path(), "k_", 3, pid);
   ASSERT_EQ(kill(pid, SIGKILL), 0);
   int status = 0;
@@ -190,7 +171,7 @@ TEST(Sequence, ResumesAfterSigkill) {
 TEST(Sequence, SigtermStopsCleanlyAndKeepsRenderedFrames) {
   TempDir dir;
   write_file(dir / "slow.glsl", kSlow);
-  const pid_t pid = spawn({"render", "slow.glsl", "--frames", "0..23", "--size", "160x90", "-o", "t_%03d.png"},
+  const pid_t pid = spawn_marchstudio({"render", "slow.glsl", "--frames", "0..23", "--size", "160x90", "-o", "t_%03d.png"},
                           dir.path(), "run.log");
   wait_for_frames(dir.path(), "t_", 2, pid);
   ASSERT_EQ(kill(pid, SIGTERM), 0);
