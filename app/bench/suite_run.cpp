@@ -4,20 +4,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <map>
 #include <memory>
 #include <optional>
 
 #include "bench/clock.h"
-#include "bench/flip.h"
 #include "bench/stats.h"
 #include "bench/suite_gl.h"
-#include "bench/suite_html.h"
 #include "bench/suite_report.h"
 #include "gl/context.h"
-#include "io/sequence.h"
-#include "io/stored_pixels.h"
 #include "render/bloom.h"
 #include "render/program_cache.h"
 #include "render/still.h"
