@@ -21,7 +21,11 @@ double ms_since(std::chrono::steady_clock::time_point t) {
 
 CompileWorker::CompileWorker(GLFWwindow* share, const Context& ctx) : ctx_(ctx) {
   window_ = create_shared_hidden_window(share);
-  if (!window_) fail_system("no GL context shared with the window for the compile worker");
+  blend_window_ = window_ ? create_shared_hidden_window(share) : nullptr;
+  if (!blend_window_) {
+    if (window_) glfwDestroyWindow(window_);
+    fail_system("no GL context shared with the window for the compile worker");
+  }
   thread_ = std::thread([this] { run(); });
 }
 
@@ -34,6 +38,7 @@ CompileWorker::~CompileWorker() {
   cv_.notify_all();
   thread_.join();
   done_.reset();  // its programs go with the UI context current
+  glfwDestroyWindow(blend_window_);
   glfwDestroyWindow(window_);
 }
 
@@ -66,9 +71,11 @@ bool CompileWorker::newer_waiting() {
 }
 
 void CompileWorker::run() {
+  // Each context its own targets and vertex array: framebuffers and VAOs are not shared.
+  glfwMakeContextCurrent(blend_window_);
+  auto blend_renderer = std::make_unique<FrameRenderer>(ctx_);
   glfwMakeContextCurrent(window_);
   {
-    // Its own targets and vertex array: framebuffers and VAOs are not shared.
     FrameRenderer renderer(ctx_);
     for (;;) {
       CompileJob job;
@@ -118,6 +125,22 @@ void CompileWorker::run() {
           }
         }
         glFinish();  // the programs and the driver's JIT complete before the UI thread uses them
+        if (job.accumulates && !given_up && !newer_waiting()) {
+          // The frames after the first: sample 1 of 2 added to sample 0, blending on.
+          glfwMakeContextCurrent(blend_window_);
+          FrameParams acc = fp;
+          acc.spp = 2;
+          acc.sample_begin = 1;
+          acc.sample_end = 2;
+          for (int i = 0; i < job.passes && i < static_cast<int>(r.programs.size()); ++i) {
+            try {
+              blend_renderer->draw(*r.programs[i], [](const Program&) {}, *post, acc);
+            } catch (const Error&) {
+            }
+          }
+          glFinish();
+          glfwMakeContextCurrent(window_);
+        }
       }
       r.warm_ms = ms_since(t_warm);
       if (given_up) continue;  // a newer job is waiting: nobody wants this one
@@ -128,6 +151,8 @@ void CompileWorker::run() {
       cv_.notify_all();
     }
   }  // the renderer's objects go while this context is current
+  glfwMakeContextCurrent(blend_window_);
+  blend_renderer.reset();
   glfwMakeContextCurrent(nullptr);
 }
 

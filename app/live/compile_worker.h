@@ -1,11 +1,12 @@
 // The viewer's reload compiles, off the UI thread. A worker thread with its
 // own GL context (a hidden window sharing the viewer's objects) compiles and
 // links a reload's new programs, then draws each pass program once, 8x8,
-// through a FrameRenderer of its own: llvmpipe JIT-compiles a program at its
-// first draw, and that first variant lands in Mesa's shader cache, so the
-// UI thread's first real draw of the same state loads it instead of
-// compiling (docs/viewer.md, "How a reload compiles"). Meanwhile the UI
-// thread keeps drawing the last good programs.
+// through a FrameRenderer of its own (and, for an accumulating frame, once
+// blended in a second context): llvmpipe JIT-compiles a program at its
+// first draw, and each context's first variant lands in Mesa's shader
+// cache, so the UI thread's first real draw of the same state loads it
+// instead of compiling (docs/viewer.md, "How a reload compiles").
+// Meanwhile the UI thread keeps drawing the last good programs.
 //
 //   CompileWorker worker(window, ctx);            // UI thread, after the window
 //   worker.submit({id, sources, passes});         // replaces a job not started
@@ -40,6 +41,10 @@ struct CompileJob {
   // cached: no program is ever used by both threads at once).
   std::vector<ShaderSource> sources;
   int passes = 0;
+  // The frame adds samples after its first (not the one-pass frame): warm
+  // that blended state too, in a second context, since each context hands
+  // only its first variant of a program on through the disk shader cache.
+  bool accumulates = false;
 };
 
 struct CompileResult {
@@ -69,6 +74,7 @@ class CompileWorker {
 
   const Context& ctx_;
   GLFWwindow* window_ = nullptr;
+  GLFWwindow* blend_window_ = nullptr;  // the second context, for the accumulating state
   std::mutex m_;
   std::condition_variable cv_;
   std::optional<CompileJob> queued_;

@@ -176,7 +176,7 @@ void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long it
     const ReloadResult r = session_.adopt(std::move(c.plan), {}, nullptr, 0.0);
     return finish_reload(c, r, 0.0);
   }
-  worker_->submit(CompileJob{c.number, std::move(sources), passes});
+  worker_->submit(CompileJob{c.number, std::move(sources), passes, !c.plan.fused});
   log_.line("reload compiling " + std::to_string(c.number));
   compiling_ = std::move(c);
   if (wait) adopt_compiled(true);
