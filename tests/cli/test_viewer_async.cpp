@@ -27,7 +27,7 @@ std::string map_glsl(const std::string& radius, bool heavy, const std::string& t
   std::string s;
   if (heavy) {
     s += "float heavy(vec3 p) {\n  float a = " + salt + ".0;\n";
-    for (int i = 0; i < 300; ++i)
+    for (int i = 0; i < 60; ++i)
       s += "  p = sin(p * " + std::to_string(1.0 + 0.01 * i) + " + p.yzx); a += p.x * p.z;\n";
     s += "  return a;\n}\n";
   }
