@@ -16,11 +16,12 @@ Dispatch parse_dispatch(const std::string& name) {
 
 ComputeGroup parse_compute_group(const std::string& text) {
   ComputeGroup g;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &g.x, &x, &g.y, &extra) != 3 || (x != 'x' && x != 'X') || g.x < 1 ||
-      g.y < 1 || g.x * g.y > 1024)
-    fail_input("--compute-group '" + text + "' must be WxH with 1..1024 invocations, e.g. 8x8", {}, 0,
-               "--compute-group");
+  char x = 0, slash = 0, extra = 0;
+  const int n = std::sscanf(text.c_str(), "%d%c%d%c%d%c", &g.x, &x, &g.y, &slash, &g.stripe, &extra);
+  if ((n != 3 && n != 5) || (x != 'x' && x != 'X') || (n == 5 && slash != '/') || g.x < 1 || g.y < 1 ||
+      g.x * g.y > 1024 || g.stripe < 0 || g.stripe > 1024)
+    fail_input("--compute-group '" + text + "' must be WxH with 1..1024 invocations, e.g. 8x8, or WxH/N for stripes of N group rows",
+               {}, 0, "--compute-group");
   return g;
 }
 

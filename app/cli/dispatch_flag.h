@@ -14,7 +14,8 @@ struct LoadedInput;
 
 // Throws bad_input (key "--dispatch") for anything but the three names.
 Dispatch parse_dispatch(const std::string& name);
-// "WxH", each >= 1, W x H <= 1024; throws bad_input (key "--compute-group").
+// "WxH" (each >= 1, W x H <= 1024) or "WxH/N" (ComputeGroup::stripe N,
+// 0..1024); throws bad_input (key "--compute-group").
 ComputeGroup parse_compute_group(const std::string& text);
 // Throws bad_input (key "--dispatch", at file:line) when `d` is compute and
 // the frame's pass cannot run as one (render/compute_frame.h's

@@ -104,7 +104,7 @@ void ComputeFrameRenderer::draw(const Program& main, const UniformFn& set_unifor
   glUniform2f(main.loc("uPixelOffset"), static_cast<float>(p.offset_x), static_cast<float>(p.offset_y));
   if (p.fused_post) glUniform1f(main.loc("uExposure"), p.exposure);
   glUniform1i(main.loc("uMsAccumulate"), add ? 1 : 0);
-  const GLint jitter = main.loc("uJitter"), rect = main.loc("uMsRect");
+  const GLint jitter = main.loc("uJitter"), rect = main.loc("uMsRect"), groups = main.loc("uMsGroups");
   std::vector<glm::vec2> samples = p.open_ended ? open_samples(begin, end) : stratified_samples(p.spp);
   if (!p.open_ended) {
     samples.resize(std::min<size_t>(samples.size(), static_cast<size_t>(end)));
@@ -117,9 +117,11 @@ void ComputeFrameRenderer::draw(const Program& main, const UniformFn& set_unifor
     glUniform4i(rect, t.x, t.y, t.width, t.height);
     const GLuint gx = static_cast<GLuint>((t.width + group.x - 1) / group.x);
     const GLuint gy = static_cast<GLuint>((t.height + group.y - 1) / group.y);
+    if (group.stripe > 0) glUniform2i(groups, static_cast<GLint>(gx), static_cast<GLint>(gy));
     for (const glm::vec2& s : samples) {
       glUniform2f(jitter, s.x, s.y);
-      glDispatchCompute(gx, gy, 1);
+      if (group.stripe > 0) glDispatchCompute(gx * gy, 1, 1);  // remapped in the shader (compute_wrap.h)
+      else glDispatchCompute(gx, gy, 1);
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the next sample reads what this one stored
       if (p.deadline) {
         glFinish();

@@ -13,7 +13,8 @@
 //     implicit LOD; the same texel on a texture without mip maps;
 //   - the fragment's main() is renamed msSceneMain() and called as it is.
 // Locations 1..3 (the AOV targets) are stored only under AOV_OUTPUTS, as
-// main.frag declares them. The work group is MS_GROUP_X x MS_GROUP_Y.
+// main.frag declares them. The work group is MS_GROUP_X x MS_GROUP_Y, in
+// the order MS_STRIPE gives (ComputeGroup).
 #pragma once
 #include <string>
 
@@ -23,6 +24,10 @@ namespace ms {
 
 struct ComputeGroup {
   int x = 8, y = 8;  // invocations per work group; x * y <= 1024
+  // 0: a tile's groups dispatched as a grid (row order). N > 0: as one row
+  // of groups, remapped in the shader to stripes of N group rows walked
+  // column by column (MS_STRIPE), so groups that run at once are close.
+  int stripe = 0;
 };
 
 // The first derivative function (dFdx, dFdy, fwidth and their Fine/Coarse

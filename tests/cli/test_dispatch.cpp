@@ -128,6 +128,23 @@ TEST(Dispatch, TiledStillsEqualFragment) {
   }
 }
 
+// The hidden --compute-group: work group shapes and the striped group order
+// (WxH/S, ComputeGroup::stripe) cover every pixel once, partial groups and
+// partial stripes included (96x54 is not a multiple of any of them).
+TEST(Dispatch, WorkGroupsAndStripesEqualFragment) {
+  TempDir dir;
+  const fs::path scene = source_dir() / "scenes/seed.toml";
+  const std::vector<std::string> exr = {"--spp", "4", "--aov", "steps,cost", "--tile-size", "40"};
+  const Image f = render(dir, scene, "fragment", "f.exr", exr);
+  for (const std::string g : {"16x8", "32x4", "16x16", "8x8/4", "7x5/3", "32x4/8", "8x8/0"}) {
+    std::vector<std::string> args = exr;
+    args.insert(args.end(), {"--compute-group", g});
+    const Image c = render(dir, scene, "compute", "c.exr", args);
+    EXPECT_LE(max_diff(f, c), 1e-5) << g;
+    EXPECT_EQ(channel(f, "steps"), channel(c, "steps")) << g;
+  }
+}
+
 // A copy of the library whose main() makes the left 8 columns' sample
 // colour NaN (as tests/cli/test_stability.cpp's NanGuard tests do): the
 // flag path of main.frag and post.frag, fused, accumulated and with AOVs.
@@ -173,6 +190,13 @@ TEST(Dispatch, BadValueIsOneLineExit2) {
                                        (dir / "x.png").string()});
   EXPECT_EQ(g.exit_code, 2) << g.err;
   EXPECT_FALSE(fs::exists(dir / "x.png"));
+  for (const std::string bad : {"8x8/", "8x8/x", "8x8-4", "8x8/-1"}) {
+    const RunResult b = run_marchstudio({"render", (source_dir() / "scenes/seed.toml").string(), "--size", "16x16",
+                                         "--dispatch", "compute", "--compute-group", bad, "-o",
+                                         (dir / "x.png").string()});
+    EXPECT_EQ(b.exit_code, 2) << bad << ": " << b.err;
+    EXPECT_NE(b.err.find("--compute-group '" + bad + "'"), std::string::npos) << b.err;
+  }
 }
 
 TEST(Dispatch, SceneWithDerivativesIsRefused) {

@@ -1,25 +1,31 @@
 #!/bin/sh
-# Fragment vs compute dispatch per shipped scene (issue 18): the median wall
-# time of N renders of each (default 5) at WxH (default 1280x720), spp 1,
-# through the real binary. On llvmpipe this is the frame's CPU work plus a
-# constant start-up; the difference between the columns is the dispatch's.
+# Fragment vs compute dispatch, and the compute work groups (issue 18): per
+# scene, the median of N renders (default 5) of the `render` time that
+# `render -v` reports (the draw and the read-back, no context, link or
+# write) at WxH (default 1280x720) and SPP samples (default 4: llvmpipe
+# compiles machine code at the first draw, which one sample would not
+# amortize), through the real binary. Prints a markdown table of ms.
 #   tools/gpu/bench_dispatch.sh [build/marchstudio] [N] [WxH] [groups...]
+#   groups: --compute-group values (WxH, or WxH/S for stripes of S group
+#   rows); default 8x8. SCENES="seed terrain" limits the scenes; SPP=1.
 set -eu
 BIN=${1:-build/marchstudio}; N=${2:-5}; SIZE=${3:-1280x720}
 shift $(( $# > 3 ? 3 : $# )) || true
 GROUPS=${*:-8x8}
+SPP=${SPP:-4}
+SCENES=${SCENES:-$(for s in scenes/*.toml; do basename "$s" .toml; done)}
 OUT=$(mktemp -d); trap 'rm -rf "$OUT"' EXIT
 median() { sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
-run() {  # scene, extra flags...: median seconds
+run() {  # scene, extra flags...: median render ms
   s=$1; shift
   for i in $(seq "$N"); do
-    t0=$(date +%s.%N); "$BIN" render "$s" --size "$SIZE" --spp 1 -o "$OUT/x.png" "$@" >/dev/null 2>&1 || { echo fail; return; }
-    t1=$(date +%s.%N); echo "$t1 - $t0" | bc
+    "$BIN" render "scenes/$s.toml" --size "$SIZE" --spp "$SPP" -v -o "$OUT/x.png" "$@" 2>&1 >/dev/null |
+      sed -n 's/.* render \([0-9.]*\) ms.*/\1/p' | grep . || echo fail
   done | median
 }
-printf '%-10s %10s' scene fragment; for g in $GROUPS; do printf ' %10s' "c$g"; done; echo
-for s in scenes/*.toml; do
-  grep -q environment "$s" && continue  # texture inputs: compute refuses them for now
-  printf '%-10s %10s' "$(basename "$s" .toml)" "$(run "$s" --dispatch fragment)"
-  for g in $GROUPS; do printf ' %10s' "$(run "$s" --dispatch compute --compute-group "$g")"; done; echo
+printf '| scene | fragment |'; for g in $GROUPS; do printf ' compute %s |' "$g"; done; echo
+printf '|---|---|'; for g in $GROUPS; do printf -- '---|'; done; echo
+for s in $SCENES; do
+  printf '| %s | %s |' "$s" "$(run "$s" --dispatch fragment)"
+  for g in $GROUPS; do printf ' %s |' "$(run "$s" --dispatch compute --compute-group "$g")"; done; echo
 done
