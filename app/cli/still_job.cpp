@@ -150,6 +150,9 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
   const long compiled_before = session.cache.misses(), reused_before = session.cache.hits();
   PassGraph graph(in.passes, &session.cache);
   const std::shared_ptr<const Program> post_prog = session.cache.get(fullscreen_vertex_source(), p.post_src);
+  // --dispatch compute: the same scene shader as a compute pass, compiled once (render/compute_frame.h).
+  std::optional<ComputeStill> compute;
+  if (job.dispatch == Dispatch::compute) compute.emplace(ctx, graph, job.compute_group);
   const double t_compile = clock.lap();
   if (job.verbose)
     std::fprintf(stderr, "marchstudio: programs: %ld compiled, %ld from the cache\n",
@@ -188,9 +191,6 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
                                               " spp=" + std::to_string(fp.spp)}};
   add_fingerprint(meta, frame_fingerprint(job_fingerprint(in, fp, p.post_src, job.aov_channels, scene.shadertoy.fps),
                                           job.frame, time));
-  // --dispatch compute: the same scene shader as a compute pass, compiled once (render/compute_frame.h).
-  std::optional<ComputeStill> compute;
-  if (job.dispatch == Dispatch::compute) compute.emplace(ctx, graph, job.compute_group);
   // auto: the probe's or the cache's choice for this device (cli/dispatch_probe.h), made with the bloom stage in place.
   if (job.dispatch == Dispatch::automatic &&
       choose_dispatch(job.dispatch, graph, *post_prog, still, ctx, job.compute_group, job.verbose) == Dispatch::compute)

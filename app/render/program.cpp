@@ -1,5 +1,6 @@
 #include "render/program.h"
 
+#include <atomic>
 #include <vector>
 
 #include "core/error.h"
@@ -101,6 +102,20 @@ void Program::link(const ShaderSource& errors_in, const char* what) {
     fail_with_log(what, log, errors_in);
   }
 }
+
+namespace {
+std::atomic<long long> g_gl_lookups{0};  // a viewer may compile on a second thread (shared context)
+}  // namespace
+
+GLint Program::loc(const std::string& name) const {
+  if (const auto it = locations_.find(name); it != locations_.end()) return it->second;
+  ++g_gl_lookups;
+  const GLint l = glGetUniformLocation(id_, name.c_str());
+  locations_.emplace(name, l);
+  return l;
+}
+
+long long Program::gl_lookups() { return g_gl_lookups.load(); }
 
 Program::~Program() {
   if (id_) glDeleteProgram(id_);

@@ -3,6 +3,7 @@
 // shader/log_map.h), never a line of the assembled text.
 #pragma once
 #include <string>
+#include <unordered_map>
 
 #include "gl/gl.h"
 #include "shader/preprocess.h"
@@ -21,11 +22,17 @@ class Program {
 
   GLuint id() const { return id_; }
   // -1 when the uniform is absent or compiled out; glUniform* ignores -1.
-  GLint loc(const std::string& name) const { return glGetUniformLocation(id_, name.c_str()); }
+  // Asked of the GL once per name, then kept: every frame sets the same
+  // uniforms, and a lookup is a string hash and parse inside the driver.
+  GLint loc(const std::string& name) const;
+  // glGetUniformLocation calls made by every Program so far (the cost test
+  // of bench's per-frame host work: none after the first frame).
+  static long long gl_lookups();
 
  private:
   void link(const ShaderSource& errors_in, const char* what);  // throws the log mapped to errors_in's files
   GLuint id_ = 0;
+  mutable std::unordered_map<std::string, GLint> locations_;
 };
 
 }  // namespace ms
