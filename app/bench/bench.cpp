@@ -140,6 +140,7 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   // Startup: compile and link, then force the lazy code generation with a
   // 1x1 frame, then the first full-size frame.
   const Clock::time_point t0 = Clock::now();
+  const long long lookups0 = Program::gl_lookups();  // a process-wide count: only bench's own frames
   const std::string vs = fullscreen_vertex_source();
   PassGraph graph(passes);
   const Program post_prog(vs, post);
@@ -167,6 +168,7 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   renderer.draw(graph, post_prog, next(), fp);
   glFinish();
   r.first_frame_ms = ms_since(t0);
+  r.lookups_first = Program::gl_lookups() - lookups0;
 
   // Timed frames: the GPU timer brackets exactly the draw; wall time adds
   // the wait for completion (glFinish), which is what a user sees.
@@ -176,13 +178,14 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   // passes and the frame see the same machine load: their ratio shows what
   // running the passes as one graph adds, even on a busy machine.
   GpuTimer timer;
-  std::vector<double> gpu, wall;
+  std::vector<double> gpu, wall, submit;
   std::vector<std::vector<double>> per(graph.size());
   for (int i = 0; i < s.frames; ++i) {
     const FrameInputs in = next();
     const Clock::time_point w0 = Clock::now();
     timer.begin();
     renderer.draw(graph, post_prog, in, fp);
+    submit.push_back(ms_since(w0));
     timer.end();
     glFinish();
     wall.push_back(ms_since(w0));
@@ -195,6 +198,8 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   r.gpu_timer = std::any_of(gpu.begin(), gpu.end(), [](double x) { return x > 0.0; });
   r.gpu_ms = summarize(gpu);
   r.wall_ms = summarize(wall);
+  r.submit_ms = summarize(submit);
+  r.lookups_later = Program::gl_lookups() - lookups0 - r.lookups_first;
   for (size_t p = 0; p < graph.size(); ++p) r.passes.push_back({graph.name(p), summarize(per[p])});
 
   if (counting) {

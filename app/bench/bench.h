@@ -94,6 +94,13 @@ struct BenchResult {
   bool gpu_timer = true;  // false: the driver reported no GL_TIME_ELAPSED results (all 0)
   Summary gpu_ms;         // GL_TIME_ELAPSED around each frame's draw (samples + post)
   Summary wall_ms;        // steady clock around draw + glFinish
+  // Host time to issue a frame's GL commands (the draw call returning,
+  // before glFinish): the per-frame host work a fast GPU waits on.
+  Summary submit_ms;
+  // Program::gl_lookups() made by the startup frames (1x1 and first
+  // full-size) and by every later one (warm-up, timed, pass by pass): the
+  // later count is 0 when uniform locations are kept.
+  long long lookups_first = 0, lookups_later = 0;
   // Each pass's wall time in frames timed pass by pass (a multi-pass
   // Shadertoy shader: its buffers, then the Image pass with the post pass).
   std::vector<PassTiming> passes;

@@ -41,7 +41,11 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
                      {"compile_link", r.compile_link_ms},
                      {"first_frame", r.first_frame_ms},
                      {"lazy_compile_forced_by", "1x1 frame"}};
-  j["frame_ms"] = {{"gpu_timer", r.gpu_timer}, {"gpu", to_json(r.gpu_ms)}, {"wall", to_json(r.wall_ms)}};
+  j["frame_ms"] = {{"gpu_timer", r.gpu_timer},
+                   {"gpu", to_json(r.gpu_ms)},
+                   {"wall", to_json(r.wall_ms)},
+                   {"submit", to_json(r.submit_ms)}};
+  j["uniform_lookups"] = {{"first_frames", r.lookups_first}, {"later_frames", r.lookups_later}};
   ordered_json passes = ordered_json::array();
   for (const PassTiming& p : r.passes) passes.push_back({{"name", p.name}, {"wall", to_json(p.wall_ms)}});
   j["pass_ms"] = passes;
@@ -87,6 +91,11 @@ std::string bench_table(const BenchSubject& subject, const BenchSettings& s, con
   else
     out += "  gpu   (no GL_TIME_ELAPSED results from this driver)\n";
   out += format("  wall  %9.2f %9.2f %9.2f %9.2f\n", r.wall_ms.min, r.wall_ms.median, r.wall_ms.p95, r.wall_ms.max);
+  out += format("  submit%9.3f %9.3f %9.3f %9.3f  (host, before the wait)\n", r.submit_ms.min, r.submit_ms.median,
+                r.submit_ms.p95, r.submit_ms.max);
+  std::snprintf(buf, sizeof buf, "  glGetUniformLocation calls: %lld in the first frames, %lld after\n", r.lookups_first,
+                r.lookups_later);
+  out += buf;
   if (r.passes.size() > 1) {
     out += "\npass ms, each timed alone (wall)      min    median       p95       max\n";
     double sum = 0;

@@ -76,8 +76,11 @@ void ComputeFrameRenderer::draw(const Program& main, const UniformFn& set_unifor
   if (p.fused_post && (p.spp != 1 || p.aovs || end != 1 || p.bloom))
     fail_system("internal: a fused post pass needs one sample per pixel, no AOVs and no bloom");
   const int images = p.aovs ? 1 + kAovTargets : 1;
-  check_frame_size(ctx_.info(), p.width, p.height, images + 1);
-  if (p.width != width_ || p.height != height_ || !result_) {
+  // As FrameRenderer: checked only when targets are (re)made.
+  const bool resize = p.width != width_ || p.height != height_ || !result_;
+  if (resize || (!p.fused_post && (!accum_ || accum_->count() != images)))
+    check_frame_size(ctx_.info(), p.width, p.height, images + 1);
+  if (resize) {
     accum_.reset();
     result_ = std::make_unique<ComputeTargets>(p.width, p.height, 1);
     width_ = p.width;
@@ -157,6 +160,8 @@ Image ComputeFrameRenderer::read_color() const {
   img.pixels = result_->read(0);
   return img;
 }
+
+GLuint ComputeFrameRenderer::color_framebuffer() const { return result_ ? result_->fbo : 0; }
 
 Image ComputeFrameRenderer::read_aovs() const {
   if (!aovs_ || !accum_ || accum_->count() != 1 + kAovTargets) return {};

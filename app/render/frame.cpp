@@ -133,8 +133,12 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   if (p.fused_post && (p.spp != 1 || p.aovs || end != 1 || p.bloom))
     fail_system("internal: a fused post pass needs one sample per pixel, no AOVs and no bloom");
   const int attachments = p.aovs ? 1 + kAovTargets : 1;
-  check_frame_size(ctx_.info(), p.width, p.height, attachments + 1);
-  if (p.width != width_ || p.height != height_ || !result_) {
+  // Checked only when targets are (re)made: an unchanged frame passed it
+  // before, and it builds strings and asks the OS for its memory each time.
+  const bool resize = p.width != width_ || p.height != height_ || !result_;
+  if (resize || (!p.fused_post && (!accum_ || accum_->count() != attachments)))
+    check_frame_size(ctx_.info(), p.width, p.height, attachments + 1);
+  if (resize) {
     accum_.reset();
     result_ = std::make_unique<RenderTarget>(p.width, p.height);
     width_ = p.width;

@@ -123,6 +123,29 @@ TEST(Bench, TableForPeople) {
     EXPECT_NE(r.out.find(s), std::string::npos) << s << " not in:\n" << r.out;
 }
 
+// A per-frame host cost (issue 18 item 5): every frame sets the same
+// uniforms, so their locations are asked of the GL in the first frames and
+// kept (render/program.h). Counted, not timed: scene and Shadertoy uniforms,
+// fused and post-pass frames, bloom, both dispatches.
+TEST(Bench, NoUniformLookupsAfterTheFirstFrame) {
+  const std::string bloom = (source_dir() / "tests/data/bloom/orbs.toml").string();
+  const std::string toy = (source_dir() / "tests/data/shader/shadertoy/ok.glsl").string();
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {scene("seed"), "--dispatch", "fragment"},
+           {scene("seed"), "--dispatch", "compute", "--spp", "2"},
+           {scene("stilllife"), "--dispatch", "fragment", "--spp", "2"},
+           {bloom, "--spp", "2"},
+           {toy, "--dispatch", "compute"},
+       }) {
+    std::vector<std::string> a = args;
+    a.insert(a.end(), {"--size", "32x18", "--frames", "4", "--warmup", "2"});
+    const json j = bench_json(a);
+    const json& n = j.at("uniform_lookups");
+    EXPECT_GT(n.at("first_frames").get<long long>(), 10) << args[0];  // uResolution, the camera, ...
+    EXPECT_EQ(n.at("later_frames").get<long long>(), 0) << args[0] << " " << args[2];
+  }
+}
+
 TEST(Bench, BadInputExitsTwo) {
   for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
            {"bench", scene("seed"), "--frames", "0"},
