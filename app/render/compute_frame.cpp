@@ -125,7 +125,10 @@ void ComputeFrameRenderer::draw(const Program& main, const UniformFn& set_unifor
       glUniform2f(jitter, s.x, s.y);
       if (group.stripe > 0) glDispatchCompute(gx * gy, 1, 1);  // remapped in the shader (compute_wrap.h)
       else glDispatchCompute(gx, gy, 1);
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the next sample reads what this one stored
+      // The next sample reads what this one stored. One sample stores each
+      // pixel once and tiles do not overlap: no barrier, which would drain
+      // the GPU between tiles (40 a frame at 3840x2160).
+      if (add) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
       if (p.deadline) {
         glFinish();
         if (p.deadline->expired()) p.deadline->check("the render");
