@@ -7,6 +7,8 @@
 #include <regex>
 #include <sstream>
 
+#include "cli/dispatch_flag.h"
+#include "cli/dispatch_probe.h"
 #include "cli/flag_checks.h"
 #include "cli/input.h"
 #include "cli/shader_dir.h"
@@ -78,6 +80,9 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_option("--debounce-ms", a.debounce_ms, "Quiet time that ends a save, ms (default 10)")
       ->check(CLI::Range(0, 1000));
   cmd->add_flag("--no-panel", a.no_panel, "Start with the panel hidden (Tab shows it)");
+  cmd->add_option("--dispatch", a.dispatch,
+                  "Trace the scene pass as a fragment pass (default), a compute dispatch, or auto; the window's "
+                  "display pass stays fragment (docs/viewer.md#compute)");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Build the generic shader: every feature compiled (docs/specialization.md)");
   cmd->add_option("--allow-include", a.allow_include,
@@ -199,6 +204,11 @@ int run_view(const ViewArgs& a) {
   o.max_frames = a.max_frames;
   o.debounce_ms = a.debounce_ms;
   o.hide_panel = a.no_panel;
+  o.dispatch.dispatch = parse_dispatch(a.dispatch);  // a bad name: exit 2 before the window
+  // auto: render's cached or measured choice for this device; -v's line on stderr says which.
+  o.dispatch.choose = [](PassGraph& graph, const Program& post, const StillFrame& frame, const Context& ctx) {
+    return choose_dispatch(Dispatch::automatic, graph, post, frame, ctx, {}, true);
+  };
   return live::run_viewer(o);
 }
 

@@ -35,6 +35,7 @@ struct ViewArgs {
   long max_frames = 0;
   int debounce_ms = 10;
   bool no_panel = false;
+  std::string dispatch = "fragment";  // --dispatch fragment|compute|auto
   bool no_specialize = false;  // the generic shader, not one specialized to the scene
   std::vector<std::string> allow_include;  // more directories #include may read
   Overrides overrides;       // --set, --uniform: applied again at every reload

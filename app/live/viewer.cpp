@@ -201,7 +201,8 @@ void Viewer::finish_reload(const Compiling& c, const ReloadResult& r, double war
   watcher_.watch(session_.watched_files());
   watcher_.set_match_any(!r.ok);
   if (!r.ok) report_failure(r);
-  if (r.ok) log_.line(std::string("program fused=") + (session_.fused() ? "1" : "0"));  // docs/viewer.md#folding
+  if (r.ok)  // docs/viewer.md#folding, #compute
+    log_.line(std::string("program fused=") + (session_.fused() ? "1" : "0") + " dispatch=" + drawer_->dispatch());
   if (r.ok && session_.audio().get() != audio_clip_) {  // a music input came, went or changed
     audio_clip_ = session_.audio().get();
     if (!audio_clip_) {
@@ -418,7 +419,7 @@ int Viewer::run() {
   }
   install_input_callbacks(window_, &s_);
   ImGuiScope imgui(window_);
-  FrameDrawer drawer(window_, *ctx, session_, s_);
+  FrameDrawer drawer(window_, *ctx, session_, s_, o_.dispatch, log_);
   drawer_ = &drawer;
   log_.line("start backend=glfw renderer=\"" + ctx->info().renderer + "\" size=" + std::to_string(w) + "x" +
             std::to_string(h));

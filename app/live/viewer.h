@@ -8,6 +8,7 @@
 #include <functional>
 #include <string>
 
+#include "live/compute_trace.h"
 #include "live/live_values.h"
 #include "live/recording.h"
 #include "scene/scene.h"
@@ -37,6 +38,7 @@ struct ViewerOptions {
   RecordOptions record;              // F9 and --record (live/recording.h)
   ScriptedDrag drag;                 // --drag: a panel drag, scripted (live/live_values.h)
   std::string audio_device = "default";  // ALSA PCM for a music input; "none": silent (live/audio_out.h)
+  DispatchOptions dispatch;          // --dispatch: what traces the scene pass (live/compute_trace.h)
 };
 
 // Runs until the window closes, Esc, --exit-after or --max-frames. Returns

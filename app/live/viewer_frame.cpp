@@ -40,8 +40,44 @@ void set_params(const Program& p, const std::vector<SceneParam>& params) {
 
 }  // namespace
 
-FrameDrawer::FrameDrawer(GLFWwindow* window, const Context& ctx, Session& session, ViewState& state)
-    : window_(window), ctx_(ctx), session_(session), s_(state), renderer_(ctx) {}
+FrameDrawer::FrameDrawer(GLFWwindow* window, const Context& ctx, Session& session, ViewState& state,
+                         const DispatchOptions& dispatch, LiveLog& log)
+    : window_(window), ctx_(ctx), session_(session), s_(state), renderer_(ctx), trace_(ctx, dispatch), log_(log) {}
+
+void FrameDrawer::sync_trace() {
+  PassGraph* graph = session_.graph();
+  const Program* post = session_.post_program();
+  if (!graph || !post) return;
+  const Scene view = posed(static_cast<float>(s_.time));
+  std::string note;
+  try {
+    note = trace_.update(*graph, session_.generation(), *post, [&] {
+      StillFrame f;  // auto's probe (cli/dispatch_probe.h) draws the scene as it stands, small
+      f.in = inputs(view, nullptr);
+      f.params.width = rw_;
+      f.params.height = rh_;
+      f.params.exposure = session_.display_exposure();
+      f.params.bloom = session_.bloom();
+      return f;
+    });
+  } catch (const Error& e) {  // auto's probe failed: this generation stays fragment (update() set it so)
+    note = "dispatch fragment -- " + format_error(e.info());
+  }
+  if (note.empty()) return;
+  log_.line(note);
+  // A refusal is shown, never fatal: the fragment pass draws instead.
+  if (note.rfind("dispatch fragment -- ", 0) == 0) {
+    std::fprintf(stderr, "marchstudio: %s\n", note.c_str());
+    s_.say("compute refused, drawing with fragment: " + note.substr(21), 8.0);
+  }
+}
+
+void FrameDrawer::draw_scene(PassGraph& graph, const Program& post, const FrameInputs& in, const FrameParams& fp,
+                             bool step) {
+  sync_trace();
+  if (trace_.active()) trace_.draw(graph, post, in, fp, step);
+  else graph.draw(renderer_, post, in, fp, step);
+}
 
 UniformFn FrameDrawer::uniforms(int w, int h) {
   // The standard uniforms come from the graph; these are the panel's sliders.
@@ -140,7 +176,7 @@ bool FrameDrawer::draw(long frame, double dt, const std::function<void()>& ui) {
           GpuTimer& t;
           ~EndQuery() { t.end(); }
         } end_query{gpu_};
-        graph->draw(renderer_, *post, inputs(view, &extra), fp, !s_.paused);
+        draw_scene(*graph, *post, inputs(view, &extra), fp, !s_.paused);
         accum_.drawn();
         just_converged_ = accum_.converged();
         if (!s_.paused) ++sim_frame_;
@@ -162,7 +198,8 @@ bool FrameDrawer::draw(long frame, double dt, const std::function<void()>& ui) {
   glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   if (rendered) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer_.color_framebuffer());
+    const GLuint shown = trace_.active() ? trace_.color_framebuffer() : renderer_.color_framebuffer();
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, shown);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     // Float to the 8-bit window: values are display-encoded already.
     glBlitFramebuffer(0, 0, rw_, rh_, 0, 0, fbw_, fbh_, GL_COLOR_BUFFER_BIT,
@@ -192,7 +229,7 @@ void FrameDrawer::capture(const fs::path& dir, int k, LiveLog& log) {
     std::error_code ec;
     fs::create_directories(dir, ec);
     const fs::path path = dir / ("frame_" + std::to_string(k) + ".png");
-    write_image(renderer_.read_color(), path, {{"Software", "marchstudio 0.1.0 view"}});
+    write_image(read_color(), path, {{"Software", "marchstudio 0.1.0 view"}});
     log.line("capture " + std::to_string(k) + " " + path.string());
   } catch (const Error& e) {
     log.line("capture " + std::to_string(k) + " failed -- " + e.what());
@@ -215,9 +252,9 @@ void FrameDrawer::screenshot(const fs::path& path, int w, int h) {
   // (they hold the window's size; a different size starts them afresh).
   const Scene view = posed(static_cast<float>(s_.time));
   const UniformFn extra = uniforms(w, h);
-  graph->draw(renderer_, *post, inputs(view, &extra), fp, false);
+  draw_scene(*graph, *post, inputs(view, &extra), fp, false);
   accum_.restart();  // the frame's buffers now hold the screenshot
-  Image img = renderer_.read_color();
+  Image img = read_color();
   take_flagged(img);
   write_image(img, path,
               {{"Software", "marchstudio 0.1.0 view"},
@@ -230,7 +267,7 @@ void FrameDrawer::save_accumulated(const fs::path& path, LiveLog& log) {
   if (!have_frame_) fail_input("no frame to save: the scene has not compiled yet");
   check_output_path(path);
   const int n = std::max(1, accum_.samples());
-  write_image(renderer_.read_color(), path,
+  write_image(read_color(), path,
               {{"Software", "marchstudio 0.1.0 view"},
                {"ImageDescription", session_.scene().name + " t=" + std::to_string(s_.time) + " spp=" +
                                         std::to_string(n) + " accumulated debug_view=" +

@@ -1,5 +1,6 @@
 // One window frame of the viewer: the scene rendered by FrameRenderer (the
-// same passes as `render`, into its float targets), blitted to the window,
+// same passes as `render`, into its float targets), or traced by compute
+// (--dispatch, live/compute_trace.h), blitted to the window,
 // then the ImGui layer. Also the pictures taken from that frame: captures
 // for --capture-dir, screenshots re-rendered at any size, window grabs.
 #pragma once
@@ -9,6 +10,7 @@
 
 #include "gl/context.h"
 #include "live/accumulation.h"
+#include "live/compute_trace.h"
 #include "live/live_log.h"
 #include "live/session.h"
 #include "live/view_state.h"
@@ -21,7 +23,10 @@ namespace ms::live {
 
 class FrameDrawer {
  public:
-  FrameDrawer(GLFWwindow* window, const Context& ctx, Session& session, ViewState& state);
+  // `dispatch`: what traces the scene pass (live/compute_trace.h); its
+  // notes (auto's choice, a refusal) go to `log`.
+  FrameDrawer(GLFWwindow* window, const Context& ctx, Session& session, ViewState& state,
+              const DispatchOptions& dispatch, LiveLog& log);
   ~FrameDrawer() = default;
   FrameDrawer(const FrameDrawer&) = delete;
   FrameDrawer& operator=(const FrameDrawer&) = delete;
@@ -60,6 +65,13 @@ class FrameDrawer {
     if (PassGraph* g = session_.graph()) g->reset();
   }
 
+  // What traces the current program, "fragment" or "compute" (builds its
+  // compute program first when it is new: the viewer logs this after a build).
+  const char* dispatch() {
+    sync_trace();
+    return trace_.name();
+  }
+
   int render_width() const { return rw_; }
   int render_height() const { return rh_; }
 
@@ -70,12 +82,19 @@ class FrameDrawer {
   Scene posed(float time) const;
   // What this frame adds to the accumulation (live/accumulation.h).
   Accumulation::Step accumulation_step(const PassGraph& graph, const Scene& view);
+  // The compute program for the session's current generation, or why not.
+  void sync_trace();
+  // The scene pass by the current dispatch, and what it drew.
+  void draw_scene(PassGraph& graph, const Program& post, const FrameInputs& in, const FrameParams& fp, bool step);
+  Image read_color() const { return trace_.active() ? trace_.read_color() : renderer_.read_color(); }
 
   GLFWwindow* window_;
   const Context& ctx_;
   Session& session_;
   ViewState& s_;
   FrameRenderer renderer_;
+  ComputeTrace trace_;
+  LiveLog& log_;
   GpuTimer gpu_;
   long sim_frame_ = 0;       // a Shadertoy shader's iFrame: frames stepped since the last rewind
   int rw_ = 1, rh_ = 1, fbw_ = 1, fbh_ = 1;

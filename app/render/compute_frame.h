@@ -45,6 +45,8 @@ class ComputeFrameRenderer {
             ComputeGroup group = {});
   Image read_color() const;
   Image read_aovs() const;
+  // The colour result's framebuffer, 0 before the first draw (the viewer blits it).
+  GLuint color_framebuffer() const;
 
  private:
   const Context& ctx_;

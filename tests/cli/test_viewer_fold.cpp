@@ -82,7 +82,7 @@ TEST_F(FoldedViewer, ADragIsLiveThenFoldedAtItsFinalValue) {
   EXPECT_EQ(field(v[1], "frame") - field(v[0], "frame"), 5) << v[1];
 
   // spp 1, no accumulation: render's one-pass frame, as `render` draws it.
-  EXPECT_FALSE(wait_for_line(log(), "^program fused=1$", 1).empty()) << read_file(log());
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=1 dispatch=fragment$", 1).empty()) << read_file(log());
   EXPECT_NE(v[0].find(" fused=1 "), std::string::npos) << "the live program is one pass too: " << v[0];
   const Image file = render({}), edited = render({"--set", "materials.ball.color=[0.1,0.3,0.9]"});
   EXPECT_LE(max_abs_diff(read_image(dir / "cap/frame_0.png"), file), 1.0 / 255.0)
@@ -112,19 +112,19 @@ TEST_F(FoldedViewer, MidDragTheLiveProgramShowsTheCurrentValue) {
 // post; turning accumulation off (--accumulate 1) gives the one-pass frame.
 TEST_F(FoldedViewer, AccumulatingIsNotTheOnePassFrame) {
   start({"--accumulate", "4", "--max-frames", "8"});
-  EXPECT_FALSE(wait_for_line(log(), "^program fused=0$", 5).empty()) << read_file(log());
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=0 dispatch=fragment$", 5).empty()) << read_file(log());
   ASSERT_FALSE(wait_for_line(log(), "^exit ", 30).empty());
   EXPECT_EQ(read_file(log()).find("fused=1"), std::string::npos) << read_file(log());
 }
 
 TEST_F(FoldedViewer, ADebugViewIsNotTheOnePassFrame) {
   start({"--debug-view", "2", "--max-frames", "4"});
-  EXPECT_FALSE(wait_for_line(log(), "^program fused=0$", 5).empty()) << read_file(log());
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=0 dispatch=fragment$", 5).empty()) << read_file(log());
 }
 
 TEST_F(FoldedViewer, TheOnePassFrameIsRendersAtSpp1) {
   start({"--accumulate", "1"});
-  EXPECT_FALSE(wait_for_line(log(), "^program fused=1$", 5).empty()) << read_file(log());
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=1 dispatch=fragment$", 5).empty()) << read_file(log());
   EXPECT_LE(max_abs_diff(read_image(dir / "cap/frame_0.png"), render({})), 1.0 / 255.0);
 }
 

@@ -1,0 +1,67 @@
+// view --dispatch compute|auto (issue 18): the viewer's scene pass traced by
+// the compute dispatch (render/compute_frame.h) instead of FrameRenderer;
+// the window's blit, the UI and a Shadertoy graph's buffer passes stay
+// fragment passes. Built once per program generation, on the UI thread: the
+// compile worker links only the fragment programs. A pass compute cannot run
+// (derivatives, an implicit-LOD lookup of a mipmapped input) or a compute
+// program that fails to build is drawn with fragment, and update() says why;
+// the viewer never exits for it.
+//
+//   ComputeTrace trace(ctx, opts.dispatch);
+//   const std::string note = trace.update(graph, session.generation(), post, probe_frame);
+//   if (trace.active()) trace.draw(graph, post, in, fp, step); else graph.draw(renderer, post, in, fp, step);
+#pragma once
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "gl/context.h"
+#include "render/compute_frame.h"
+#include "render/graph.h"
+#include "render/program.h"
+#include "render/still.h"
+
+namespace ms::live {
+
+struct DispatchOptions {
+  Dispatch dispatch = Dispatch::fragment;  // --dispatch
+  // auto: the cached or measured choice for this device (cli/dispatch_probe.h
+  // choose_dispatch, passed in by cli/); asked once a session, for the first
+  // program compute can run. Unset: auto draws with fragment.
+  std::function<Dispatch(PassGraph&, const Program& post, const StillFrame&, const Context&)> choose;
+};
+
+class ComputeTrace {
+ public:
+  ComputeTrace(const Context& ctx, DispatchOptions opts) : ctx_(ctx), opts_(std::move(opts)) {}
+
+  // For `graph` (the session's program generation `generation`): nothing when
+  // the generation is the last one seen; else compile its last pass as compute
+  // when the dispatch asks for it. `frame` gives auto's probe its frame. Returns
+  // a line for the log, empty when there is nothing to say:
+  //   "dispatch auto=compute", "dispatch fragment -- <why compute was refused>".
+  // An error of `choose` passes through; the generation then draws with fragment.
+  std::string update(PassGraph& graph, int generation, const Program& post, const std::function<StillFrame()>& frame);
+  // This generation is traced with compute.
+  bool active() const { return active_; }
+  // What draws this generation: "compute" or "fragment".
+  const char* name() const { return active_ ? "compute" : "fragment"; }
+
+  // As SceneDrawer::draw; only while active().
+  void draw(PassGraph& graph, const Program& post, const FrameInputs& in, const FrameParams& p, bool step);
+  GLuint color_framebuffer() const { return renderer_->color_framebuffer(); }
+  Image read_color() const { return renderer_->read_color(); }
+
+ private:
+  const Context& ctx_;
+  DispatchOptions opts_;
+  std::optional<Dispatch> chosen_;  // auto's answer, once asked
+  int generation_ = -1;
+  bool active_ = false;
+  std::string text_;  // main_'s source: an unchanged pass is not compiled again
+  std::unique_ptr<Program> main_;
+  std::unique_ptr<ComputeFrameRenderer> renderer_;
+};
+
+}  // namespace ms::live

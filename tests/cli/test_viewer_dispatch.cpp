@@ -1,0 +1,144 @@
+// view --dispatch fragment|compute|auto (issue 18): the scene pass traced by
+// the compute dispatch draws what `render --dispatch fragment` draws, within
+// 1/255: the one-pass frame (fused) and a frame accumulated to N samples; a
+// pass compute cannot run (dFdx) is shown as an error and drawn with
+// fragment, never fatal; a bad name is one line and exit 2. Under Xvfb, on
+// llvmpipe (GL 4.5: compute shaders).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "io/image_io.h"
+#include "run.h"
+#include "test_viewer_util.h"
+
+namespace ms::test {
+namespace {
+namespace fs = std::filesystem;
+
+const char* kMap =
+    "vec2 map(vec3 p) {\n"
+    "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
+    "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), 1.0), MAT_BALL);\n"
+    "  return opUnion(ground, ball);\n"
+    "}\n";
+
+// A Shadertoy Image pass that needs derivatives: compute refuses it.
+const char* kDerivative = "void mainImage(out vec4 c, in vec2 f) {\n  c = vec4(vec3(0.25 + 0.5 * dFdx(f.x)), 1.0);\n}\n";
+
+class DispatchViewer : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    write_file(dir / "seed.toml", kBallScene);
+    write_file(dir / "seed.glsl", kMap);
+    write_file(dir / "d.glsl", kDerivative);
+  }
+  // The viewer on `input` (a file in dir), its cache (auto's choice) in dir.
+  void start(const std::string& input, std::vector<std::string> extra) {
+    const std::string server = std::to_string(100 + (getpid() + 9173) % 20000);
+    std::vector<std::string> argv = {"env", "XDG_CACHE_HOME=" + (dir / "cache").string(), "xvfb-run", "-a", "-n",
+                                     server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view", (dir / input).string(),
+                                     "--size", "160x90", "--paused", "--time", "0", "--no-panel", "--log",
+                                     log().string(), "--capture-dir", (dir / "cap").string(), "--exit-after", "90"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    proc = std::make_unique<BackgroundProcess>(argv, dir / "out.txt", dir / "err.txt");
+    ASSERT_TRUE(proc->started());
+    ASSERT_FALSE(wait_for_line(log(), "^reload ok 0 ", 60).empty()) << read_file(log()) << read_file(dir / "err.txt");
+    ASSERT_FALSE(wait_for_line(log(), "^capture 0 ", 10).empty()) << read_file(log());
+  }
+  Image render(const std::string& input, std::vector<std::string> more) {
+    std::vector<std::string> args = {"render", (dir / input).string(), "--size", "160x90", "--time", "0",
+                                     "--dispatch", "fragment", "-o", (dir / "render.png").string()};
+    args.insert(args.end(), more.begin(), more.end());
+    const RunResult r = run_marchstudio(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return read_image(dir / "render.png");
+  }
+  fs::path log() const { return dir / "log.txt"; }
+
+  TempDir dir;
+  std::unique_ptr<BackgroundProcess> proc;
+};
+
+TEST_F(DispatchViewer, TheOnePassComputeFrameIsRendersFragmentFrame) {
+  start("seed.toml", {"--accumulate", "1", "--dispatch", "compute"});
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=1 dispatch=compute$", 5).empty()) << read_file(log());
+  EXPECT_LE(max_abs_diff(read_image(dir / "cap/frame_0.png"), render("seed.toml", {})), 1.0 / 255.0);
+}
+
+// Accumulated by compute to 4 samples (uMsAccumulate adds) against render --spp 4.
+TEST_F(DispatchViewer, AComputeFrameAccumulatedToNIsRenderAtSppN) {
+  start("seed.toml", {"--accumulate", "4", "--dispatch", "compute"});
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=0 dispatch=compute$", 5).empty()) << read_file(log());
+  ASSERT_FALSE(wait_for_line(log(), "^accumulated_shot 4 ", 60).empty()) << read_file(log());
+  const Image four = read_image(dir / "cap/converged_4.png");
+  EXPECT_LE(max_abs_diff(four, render("seed.toml", {"--spp", "4"})), 1.0 / 255.0);
+  EXPECT_GT(mean_abs_diff(four, render("seed.toml", {"--spp", "1"})), 1e-4) << "nothing was accumulated";
+}
+
+TEST_F(DispatchViewer, AutoLogsItsChoiceAndDrawsIt) {
+  start("seed.toml", {"--accumulate", "1", "--dispatch", "auto"});
+  const std::string chosen = wait_for_line(log(), "^dispatch auto=(fragment|compute)$", 5);
+  ASSERT_FALSE(chosen.empty()) << read_file(log());
+  const std::string name = chosen.substr(chosen.find('=') + 1);
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=1 dispatch=" + name + "$", 5).empty()) << read_file(log());
+  EXPECT_TRUE(fs::exists(dir / "cache/marchstudio/dispatch")) << "auto's choice was not cached";
+  EXPECT_LE(max_abs_diff(read_image(dir / "cap/frame_0.png"), render("seed.toml", {})), 1.0 / 255.0);
+}
+
+// A derivative call under --dispatch compute: the refusal is logged and on
+// stderr (the window shows it), the frame is drawn with fragment, as render's.
+TEST_F(DispatchViewer, ADerivativeShaderIsRefusedAndDrawnWithFragment) {
+  start("d.glsl", {"--dispatch", "compute"});
+  const std::string refused = wait_for_line(log(), "^dispatch fragment -- ", 5);
+  EXPECT_NE(refused.find("dFdx"), std::string::npos) << read_file(log());
+  EXPECT_NE(refused.find("d.glsl"), std::string::npos) << "the refusal names the file: " << refused;
+  EXPECT_FALSE(wait_for_line(log(), "^program fused=0 dispatch=fragment$", 5).empty()) << read_file(log());
+  EXPECT_NE(read_file(dir / "err.txt").find("dispatch fragment -- "), std::string::npos) << read_file(dir / "err.txt");
+  EXPECT_TRUE(proc->running()) << "the viewer died of the refusal";
+  EXPECT_LE(max_abs_diff(read_image(dir / "cap/frame_0.png"), render("d.glsl", {})), 1.0 / 255.0);
+}
+
+// A Shadertoy graph: buffer A (a fragment pass either way) counts frames,
+// the Image pass traced by compute reads it. The shot after frame 40 is
+// the fragment viewer's, and the count went on.
+TEST_F(DispatchViewer, ABufferGraphsImagePassReadsTheBufferWithCompute) {
+  write_file(dir / "s.toml",
+             "[scene]\nname = \"count\"\n[render]\nwidth = 32\nheight = 24\n"
+             "[[passes]]\ntype = \"buffer\"\nbuffer = \"A\"\nfile = \"a.glsl\"\niChannel0 = { buffer = \"A\" }\n"
+             "[[passes]]\ntype = \"image\"\nfile = \"img.glsl\"\niChannel0 = { buffer = \"A\" }\n");
+  write_file(dir / "a.glsl",
+             "void mainImage(out vec4 o, in vec2 f) { o = texelFetch(iChannel0, ivec2(f), 0) + vec4(0.25 / 255.0); }\n");
+  write_file(dir / "img.glsl",
+             "void mainImage(out vec4 o, in vec2 f) { o = vec4(texelFetch(iChannel0, ivec2(f), 0).r, 0.0, 0.0, 1.0); }\n");
+  Image shots[2];
+  for (int i = 0; i < 2; ++i) {
+    const std::string d = i == 0 ? "fragment" : "compute";
+    const fs::path l = dir / (d + ".log");
+    const std::string server = std::to_string(100 + (getpid() + 5171 + i) % 20000);
+    BackgroundProcess p({"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+                         (dir / "s.toml").string(), "--size", "32x24", "--no-panel", "--log", l.string(),
+                         "--shot-dir", (dir / d).string(), "--shot-frame", "40", "--max-frames", "45",
+                         "--dispatch", d},
+                        dir / "out.txt", dir / "err.txt");
+    ASSERT_EQ(p.wait_exit(60), 0) << read_file(l) << read_file(dir / "err.txt");
+    EXPECT_NE(read_file(l).find("program fused=0 dispatch=" + d + "\n"), std::string::npos) << read_file(l);
+    shots[i] = read_image(dir / d / "s_1.png");
+  }
+  EXPECT_LE(max_abs_diff(shots[0], shots[1]), 1.0 / 255.0);
+  EXPECT_GT(shots[1].at(0, 0, 0), 5.0f / 255.0f) << "the compute image pass did not see the buffer count";
+}
+
+TEST(DispatchViewerFlag, ABadNameIsOneLineAndExit2) {
+  TempDir dir;
+  write_file(dir / "seed.toml", kBallScene);
+  write_file(dir / "seed.glsl", kMap);
+  const RunResult r = run_marchstudio({"view", (dir / "seed.toml").string(), "--dispatch", "gpu"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--dispatch 'gpu'"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+}  // namespace
+}  // namespace ms::test
