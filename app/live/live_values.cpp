@@ -16,13 +16,14 @@ void LiveValues::built(const Scene& scene, std::vector<std::string> live) {
 std::optional<std::vector<std::string>> LiveValues::rebuild(const Scene& now, bool dragging) const {
   if (!any_) return std::nullopt;
   std::vector<std::string> changed = folded_differences(scene_, now);
-  // A table kept live shows its values through the uniforms already.
-  const auto live_table = [&](const std::string& name) {
-    const std::string table = name.substr(0, name.find_first_of("[."));
-    return std::any_of(live_.begin(), live_.end(), [&](const std::string& l) { return l.rfind(table, 0) == 0; });
+  // A live value (or a whole live entry) shows through its uniforms already.
+  const auto shown = [&](const std::string& name) {
+    return std::any_of(live_.begin(), live_.end(), [&](const std::string& l) {
+      return l == name || (name.rfind(l, 0) == 0 && name.size() > l.size() && name[l.size()] == '.');
+    });
   };
   if (dragging) {
-    changed.erase(std::remove_if(changed.begin(), changed.end(), live_table), changed.end());
+    changed.erase(std::remove_if(changed.begin(), changed.end(), shown), changed.end());
     if (changed.empty()) return std::nullopt;
     std::vector<std::string> next = live_;
     next.insert(next.end(), changed.begin(), changed.end());
@@ -43,6 +44,12 @@ std::string uniform_tables(const std::string& text) {
   for (const char* t : {"LIGHT", "MATERIAL", "SKY"})
     if (text.find(std::string("#define ") + t + "_UNIFORMS 1\n") != std::string::npos)
       out.push_back(t == std::string("LIGHT") ? "lights" : t == std::string("MATERIAL") ? "materials" : "sky");
+  // The single live values of folded tables (shader/specialize.cpp live_uniform).
+  const std::string mark = "// live value: ";
+  for (size_t at = text.find(mark); at != std::string::npos; at = text.find(mark, at + 1)) {
+    const size_t from = at + mark.size();
+    out.push_back(text.substr(from, text.find('\n', from) - from));
+  }
   return live_names(out);
 }
 

@@ -1,7 +1,8 @@
 // Fold what the user is not dragging (docs/viewer.md#folding): the viewer
 // compiles lights, materials and sky folded into constants, as `render`
-// does; a panel drag of one of them rebuilds with its table live (a
-// uniform) until the drag ends, then it is folded again at the final value.
+// does; a panel drag of one of them rebuilds with that value live (its own
+// uniform, the rest still folded) until the drag ends, then it is folded
+// again at the final value.
 //
 //   LiveValues live;
 //   live.built(scene, {});                          // at each build
@@ -38,8 +39,9 @@ class LiveValues {
 
 // "a,b" or "none": for log lines.
 std::string live_names(const std::vector<std::string>& live);
-// The tables an assembled scene shader reads from uniforms ("lights",
-// "materials", "sky", comma-separated, or "none"): its *_UNIFORMS 1 defines.
+// What an assembled scene shader reads from uniforms, comma-separated, or
+// "none": its whole tables ("lights", "materials", "sky": *_UNIFORMS 1),
+// then the single live values of folded ones ("materials[1].color").
 std::string uniform_tables(const std::string& shader_text);
 
 // Whether the viewer draws render's one-pass frame (FrameParams::fused_post,

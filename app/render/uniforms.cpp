@@ -58,6 +58,12 @@ void set_scene_uniforms(const Program& p, const Scene& s, int width, int height,
     set3(p, base + "color", l.color);
     set1(p, base + "size", l.size);
     set3(p, base + "atten", l.atten);
+    // A value the viewer keeps live in a folded table (shader/specialize.h live_uniform_name).
+    const std::string live = "uLive_lights_" + std::to_string(i) + "_";
+    set3(p, live + "pos", glm::vec3(l.pos));
+    set3(p, live + "color", l.color);
+    set1(p, live + "size", l.size);
+    set3(p, live + "atten", l.atten);
   }
   for (size_t i = 0; i < s.materials.size(); ++i) {
     const Material& m = s.materials[i];
@@ -72,6 +78,16 @@ void set_scene_uniforms(const Program& p, const Scene& s, int width, int height,
     set3(p, base + "color2", m.color2);
     set1(p, base + "patternScale", m.pattern_scale);
     set3(p, base + "patternVelocity", m.pattern_velocity);
+    const std::string live = "uLive_materials_" + std::to_string(i) + "_";
+    set3(p, live + "color", m.color);
+    set1(p, live + "ambient", m.ambient);
+    set1(p, live + "diffuse", m.diffuse);
+    set1(p, live + "specular", m.specular);
+    set1(p, live + "shininess", m.shininess);
+    set1(p, live + "reflectivity", m.reflectivity);
+    set3(p, live + "color2", m.color2);
+    set1(p, live + "pattern_scale", m.pattern_scale);
+    set3(p, live + "pattern_velocity", m.pattern_velocity);
   }
 }
 

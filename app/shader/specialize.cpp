@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <functional>
 #include <vector>
 
@@ -24,29 +25,34 @@ void define(std::string& out, const std::string& name, const std::string& value)
 }
 void define(std::string& out, const std::string& name, int value) { define(out, name, std::to_string(value)); }
 
-// Whether an [[animation]] track drives, or a live value is, anything under
-// `prefix` ("lights[", "materials[", "sky."): such a table stays uniforms.
+// Whether the table under `prefix` ("lights[", "materials[", "sky.") stays
+// uniforms as a whole: an [[animation]] track drives something in it, or a
+// live name is a whole entry ("materials[2]", no field).
 bool held(const Scene& scene, const std::vector<std::string>& live, const std::string& prefix) {
   auto under = [&](const std::string& target) { return target.rfind(prefix, 0) == 0; };
-  return std::any_of(live.begin(), live.end(), under) ||
+  return std::any_of(live.begin(), live.end(),
+                     [&](const std::string& l) { return under(l) && l.find('.', prefix.size()) == std::string::npos && prefix != "sky."; }) ||
          std::any_of(scene.animation.begin(), scene.animation.end(),
                      [&](const AnimationTrack& t) { return under(t.target); });
 }
 
-bool same_light(const Light& a, const Light& b) {
-  const GlslLight x = glsl_light(a), y = glsl_light(b);
-  return x.pos == y.pos && x.color == y.color && x.size == y.size && x.atten == y.atten;
+bool is_live(const std::vector<std::string>& live, const std::string& name) {
+  return std::find(live.begin(), live.end(), name) != live.end();
 }
 
-bool same_material(const Material& a, const Material& b) {
-  return a.color == b.color && a.ambient == b.ambient && a.diffuse == b.diffuse && a.specular == b.specular &&
-         a.shininess == b.shininess && a.reflectivity == b.reflectivity && a.color2 == b.color2 &&
-         a.pattern_scale == b.pattern_scale && a.pattern_velocity == b.pattern_velocity;
+// The uniform a live value is read from ("materials[1].color" ->
+// uLive_materials_1_color; lights by their GLSL slot, live_uniform_name()),
+// declared after a comment line naming it, which the viewer's log reads
+// (not on the declaration's line: shader/scene_params.h reads those).
+std::string live_uniform(const std::string& type, const std::string& uniform, const std::string& name) {
+  return "// live value: " + name + "\nuniform " + type + " " + uniform + ";\n";
 }
 
 // The lights' values as constant tables, LIGHT_POS(i) and so on reading
 // them (lighting.glsl); a one-light scene indexes them with a constant 0.
-std::string folded_lights(const Scene& scene, std::string& defines) {
+// A light value dragged in the panel (`live`: "lights[i].position" and so
+// on, by GLSL slot) is read from its own uniform instead, chosen by index.
+std::string folded_lights(const Scene& scene, const std::vector<std::string>& live, std::string& defines) {
   std::string pos, color, size, atten;
   for (const Light& light : scene.lights) {
     const GlslLight g = glsl_light(light);
@@ -57,11 +63,25 @@ std::string folded_lights(const Scene& scene, std::string& defines) {
     atten += sep + vec3_literal(g.atten);
   }
   const std::string n = std::to_string(scene.lights.size());
-  define(defines, "LIGHT_POS(i)", "kLightPos[i]");
-  define(defines, "LIGHT_COLOR(i)", "kLightColor[i]");
-  define(defines, "LIGHT_SIZE(i)", "kLightSize[i]");
-  define(defines, "LIGHT_ATTEN(i)", "kLightAtten[i]");
-  return "// The lights, folded (point: position; directional: unit travel direction).\n"
+  std::string uniforms;
+  const struct { const char* macro; const char* table; const char* slot; const char* type; } slots[] = {
+      {"LIGHT_POS(i)", "kLightPos[i]", "pos", "vec3"},
+      {"LIGHT_COLOR(i)", "kLightColor[i]", "color", "vec3"},
+      {"LIGHT_SIZE(i)", "kLightSize[i]", "size", "float"},
+      {"LIGHT_ATTEN(i)", "kLightAtten[i]", "atten", "vec3"},
+  };
+  for (const auto& slot : slots) {
+    std::string read = slot.table;
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+      const std::string name = live_light_name(scene.lights[i], i, slot.slot);
+      if (!is_live(live, name)) continue;
+      const std::string u = live_uniform_name(name);
+      uniforms += live_uniform(slot.type, u, name);
+      read = "((i) == " + std::to_string(i) + " ? " + u + " : " + read + ")";
+    }
+    define(defines, slot.macro, read);
+  }
+  return "// The lights, folded (point: position; directional: unit travel direction).\n" + uniforms +
          "const vec3 kLightPos[" + n + "] = vec3[](" + pos + ");\n" +
          "const vec3 kLightColor[" + n + "] = vec3[](" + color + ");\n" +
          "const float kLightSize[" + n + "] = float[](" + size + ");\n" +
@@ -92,39 +112,47 @@ std::string select_by_id(const std::string& type, const std::vector<std::string>
 // checker's fields without a checker. Only checker materials read those
 // fields, so the others take the first checker material's values: a single
 // checker makes them constants.
-std::string folded_materials(const Scene& scene, bool checker) {
+std::string folded_materials(const Scene& scene, bool checker, const std::vector<std::string>& live) {
   struct Field {
     const char* name;
+    const char* key;  // the scene file's (and a live name's) field
     const char* type;
     std::function<std::string(const Material&)> literal;
     bool checker_only = false;
   };
   const std::vector<Field> fields = {
-      {"color", "vec3", [](const Material& m) { return vec3_literal(m.color); }},
-      {"ka", "float", [](const Material& m) { return glsl_float(m.ambient); }},
-      {"kd", "float", [](const Material& m) { return glsl_float(m.diffuse); }},
-      {"ks", "float", [](const Material& m) { return glsl_float(m.specular); }},
-      {"shininess", "float", [](const Material& m) { return glsl_float(m.shininess); }},
-      {"reflectivity", "float", [](const Material& m) { return glsl_float(m.reflectivity); }},
-      {"color2", "vec3", [](const Material& m) { return vec3_literal(m.color2); }, true},
-      {"patternScale", "float", [](const Material& m) { return glsl_float(m.pattern_scale); }, true},
-      {"patternVelocity", "vec3", [](const Material& m) { return vec3_literal(m.pattern_velocity); }, true},
+      {"color", "color", "vec3", [](const Material& m) { return vec3_literal(m.color); }},
+      {"ka", "ambient", "float", [](const Material& m) { return glsl_float(m.ambient); }},
+      {"kd", "diffuse", "float", [](const Material& m) { return glsl_float(m.diffuse); }},
+      {"ks", "specular", "float", [](const Material& m) { return glsl_float(m.specular); }},
+      {"shininess", "shininess", "float", [](const Material& m) { return glsl_float(m.shininess); }},
+      {"reflectivity", "reflectivity", "float", [](const Material& m) { return glsl_float(m.reflectivity); }},
+      {"color2", "color2", "vec3", [](const Material& m) { return vec3_literal(m.color2); }, true},
+      {"patternScale", "pattern_scale", "float", [](const Material& m) { return glsl_float(m.pattern_scale); }, true},
+      {"patternVelocity", "pattern_velocity", "vec3", [](const Material& m) { return vec3_literal(m.pattern_velocity); }, true},
   };
   size_t first_checker = 0;
   while (first_checker < scene.materials.size() && scene.materials[first_checker].pattern != Pattern::checker)
     ++first_checker;
-  std::string out = "// The material table, folded: one constant per field where every material agrees.\n";
-  out += "Material sceneMaterial(int id) {\n  Material m;\n";
+  std::string uniforms, body;
   for (const Field& f : fields) {
     if (f.checker_only && !checker) continue;
     std::vector<std::string> values;
     for (size_t i = 0; i < scene.materials.size(); ++i) {
+      // A value dragged in the panel is read from its own uniform.
+      const std::string name = "materials[" + std::to_string(i) + "]." + f.key;
+      if (is_live(live, name)) {
+        values.push_back(live_uniform_name(name));
+        uniforms += live_uniform(f.type, values.back(), name);
+        continue;
+      }
       const bool stand_in = f.checker_only && scene.materials[i].pattern != Pattern::checker;
       values.push_back(f.literal(scene.materials[stand_in ? first_checker : i]));
     }
-    out += "  m." + std::string(f.name) + " = " + select_by_id(f.type, values) + ";\n";
+    body += "  m." + std::string(f.name) + " = " + select_by_id(f.type, values) + ";\n";
   }
-  return out + "  return m;\n}\n";
+  return "// The material table, folded: one constant per field where every material agrees.\n" + uniforms +
+         "Material sceneMaterial(int id) {\n  Material m;\n" + body + "  return m;\n}\n";
 }
 
 std::string library_define(const std::string& name) {
@@ -188,20 +216,31 @@ Specialized specialize(const Scene& scene, const FeatureSet& f, Specialization m
   define(d, "LIGHT_IS_POINT(i)", "(" + (point_ids.empty() ? std::string("false") : point_ids) + ")");
   const bool light_uniforms = !scene.lights.empty() && (!fold || held(scene, live, "lights["));
   define(d, "LIGHT_UNIFORMS", light_uniforms ? 1 : 0);
-  if (!scene.lights.empty() && !light_uniforms) out.constants += folded_lights(scene, d);
+  if (!scene.lights.empty() && !light_uniforms) out.constants += folded_lights(scene, live, d);
 
   // Materials: a folded sceneMaterial(), or the library's uniform lookup.
   // A table counts as a whole: one animated entry keeps all as uniforms.
   const bool material_uniforms = !fold || held(scene, live, "materials[");
   define(d, "MATERIAL_UNIFORMS", material_uniforms ? 1 : 0);
-  if (!material_uniforms) out.constants += folded_materials(scene, f.checker);
+  if (!material_uniforms) out.constants += folded_materials(scene, f.checker, live);
 
   const bool sky_uniforms = !fold || held(scene, live, "sky.");
   define(d, "SKY_UNIFORMS", sky_uniforms ? 1 : 0);
-  if (!sky_uniforms)
-    out.constants = "// The sky, folded: the uniforms' names, as constants.\nconst vec3 uSkyHorizon = " +
-                    vec3_literal(scene.sky.horizon) + ";\nconst vec3 uSkyZenith = " + vec3_literal(scene.sky.zenith) +
-                    ";\nconst vec3 uAmbient = " + vec3_literal(scene.sky.ambient) + ";\n" + out.constants;
+  if (!sky_uniforms) {
+    // The uniforms' own names, as constants; a live one stays the uniform.
+    std::string sky = "// The sky, folded: the uniforms' names, as constants.\n";
+    const struct { const char* key; const char* uniform; const glm::vec3& value; } fields[] = {
+        {"horizon", "uSkyHorizon", scene.sky.horizon},
+        {"zenith", "uSkyZenith", scene.sky.zenith},
+        {"ambient", "uAmbient", scene.sky.ambient},
+    };
+    for (const auto& field : fields) {
+      const std::string name = std::string("sky.") + field.key;
+      sky += is_live(live, name) ? live_uniform("vec3", field.uniform, name)
+                                 : "const vec3 " + std::string(field.uniform) + " = " + vec3_literal(field.value) + ";\n";
+    }
+    out.constants = sky + out.constants;
+  }
 
   // Library functions: only those referenced (primitives.glsl, operators.glsl).
   define(d, "MS_LIBRARY_SUBSET", 1);
@@ -209,16 +248,65 @@ Specialized specialize(const Scene& scene, const FeatureSet& f, Specialization m
   return out;
 }
 
+std::string live_light_name(const Light& light, size_t i, const std::string& slot) {
+  const std::string entry = "lights[" + std::to_string(i) + "].";
+  if (slot == "pos") return entry + (light.kind == LightKind::point ? "position" : "direction");
+  return entry + (slot == "atten" ? "attenuation" : slot);
+}
+
+std::string live_uniform_name(const std::string& name) {
+  if (name.rfind("sky.", 0) == 0)
+    return name == "sky.horizon" ? "uSkyHorizon" : name == "sky.zenith" ? "uSkyZenith" : "uAmbient";
+  std::string u = "uLive_";
+  for (char c : name)
+    if (std::isalnum(static_cast<unsigned char>(c))) u += c;
+    else if (u.back() != '_') u += '_';
+  if (u.back() == '_') u.pop_back();
+  // Lights by their GLSL slot: position and direction are both pos.
+  for (const char* from : {"_position", "_direction"})
+    if (const size_t at = u.rfind(from); at != std::string::npos && at + std::strlen(from) == u.size())
+      u.replace(at, std::string::npos, "_pos");
+  if (u.size() > 12 && u.compare(u.size() - 12, 12, "_attenuation") == 0) u.replace(u.size() - 12, 12, "_atten");
+  return u;
+}
+
 std::vector<std::string> folded_differences(const Scene& a, const Scene& b) {
   std::vector<std::string> out;
   const size_t lights = std::max(a.lights.size(), b.lights.size());
-  for (size_t i = 0; i < lights; ++i)
-    if (i >= a.lights.size() || i >= b.lights.size() || !same_light(a.lights[i], b.lights[i]))
+  for (size_t i = 0; i < lights; ++i) {
+    if (i >= a.lights.size() || i >= b.lights.size() || a.lights[i].kind != b.lights[i].kind) {
       out.push_back("lights[" + std::to_string(i) + "]");
+      continue;
+    }
+    // By GLSL slot: intensity is in the colour, the kind says position or direction.
+    const GlslLight x = glsl_light(a.lights[i]), y = glsl_light(b.lights[i]);
+    if (x.pos != y.pos) out.push_back(live_light_name(b.lights[i], i, "pos"));
+    if (x.color != y.color) out.push_back(live_light_name(b.lights[i], i, "color"));
+    if (x.size != y.size) out.push_back(live_light_name(b.lights[i], i, "size"));
+    if (x.atten != y.atten) out.push_back(live_light_name(b.lights[i], i, "atten"));
+  }
   const size_t materials = std::max(a.materials.size(), b.materials.size());
-  for (size_t i = 0; i < materials; ++i)
-    if (i >= a.materials.size() || i >= b.materials.size() || !same_material(a.materials[i], b.materials[i]))
-      out.push_back("materials[" + std::to_string(i) + "]");
+  for (size_t i = 0; i < materials; ++i) {
+    const std::string entry = "materials[" + std::to_string(i) + "]";
+    if (i >= a.materials.size() || i >= b.materials.size()) {
+      out.push_back(entry);
+      continue;
+    }
+    const Material &x = a.materials[i], &y = b.materials[i];
+    const std::pair<const char*, bool> fields[] = {
+        {"color", x.color != y.color},
+        {"ambient", x.ambient != y.ambient},
+        {"diffuse", x.diffuse != y.diffuse},
+        {"specular", x.specular != y.specular},
+        {"shininess", x.shininess != y.shininess},
+        {"reflectivity", x.reflectivity != y.reflectivity},
+        {"color2", x.color2 != y.color2},
+        {"pattern_scale", x.pattern_scale != y.pattern_scale},
+        {"pattern_velocity", x.pattern_velocity != y.pattern_velocity},
+    };
+    for (const auto& [field, differs] : fields)
+      if (differs) out.push_back(entry + "." + field);
+  }
   if (a.sky.horizon != b.sky.horizon) out.push_back("sky.horizon");
   if (a.sky.zenith != b.sky.zenith) out.push_back("sky.zenith");
   if (a.sky.ambient != b.sky.ambient) out.push_back("sky.ambient");

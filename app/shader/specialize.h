@@ -58,16 +58,28 @@ struct Specialized {
 // with, for what is folded, constant tables (kLight*, sceneMaterial(), the
 // sky's names as constants); MS_LIBRARY_SUBSET with USE_<NAME> for every
 // name in f.library. The rule for what stays a uniform: docs/specialization.md.
-// `live` names values the viewer's panel is dragging, in animation target
-// form ("lights[0].color", "materials[2]", "sky.horizon"): the table each is
-// in (lights, materials or sky) stays uniforms, as an animated one does.
+// `live` names values the viewer's panel is dragging, as folded_differences()
+// names them: each such value ("materials[2].color", "lights[0].position",
+// "sky.horizon") is read from its own uniform, live_uniform_name(), the
+// rest of its table stays folded. A whole entry ("materials[2]") keeps its
+// table uniforms, as an animated table does.
 Specialized specialize(const Scene& scene, const FeatureSet& f, Specialization mode,
                        const std::vector<std::string>& live = {});
 
-// The folded values (lights, materials, sky) that differ between a and b,
-// one name per differing entry ("lights[0]", "materials[1]", "sky.zenith"),
-// in table order: what a program folded from `a` shows wrong for `b`.
+// The folded values that differ between a and b, in table order: what a
+// program folded from `a` shows wrong for `b`. One name per value as the
+// shader holds it: "materials[1].shininess" (the file's key), a light by
+// GLSL slot ("lights[0].position" or ".direction", ".color" for colour and
+// intensity, ".size", ".attenuation"), "sky.zenith"; a whole entry
+// ("lights[1]") when the tables' lengths or a light's kind differ.
 std::vector<std::string> folded_differences(const Scene& a, const Scene& b);
+
+// Light i's live name for GLSL slot "pos", "color", "size" or "atten".
+std::string live_light_name(const Light& light, size_t i, const std::string& slot);
+// The uniform a live value is read from: "materials[1].color" ->
+// uLive_materials_1_color, "lights[0].position" -> uLive_lights_0_pos (by
+// slot: _pos, _color, _size, _atten), "sky.horizon" -> uSkyHorizon.
+std::string live_uniform_name(const std::string& name);
 
 // The program cache's key: 64-bit FNV-1a over the vertex source, then the
 // fragment source. Equal sources give equal keys in every process.
