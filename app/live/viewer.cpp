@@ -78,12 +78,19 @@ struct PendingReload {
   long frames_during_compile = 0;  // frames drawn with the old program while the worker compiled
 };
 
-// A reload whose programs the worker is compiling; the last good ones draw meanwhile.
+// What a build is for, which decides its log line: a file changed (a
+// numbered reload), a toggle, preset or debug view (rebuild), or a panel
+// value folded or made live (values).
+enum class BuildKind { reload, rebuild, values };
+
+// A build whose programs the worker is compiling; the last good ones draw meanwhile.
 struct Compiling {
   bool active = false;
-  int number = 0;
+  BuildKind kind = BuildKind::reload;
+  int number = 0;  // a reload's number (frame_N.png); the others have none
   double t_event = 0.0;
   long frame_at_event = 0, iteration_at_event = 0, frames_at_submit = 0;
+  long settled_at_submit = 0;  // Viewer::settled_ when it started
   Session::PreparedReload plan;
 };
 
@@ -96,10 +103,13 @@ class Viewer {
  private:
   // wait: block until the programs are built (the first build: nothing to show before it).
   void reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event, bool wait = false);
+  void build(Compiling c, bool wait);
   void adopt_compiled(bool wait = false);
+  void finish_build(const Compiling& c, const ReloadResult& r, double warm_ms);
   void finish_reload(const Compiling& c, const ReloadResult& r, double warm_ms);
   void report_failure(const ReloadResult& r);
   void rebuild_values(std::vector<std::string> live);
+  void start_rebuild(BuildKind kind);
   void poll_files();
   void after_frame();
   void serve_requests();
@@ -116,12 +126,16 @@ class Viewer {
   GLFWwindow* window_ = nullptr;
   FrameDrawer* drawer_ = nullptr;
   long frames_ = 0, iterations_ = 0;
-  int reloads_ = 0;
+  // Frames drawn with no build in flight: --drag and --shot-frame count
+  // these, so a script does not depend on how long a compile takes.
+  long settled_ = 0;
+  int reloads_ = 0, jobs_ = 0;
   PendingReload pending_;
   LiveValues live_;     // what the program folds, and when a panel edit rebuilds it
   ScriptedDrag drag_;   // --drag
   std::unique_ptr<CompileWorker> worker_;  // null: compile on this thread (no shared context)
   Compiling compiling_;
+  int compiling_job_ = 0;  // its worker job id
   Recorder recorder_;
   AudioOut audio_;
   const AudioClip* audio_clip_ = nullptr;  // what audio_ was opened for
@@ -162,36 +176,63 @@ void Viewer::watch_bounds(double now) {
 }
 
 void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event, bool wait) {
-  Compiling c{true, reloads_++, t_event, frame_at_event, iteration_at_event, frames_, session_.prepare(from_disk)};
-  live_.built(session_.scene(), session_.live());
-  if (compiling_.active)  // only the newest save is adopted; the worker drops the older job
-    log_.line("reload superseded " + std::to_string(compiling_.number) + " by " + std::to_string(c.number));
-  compiling_.active = false;
+  Compiling c{true, BuildKind::reload, reloads_++, t_event, frame_at_event, iteration_at_event, frames_, settled_,
+              session_.prepare(from_disk)};
   if (c.plan.result.camera_changed) s_.camera = s_.scene_camera = session_.scene().camera;
+  build(std::move(c), wait);
+}
+
+// Every build goes through the worker: a reload, a toggle's rebuild and a
+// panel value's. The newest replaces one in flight (the worker drops it).
+void Viewer::build(Compiling c, bool wait) {
+  live_.built(session_.scene(), session_.live());
+  if (compiling_.active && c.kind == BuildKind::reload)  // only the newest save is adopted
+    log_.line(compiling_.kind == BuildKind::reload
+                  ? "reload superseded " + std::to_string(compiling_.number) + " by " + std::to_string(c.number)
+                  : "reload supersedes a rebuild");
+  compiling_.active = false;
   // New includes are watched from now on, removed ones dropped.
   watcher_.watch(session_.watched_files());
   int passes = 0;
   std::vector<ShaderSource> sources = session_.to_compile(c.plan, &passes);
   if (!worker_ || sources.empty()) {  // nothing to compile, or no worker: in line
     const ReloadResult r = session_.adopt(std::move(c.plan), {}, nullptr, 0.0);
-    return finish_reload(c, r, 0.0);
+    return finish_build(c, r, 0.0);
   }
-  worker_->submit(CompileJob{c.number, std::move(sources), passes, !c.plan.fused});
-  log_.line("reload compiling " + std::to_string(c.number));
+  worker_->submit(CompileJob{++jobs_, std::move(sources), passes, !c.plan.fused});
+  if (c.kind == BuildKind::reload) log_.line("reload compiling " + std::to_string(c.number));
   compiling_ = std::move(c);
+  compiling_job_ = jobs_;
   if (wait) adopt_compiled(true);
 }
 
-// Each loop iteration: the worker's result, when it is the newest reload's.
+// Each loop iteration: the worker's result, when it is the newest build's.
 void Viewer::adopt_compiled(bool wait) {
   if (!compiling_.active) return;
   std::optional<CompileResult> got;
-  if (wait) got = worker_->wait(compiling_.number);
+  if (wait) got = worker_->wait(compiling_job_);
   else got = worker_->poll();
-  if (!got || got->id != compiling_.number) return;
+  if (!got || got->id != compiling_job_) return;
   compiling_.active = false;
   const ReloadResult r = session_.adopt(std::move(compiling_.plan), got->programs, got->error, got->gl_ms);
-  finish_reload(compiling_, r, got->warm_ms);
+  finish_build(compiling_, r, got->warm_ms);
+}
+
+void Viewer::finish_build(const Compiling& c, const ReloadResult& r, double warm_ms) {
+  if (c.kind == BuildKind::reload) return finish_reload(c, r, warm_ms);
+  const std::string during = " frames_during_compile=" + std::to_string(frames_ - c.frames_at_submit);
+  const std::string ms = " compile_ms=" + fmt("%.1f", r.compile_ms) + (r.cached ? " cached" : "");
+  if (c.kind == BuildKind::rebuild) {
+    log_.line(std::string("rebuild ") + (r.ok ? "ok" : "failed") + " debug_view=" +
+              std::to_string(session_.compiled_debug_view()) + ms + during + (r.ok ? "" : " -- " + r.error));
+  } else {
+    const PassGraph* g = session_.graph();
+    log_.line(std::string("values ") + (r.ok ? "ok" : "failed") + " live=" + live_names(session_.live()) +
+              " uniforms=" + (g ? uniform_tables(g->pass(g->size() - 1).source.text) : "none") +
+              " fused=" + (session_.fused() ? "1" : "0") + " frame=" + std::to_string(c.settled_at_submit) + ms +
+              during + (r.ok ? "" : " -- " + r.error));
+  }
+  if (!r.ok) report_failure(r);
 }
 
 void Viewer::finish_reload(const Compiling& c, const ReloadResult& r, double warm_ms) {
@@ -250,13 +291,7 @@ void Viewer::poll_files() {
     // changes what the specialized shader needs: same files, new defines.
     s_.want_reassemble = false;
     session_.debug_view = s_.debug_view;
-    const ReloadResult r = session_.reload(false);
-    live_.built(session_.scene(), session_.live());
-    log_.line(std::string("rebuild ") + (r.ok ? "ok" : "failed") + " debug_view=" +
-              std::to_string(session_.compiled_debug_view()) + " compile_ms=" + fmt("%.1f", r.compile_ms) +
-              (r.cached ? " cached" : "") +
-              (r.ok ? "" : " -- " + r.error));
-    if (!r.ok) report_failure(r);
+    start_rebuild(BuildKind::rebuild);
   } else if (std::optional<std::vector<std::string>> live = live_.rebuild(session_.scene(), s_.panel_dragging)) {
     rebuild_values(std::move(*live));
   } else if (session_.graph() && session_.error().empty() && session_.fuse_wanted() != session_.fused()) {
@@ -269,15 +304,13 @@ void Viewer::poll_files() {
 // it is built the last program draws, at the values it was built with.
 void Viewer::rebuild_values(std::vector<std::string> live) {
   session_.set_live(std::move(live));
-  const ReloadResult r = session_.reload(false);
-  live_.built(session_.scene(), session_.live());
-  const PassGraph* g = session_.graph();
-  log_.line(std::string("values ") + (r.ok ? "ok" : "failed") + " live=" + live_names(session_.live()) +
-            " uniforms=" + (g ? uniform_tables(g->pass(g->size() - 1).source.text) : "none") +
-            " fused=" + (session_.fused() ? "1" : "0") +
-            " frame=" + std::to_string(frames_) + " compile_ms=" + fmt("%.1f", r.compile_ms) +
-            (r.cached ? " cached" : "") + (r.ok ? "" : " -- " + r.error));
-  if (!r.ok) report_failure(r);
+  start_rebuild(BuildKind::values);
+}
+
+// The same files with new defines or live values, compiled like a reload.
+void Viewer::start_rebuild(BuildKind kind) {
+  const double now = seconds_now();
+  build(Compiling{true, kind, -1, now, frames_, iterations_, frames_, settled_, session_.prepare(false)}, false);
 }
 
 // Runs after the swap of every frame: the reload line (with its latency in
@@ -463,10 +496,11 @@ int Viewer::run() {
     audio_.update(s_.time, s_.paused || recorder_.active() || s_.speed != 1.0);  // sound at 1x only
     s_.recording_frame = recorder_.active() ? recorder_.frame() : -1;
 
-    const bool window_shot = s_.want_window_shot || frames_ + 1 == o_.shot_frame;
+    const bool window_shot = s_.want_window_shot || (!compiling_.active && settled_ + 1 == o_.shot_frame);
     s_.want_window_shot = false;
     const double t_draw = seconds_now();
-    const bool scripted_drag = drag_.apply(session_.scene(), frames_);
+    const bool settled = !compiling_.active;  // this frame counts for --drag and --shot-frame
+    const bool scripted_drag = drag_.apply(session_.scene(), settled_);
     const bool drawn = drawer.draw(frames_, dt, [&] {
       if (s_.show_panel) draw_panel(s_, session_, ctx->info());
       draw_overlay(s_, session_);
@@ -493,7 +527,7 @@ int Viewer::run() {
       const int h = o_.shot_height > 0 ? o_.shot_height : drawer.render_height();
       const std::string stopped = recorder_.frame(drawer, w, h, log_);
       if (!stopped.empty()) s_.say(stopped, 6.0);
-      if (frames_ == o_.shot_frame) s_.want_shot = true;
+      if (settled && ++settled_ == o_.shot_frame) s_.want_shot = true;
     }
     serve_requests();
     if (t1 - t_stats >= 1.0) {

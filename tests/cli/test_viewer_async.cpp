@@ -21,13 +21,13 @@ namespace fs = std::filesystem;
 // branch no ray takes (p.y > 1e6), so the image stays the same while the
 // driver's compile and JIT take seconds on llvmpipe. Its constant differs
 // per run, so Mesa's disk shader cache never has it.
-std::string map_glsl(const std::string& radius, bool heavy, const std::string& tail = "") {
+std::string map_glsl(const std::string& radius, bool heavy, const std::string& tail = "", int lines = 60) {
   static const std::string salt = std::to_string(
       (std::chrono::steady_clock::now().time_since_epoch().count() + getpid()) % 1000003);
   std::string s;
   if (heavy) {
     s += "float heavy(vec3 p) {\n  float a = " + salt + ".0;\n";
-    for (int i = 0; i < 60; ++i)
+    for (int i = 0; i < lines; ++i)
       s += "  p = sin(p * " + std::to_string(1.0 + 0.01 * i) + " + p.yzx); a += p.x * p.z;\n";
     s += "  return a;\n}\n";
   }
@@ -120,6 +120,40 @@ TEST_F(AsyncReload, ABrokenShaderKeepsTheLastGoodFrame) {
   ASSERT_EQ(wait_for_line(log(), "^reload (ok|failed) 2 ", 90).rfind("reload ok 2 ", 0), 0u) << read_file(log());
   ASSERT_FALSE(wait_for_line(log(), "^capture 2 ", 10).empty());
   EXPECT_LE(max_abs_diff(capture(2), render(fixed)), 1.0 / 255.0);
+}
+
+// A panel value's rebuilds (live, then folded again) compile on the worker
+// too: frames keep coming with the last program while the heavy map
+// compiles, and the shot after the drag is render of the final value.
+// --drag and --shot-frame count settled frames, so this is deterministic.
+TEST(AsyncRebuild, ADraggedValueCompilesOnTheWorker) {
+  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+  TempDir dir;
+  write_file(dir / "seed.toml", kBallScene);
+  write_file(dir / "seed.glsl", map_glsl("1.0", true, "", 20));
+  const fs::path log = dir / "log.txt";
+  const std::string server = std::to_string(100 + (getpid() + 5123) % 20000);
+  BackgroundProcess proc({"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+                          (dir / "seed.toml").string(), "--size", "160x90", "--paused", "--no-panel", "--log",
+                          log.string(), "--shot-dir", (dir / "shots").string(), "--shot-frame", "20", "--drag",
+                          "materials[1].color=0.1,0.3,0.9@3..8", "--exit-after", "150"},
+                         dir / "out.txt", dir / "err.txt");
+  ASSERT_TRUE(proc.started());
+  ASSERT_FALSE(wait_for_line(log, "^screenshot ", 140).empty()) << read_file(log) << read_file(dir / "err.txt");
+  std::vector<std::string> values;
+  for (const std::string& l : file_lines(log))
+    if (l.rfind("values ", 0) == 0) values.push_back(l);
+  ASSERT_EQ(values.size(), 2u) << read_file(log);
+  EXPECT_EQ(values[0].rfind("values ok live=materials[1].color ", 0), 0u) << values[0];
+  EXPECT_EQ(values[1].rfind("values ok live=none ", 0), 0u) << values[1];
+  for (const std::string& v : values) EXPECT_GT(field(v, "frames_during_compile"), 0) << v;
+  TempDir r;
+  write_file(r / "seed.toml", kBallScene);
+  write_file(r / "seed.glsl", map_glsl("1.0", true, "", 20));
+  const RunResult run = run_marchstudio({"render", (r / "seed.toml").string(), "--size", "160x90", "--set",
+                                         "materials.ball.color=[0.1,0.3,0.9]", "-o", (r / "out.png").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_LE(max_abs_diff(read_image(dir / "shots/seed_1.png"), read_image(r / "out.png")), 1.0 / 255.0);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // The viewer compiles what `render` compiles (issue 17 item 5): lights,
 // materials and sky folded into constants; a scripted panel drag (--drag)
-// keeps the dragged value's table as uniforms until the drag ends, then
-// folds the final value. Under Xvfb; images against `render` within 1/255,
+// keeps the dragged value (only it) a uniform until the drag ends, then
+// folds the final value; the builds compile on the worker. Under Xvfb; images against `render` within 1/255,
 // what is a uniform read from the assembled text (the `values` log line).
 #include <gtest/gtest.h>
 
@@ -64,7 +64,7 @@ class FoldedViewer : public ::testing::Test {
   std::unique_ptr<BackgroundProcess> proc;
 };
 
-// The ball's colour dragged over frames 3..8: live (its table a uniform)
+// The ball's colour dragged over frames 3..8: live (its own uniform)
 // from the first frame after the drag starts, folded again after it ends;
 // the shot after the drag is render of the edited scene, the first frame
 // render of the file.
@@ -73,7 +73,9 @@ TEST_F(FoldedViewer, ADragIsLiveThenFoldedAtItsFinalValue) {
   ASSERT_FALSE(wait_for_line(log(), "^screenshot ", 60).empty()) << read_file(log()) << read_file(dir / "err.txt");
   const std::vector<std::string> v = values_lines();
   ASSERT_EQ(v.size(), 2u) << read_file(log());
-  EXPECT_EQ(v[0].rfind("values ok live=materials[1] uniforms=materials fused=1 frame=", 0), 0u) << v[0];
+  // Only the dragged value is a uniform: the material table stays folded.
+  EXPECT_EQ(v[0].rfind("values ok live=materials[1].color uniforms=materials[1].color fused=1 frame=", 0), 0u)
+      << v[0];
   // Live right after the drag's first step, folded again as many frames
   // later as the drag lasts (frame = frames drawn before the rebuild).
   EXPECT_GE(field(v[0], "frame"), 4) << v[0];
@@ -100,13 +102,48 @@ TEST_F(FoldedViewer, MidDragTheLiveProgramShowsTheCurrentValue) {
   ASSERT_FALSE(wait_for_line(log(), "^screenshot ", 60).empty()) << read_file(log()) << read_file(dir / "err.txt");
   const std::vector<std::string> v = values_lines();
   ASSERT_GE(v.size(), 1u) << read_file(log());
-  EXPECT_EQ(v[0].rfind("values ok live=materials[1] uniforms=materials ", 0), 0u) << v[0];
+  EXPECT_EQ(v[0].rfind("values ok live=materials[1].color uniforms=materials[1].color ", 0), 0u) << v[0];
   const Image shot = read_image(dir / "shots/seed_1.png");
   // 0.85 + (0.1 - 0.85) * 0.4, 0.1 + (0.3 - 0.1) * 0.4, 0.06 + (0.9 - 0.06) * 0.4
   const Image mid = render({"--set", "materials.ball.color=[0.55,0.18,0.396]"});
   EXPECT_LE(max_abs_diff(shot, mid), 1.0 / 255.0) << "mid-drag the frame is not render of the dragged value";
   EXPECT_GT(mean_abs_diff(shot, render({})), 1e-3) << "mid-drag the frame still shows the file's value";
 }
+
+// Each kind of folded value, dragged: only that value is live (its own
+// uniform, the log's uniforms= names it), and the shot mid-drag (frame 6
+// of the drag over 3..8: 2/5 of the way) is render of the value there.
+struct DragCase {
+  const char* name;   // the test's name
+  const char* drag;   // --drag TARGET=V@3..8
+  const char* live;   // the values line's live= and uniforms=
+  const char* set;    // render --set of the value 2/5 of the way
+};
+void PrintTo(const DragCase& c, std::ostream* os) { *os << c.drag; }
+class FoldedDrag : public FoldedViewer, public ::testing::WithParamInterface<DragCase> {};
+
+TEST_P(FoldedDrag, OnlyTheDraggedValueIsLiveAndShowsAsRender) {
+  const DragCase& c = GetParam();
+  write_file(dir / "seed.toml", kScene + "[sky]\nzenith = [0.2, 0.4, 0.8]\n");
+  start({"--drag", std::string(c.drag) + "@3..8", "--shot-frame", "6"});
+  ASSERT_FALSE(wait_for_line(log(), "^screenshot ", 60).empty()) << read_file(log()) << read_file(dir / "err.txt");
+  const std::vector<std::string> v = values_lines();
+  ASSERT_GE(v.size(), 1u) << read_file(log());
+  const std::string live = c.live;
+  EXPECT_EQ(v[0].rfind("values ok live=" + live + " uniforms=" + live + " ", 0), 0u) << v[0];
+  const Image shot = read_image(dir / "shots/seed_1.png");
+  EXPECT_LE(max_abs_diff(shot, render({"--set", c.set})), 1.0 / 255.0) << "mid-drag the frame is not render of " << c.set;
+  EXPECT_GT(mean_abs_diff(shot, render({})), 1e-4) << "the drag changed nothing";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Values, FoldedDrag,
+    ::testing::Values(
+        DragCase{"LightPosition", "lights[0].position=-4,5,-1.5", "lights[0].position", "lights[0].position=[0.8,5,-1.5]"},
+        DragCase{"LightIntensity", "lights[0].intensity=4", "lights[0].color", "lights[0].intensity=2.8"},
+        DragCase{"MaterialSpecular", "materials[1].specular=0", "materials[1].specular", "materials.ball.specular=0.36"},
+        DragCase{"SkyZenith", "sky.zenith=0.7,0.4,0.3", "sky.zenith", "sky.zenith=[0.4,0.4,0.6]"}),
+    [](const ::testing::TestParamInfo<DragCase>& i) { return std::string(i.param.name); });
 
 // Accumulating (or in a debug view) the frame is the accumulating pass and
 // post; turning accumulation off (--accumulate 1) gives the one-pass frame.
