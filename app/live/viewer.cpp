@@ -1,4 +1,5 @@
 #include "live/viewer.h"
+#include "live/viewer_app.h"
 
 #include <algorithm>
 #include <chrono>
@@ -37,8 +38,6 @@
 namespace ms::live {
 namespace fs = std::filesystem;
 
-namespace {
-
 double seconds_now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
@@ -48,6 +47,8 @@ std::string fmt(const char* f, double v) {
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
 }
+
+namespace {
 
 // Dear ImGui's context and backends, torn down before the window goes.
 struct ImGuiScope {
@@ -66,87 +67,7 @@ struct ImGuiScope {
   }
 };
 
-// A reload in flight: seen at `t_event`, logged once its first frame is drawn.
-struct PendingReload {
-  bool active = false;
-  int number = 0;
-  double t_event = 0.0;
-  long frame_at_event = 0, iteration_at_event = 0;
-  ReloadResult result;
-  double first_draw_ms = 0.0;  // the first frame with the new program, waited for: llvmpipe JITs it here
-  double warm_ms = 0.0;        // the worker's warm-up draws (live/compile_worker.h)
-  long frames_during_compile = 0;  // frames drawn with the old program while the worker compiled
-};
-
-// What a build is for, which decides its log line: a file changed (a
-// numbered reload), a toggle, preset or debug view (rebuild), or a panel
-// value folded or made live (values).
-enum class BuildKind { reload, rebuild, values };
-
-// A build whose programs the worker is compiling; the last good ones draw meanwhile.
-struct Compiling {
-  bool active = false;
-  BuildKind kind = BuildKind::reload;
-  int number = 0;  // a reload's number (frame_N.png); the others have none
-  double t_event = 0.0;
-  long frame_at_event = 0, iteration_at_event = 0, frames_at_submit = 0;
-  long settled_at_submit = 0;  // Viewer::settled_ when it started
-  Session::PreparedReload plan;
-};
-
-class Viewer {
- public:
-  explicit Viewer(const ViewerOptions& o)
-      : o_(o), log_(o.log_file), session_(SessionOptions{o.load, o.assemble}), drag_(o.drag), recorder_(o.record) {}
-  int run();
-
- private:
-  // wait: block until the programs are built (the first build: nothing to show before it).
-  void reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event, bool wait = false);
-  void build(Compiling c, bool wait);
-  void adopt_compiled(bool wait = false);
-  void finish_build(const Compiling& c, const ReloadResult& r, double warm_ms);
-  void finish_reload(const Compiling& c, const ReloadResult& r, double warm_ms);
-  void report_failure(const ReloadResult& r);
-  void rebuild_values(std::vector<std::string> live);
-  void start_rebuild(BuildKind kind);
-  void poll_files();
-  void after_frame();
-  void serve_requests();
-  void screenshot();
-  void write_camera();
-  void write_values();
-  void watch_bounds(double now);
-
-  const ViewerOptions& o_;
-  LiveLog log_;
-  Session session_;
-  ViewState s_;
-  Watcher watcher_;
-  GLFWwindow* window_ = nullptr;
-  FrameDrawer* drawer_ = nullptr;
-  long frames_ = 0, iterations_ = 0;
-  // Frames drawn with no build in flight: --drag and --shot-frame count
-  // these, so a script does not depend on how long a compile takes.
-  long settled_ = 0;
-  int reloads_ = 0, jobs_ = 0;
-  PendingReload pending_;
-  LiveValues live_;     // what the program folds, and when a panel edit rebuilds it
-  ScriptedDrag drag_;   // --drag
-  std::unique_ptr<CompileWorker> worker_;  // null: compile on this thread (no shared context)
-  Compiling compiling_;
-  int compiling_job_ = 0;  // its worker job id
-  Recorder recorder_;
-  AudioOut audio_;
-  const AudioClip* audio_clip_ = nullptr;  // what audio_ was opened for
-  // The bounds check (render/bounds_check.h): after each reload, when a
-  // slider moves, and once a second for animation; reported when it changes.
-  ProgramCache bounds_cache_{2};
-  int bounds_generation_ = -1;
-  std::vector<SceneParam> bounds_params_;
-  double t_bounds_ = 0.0;
-  std::string bounds_warning_;
-};
+}  // namespace
 
 void Viewer::watch_bounds(double now) {
   if (!session_.main_program() || session_.shadertoy()) return;
@@ -173,144 +94,6 @@ void Viewer::watch_bounds(double now) {
   log_.line(w.empty() ? "bounds ok" : "bounds " + w);
   if (w.empty()) return;
   std::fprintf(stderr, "marchstudio: %s\n", w.c_str());  // the overlay shows it while it holds
-}
-
-void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event, bool wait) {
-  Compiling c{true, BuildKind::reload, reloads_++, t_event, frame_at_event, iteration_at_event, frames_, settled_,
-              session_.prepare(from_disk)};
-  if (c.plan.result.camera_changed) s_.camera = s_.scene_camera = session_.scene().camera;
-  build(std::move(c), wait);
-}
-
-// Every build goes through the worker: a reload, a toggle's rebuild and a
-// panel value's. The newest replaces one in flight (the worker drops it).
-void Viewer::build(Compiling c, bool wait) {
-  live_.built(session_.scene(), session_.live());
-  if (compiling_.active && c.kind == BuildKind::reload)  // only the newest save is adopted
-    log_.line(compiling_.kind == BuildKind::reload
-                  ? "reload superseded " + std::to_string(compiling_.number) + " by " + std::to_string(c.number)
-                  : "reload supersedes a rebuild");
-  compiling_.active = false;
-  // New includes are watched from now on, removed ones dropped.
-  watcher_.watch(session_.watched_files());
-  int passes = 0;
-  std::vector<ShaderSource> sources = session_.to_compile(c.plan, &passes);
-  if (!worker_ || sources.empty()) {  // nothing to compile, or no worker: in line
-    const ReloadResult r = session_.adopt(std::move(c.plan), {}, nullptr, 0.0);
-    return finish_build(c, r, 0.0);
-  }
-  worker_->submit(CompileJob{++jobs_, std::move(sources), passes, !c.plan.fused});
-  if (c.kind == BuildKind::reload) log_.line("reload compiling " + std::to_string(c.number));
-  compiling_ = std::move(c);
-  compiling_job_ = jobs_;
-  if (wait) adopt_compiled(true);
-}
-
-// Each loop iteration: the worker's result, when it is the newest build's.
-void Viewer::adopt_compiled(bool wait) {
-  if (!compiling_.active) return;
-  std::optional<CompileResult> got;
-  if (wait) got = worker_->wait(compiling_job_);
-  else got = worker_->poll();
-  if (!got || got->id != compiling_job_) return;
-  compiling_.active = false;
-  const ReloadResult r = session_.adopt(std::move(compiling_.plan), got->programs, got->error, got->gl_ms);
-  finish_build(compiling_, r, got->warm_ms);
-}
-
-void Viewer::finish_build(const Compiling& c, const ReloadResult& r, double warm_ms) {
-  if (c.kind == BuildKind::reload) return finish_reload(c, r, warm_ms);
-  const std::string during = " frames_during_compile=" + std::to_string(frames_ - c.frames_at_submit);
-  const std::string ms = " compile_ms=" + fmt("%.1f", r.compile_ms) + (r.cached ? " cached" : "");
-  if (c.kind == BuildKind::rebuild) {
-    log_.line(std::string("rebuild ") + (r.ok ? "ok" : "failed") + " debug_view=" +
-              std::to_string(session_.compiled_debug_view()) + ms + during + (r.ok ? "" : " -- " + r.error));
-  } else {
-    const PassGraph* g = session_.graph();
-    log_.line(std::string("values ") + (r.ok ? "ok" : "failed") + " live=" + live_names(session_.live()) +
-              " uniforms=" + (g ? uniform_tables(g->pass(g->size() - 1).source.text) : "none") +
-              " fused=" + (session_.fused() ? "1" : "0") + " frame=" + std::to_string(c.settled_at_submit) + ms +
-              during + (r.ok ? "" : " -- " + r.error));
-  }
-  if (!r.ok) report_failure(r);
-}
-
-void Viewer::finish_reload(const Compiling& c, const ReloadResult& r, double warm_ms) {
-  pending_ = {true, c.number, c.t_event, c.frame_at_event, c.iteration_at_event, r, 0.0, warm_ms,
-              frames_ - c.frames_at_submit};
-  // While broken, any source-like file next to the watched ones counts.
-  watcher_.watch(session_.watched_files());
-  watcher_.set_match_any(!r.ok);
-  if (!r.ok) report_failure(r);
-  if (r.ok)  // docs/viewer.md#folding, #compute
-    log_.line(std::string("program fused=") + (session_.fused() ? "1" : "0") + " dispatch=" + drawer_->dispatch());
-  if (r.ok && session_.audio().get() != audio_clip_) {  // a music input came, went or changed
-    audio_clip_ = session_.audio().get();
-    if (!audio_clip_) {
-      audio_.close();
-    } else {
-      const std::string why = audio_.open(o_.audio_device, session_.audio());
-      log_.line(why.empty() ? "audio playing " + o_.audio_device : "audio silent -- " + why);
-    }
-  }
-}
-
-// The one-line error on stderr, and the compiler's whole log after it, on
-// stderr and as compile_log lines in the event log (the panel shows it too).
-void Viewer::report_failure(const ReloadResult& r) {
-  std::fprintf(stderr, "marchstudio: %s\n", r.error.c_str());
-  size_t at = 0;
-  while (at < r.log.size()) {
-    size_t end = r.log.find('\n', at);
-    if (end == std::string::npos) end = r.log.size();
-    const std::string line = r.log.substr(at, end - at);
-    if (!line.empty()) {
-      std::fprintf(stderr, "  %s\n", line.c_str());
-      if (!log_.to_stderr()) log_.line("compile_log " + line);
-    }
-    at = end + 1;
-  }
-}
-
-void Viewer::poll_files() {
-  session_.set_accumulate(s_.accumulate);  // O, or accumulation turned off: the one-pass frame or not
-  std::vector<fs::path> changed = watcher_.poll();
-  if (!changed.empty()) {
-    const double t_event = seconds_now();
-    watcher_.settle(changed, o_.debounce_ms, 100);
-    const fs::path scene_file = fs::absolute(session_.scene().file).lexically_normal();
-    const bool toml = std::find(changed.begin(), changed.end(), scene_file) != changed.end();
-    reload(toml, t_event, frames_, iterations_);
-  } else if (s_.want_disk_reload) {
-    s_.want_disk_reload = false;
-    reload(true, seconds_now(), frames_, iterations_);
-  } else if (compiling_.active) {
-    return;  // a toggle's rebuild waits for the reload in flight (it would be adopted over)
-  } else if (s_.want_reassemble || s_.debug_view != session_.debug_view || session_.features_changed()) {
-    // A toggle, preset, quality value or debug view, or a panel edit that
-    // changes what the specialized shader needs: same files, new defines.
-    s_.want_reassemble = false;
-    session_.debug_view = s_.debug_view;
-    start_rebuild(BuildKind::rebuild);
-  } else if (std::optional<std::vector<std::string>> live = live_.rebuild(session_.scene(), s_.panel_dragging)) {
-    rebuild_values(std::move(*live));
-  } else if (session_.graph() && session_.error().empty() && session_.fuse_wanted() != session_.fused()) {
-    rebuild_values(session_.live());  // accumulation turned on or off
-  }
-}
-
-// A folded light, material or sky value was edited: rebuild with the
-// dragged ones live (uniforms), or all folded once the drag let go. Until
-// it is built the last program draws, at the values it was built with.
-void Viewer::rebuild_values(std::vector<std::string> live) {
-  session_.set_live(std::move(live));
-  start_rebuild(BuildKind::values);
-}
-
-// The same files with new defines or live values, compiled like a reload.
-void Viewer::start_rebuild(BuildKind kind) {
-  const double now = seconds_now();
-  build(Compiling{true, kind, -1, now, frames_, iterations_, frames_, settled_, session_.prepare(false)}, false);
 }
 
 // Runs after the swap of every frame: the reload line (with its latency in
@@ -546,8 +329,6 @@ int Viewer::run() {
   drawer_ = nullptr;
   return 0;
 }
-
-}  // namespace
 
 int run_viewer(const ViewerOptions& opts) {
   Viewer v(opts);
