@@ -21,6 +21,27 @@ void set1(const Program& p, const std::string& name, float v) { glUniform1f(p.lo
 
 float radians(float deg) { return deg * 3.14159265358979f / 180.0f; }
 
+// Each material value by its field of uMaterials[i] and by its key, which
+// names the uniform the viewer keeps it live in (uLive_materials_i_KEY,
+// shader/specialize.h live_uniform_name).
+struct MaterialValue {
+  const char* field;
+  const char* key;
+  glm::vec3 Material::*vec = nullptr;
+  float Material::*scalar = nullptr;
+};
+const MaterialValue kMaterialValues[] = {
+    {"color", "color", &Material::color},
+    {"ka", "ambient", nullptr, &Material::ambient},
+    {"kd", "diffuse", nullptr, &Material::diffuse},
+    {"ks", "specular", nullptr, &Material::specular},
+    {"shininess", "shininess", nullptr, &Material::shininess},
+    {"reflectivity", "reflectivity", nullptr, &Material::reflectivity},
+    {"color2", "color2", &Material::color2},
+    {"patternScale", "pattern_scale", nullptr, &Material::pattern_scale},
+    {"patternVelocity", "pattern_velocity", &Material::pattern_velocity},
+};
+
 }  // namespace
 
 void set_scene_uniforms(const Program& p, const Scene& s, int width, int height, float time, int frame) {
@@ -68,26 +89,17 @@ void set_scene_uniforms(const Program& p, const Scene& s, int width, int height,
   for (size_t i = 0; i < s.materials.size(); ++i) {
     const Material& m = s.materials[i];
     const std::string base = "uMaterials[" + std::to_string(i) + "].";
-    set3(p, base + "color", m.color);
-    set1(p, base + "ka", m.ambient);
-    set1(p, base + "kd", m.diffuse);
-    set1(p, base + "ks", m.specular);
-    set1(p, base + "shininess", m.shininess);
-    set1(p, base + "reflectivity", m.reflectivity);
-    glUniform1i(p.loc(base + "pattern"), m.pattern == Pattern::checker ? 1 : 0);
-    set3(p, base + "color2", m.color2);
-    set1(p, base + "patternScale", m.pattern_scale);
-    set3(p, base + "patternVelocity", m.pattern_velocity);
     const std::string live = "uLive_materials_" + std::to_string(i) + "_";
-    set3(p, live + "color", m.color);
-    set1(p, live + "ambient", m.ambient);
-    set1(p, live + "diffuse", m.diffuse);
-    set1(p, live + "specular", m.specular);
-    set1(p, live + "shininess", m.shininess);
-    set1(p, live + "reflectivity", m.reflectivity);
-    set3(p, live + "color2", m.color2);
-    set1(p, live + "pattern_scale", m.pattern_scale);
-    set3(p, live + "pattern_velocity", m.pattern_velocity);
+    glUniform1i(p.loc(base + "pattern"), m.pattern == Pattern::checker ? 1 : 0);
+    for (const MaterialValue& v : kMaterialValues) {
+      if (v.vec) {
+        set3(p, base + v.field, m.*v.vec);
+        set3(p, live + v.key, m.*v.vec);
+      } else {
+        set1(p, base + v.field, m.*v.scalar);
+        set1(p, live + v.key, m.*v.scalar);
+      }
+    }
   }
 }
 
