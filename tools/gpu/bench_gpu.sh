@@ -1,20 +1,28 @@
 #!/usr/bin/env bash
-# The GPU table for docs/speed-vs-error.md: `marchstudio bench --json` for
-# the textbook baseline and the fast / balanced / reference presets, every
-# shipped scene, at 1280x720 through EGL's device platform (the NVIDIA
-# driver), printed as one markdown table on stdout. Progress and warnings go
-# to stderr, so `tools/gpu/bench_gpu.sh > gpu.md` keeps only the table.
+# Fragment against compute (issue 18): `marchstudio bench --json` with
+# `--dispatch fragment` and `--dispatch compute` side by side, for the
+# textbook baseline and the fast / balanced / reference presets, every
+# shipped scene, at 1280x720, 1920x1080 and 3840x2160, through EGL's device
+# platform (the NVIDIA driver). One markdown table on stdout, a row per
+# scene, preset and size: each dispatch's GPU-timer median and p95 and its
+# wall median, and compute's speed-up. Progress and warnings go to stderr,
+# so `tools/gpu/bench_gpu.sh > gpu.md` keeps only the table.
 #
 # Usage: tools/gpu/bench_gpu.sh [path/to/marchstudio]
 #   The binary defaults to $MARCHSTUDIO, else build/marchstudio, else any
 #   build*/marchstudio in the repository (a carried build).
 # Environment:
 #   FRAMES (default 60) and WARMUP (default 10): bench's --frames / --warmup
-#   SIZE (default 1280x720)
+#   SIZES (default "1280x720 1920x1080 3840x2160"); SIZE=WxH, the old
+#     one-size form, still works when SIZES is unset
 #   SCENES (default: every scenes/*.toml), e.g. SCENES="seed stilllife"
+#   PRESETS (default "textbook fast balanced reference")
+#   DISPATCHES (default "fragment compute"); the speed-up column needs both
 #   ALLOW_SOFTWARE=1: run even when EGL gives a software renderer (llvmpipe)
-#   SWEEP_DIR=DIR: also run `marchstudio sweep` (quick grid, same size) per
+#   SWEEP_DIR=DIR: also run `marchstudio sweep` (quick grid, first size) per
 #     scene and leave its CSV, JSON and plot in DIR
+# A GPU-timer figure under 1 us a frame is printed as "-": llvmpipe answers
+# GL_TIME_ELAPSED with ~0 around a compute dispatch, so compare wall there.
 # Exit codes: 0 ok; 2 no binary or no scenes; 3 no GPU behind EGL (unless
 # ALLOW_SOFTWARE=1) or a bench run failed.
 set -euo pipefail
@@ -32,8 +40,9 @@ if [[ -z $bin || ! -x $bin ]]; then
 fi
 frames=${FRAMES:-60}
 warmup=${WARMUP:-10}
-size=${SIZE:-1280x720}
-presets=(textbook fast balanced reference)
+read -r -a sizes <<<"${SIZES:-${SIZE:-1280x720 1920x1080 3840x2160}}"
+read -r -a presets <<<"${PRESETS:-textbook fast balanced reference}"
+read -r -a dispatches <<<"${DISPATCHES:-fragment compute}"
 
 # Let glvnd pick the GPU's EGL vendor: undo what the llvmpipe scripts pin.
 unset __EGL_VENDOR_LIBRARY_FILENAMES LIBGL_ALWAYS_SOFTWARE GALLIUM_DRIVER || true
@@ -49,68 +58,103 @@ if (( ${#names[@]} == 0 )); then
   exit 2
 fi
 
-# One field of bench's JSON by JSON pointer (/frame_ms/gpu/median): jq if
-# there is one, else python3.
-field() {
-  local json=$1 pointer=$2
+# Fields of bench's JSON by JSON pointer (/frame_ms/gpu/median), one per
+# line: jq if there is one, else python3.
+fields() {
+  local file=$1; shift
   if command -v jq >/dev/null 2>&1; then
-    jq -r "getpath(\"$pointer\" | ltrimstr(\"/\") | split(\"/\"))" <<<"$json"
+    local p
+    for p in "$@"; do jq -r "getpath(\"$p\" | ltrimstr(\"/\") | split(\"/\"))" "$file"; done
   else
     python3 -c 'import json, sys
-v = json.loads(sys.stdin.read())
-for k in sys.argv[1].strip("/").split("/"):
-    v = v[k]
-print(v)' "$pointer" <<<"$json"
+d = json.load(open(sys.argv[1]))
+for p in sys.argv[2:]:
+    v = d
+    for k in p.strip("/").split("/"):
+        v = v[k]
+    print(v)' "$file" "$@"
   fi
 }
-fmt() { awk -v x="$1" -v f="$2" 'BEGIN { printf f, x }'; }
+fmt() { awk -v x="$1" 'BEGIN { printf "%.3f", x }'; }
+timer() { awk -v x="$1" 'BEGIN { if (x < 0.001) print "-"; else printf "%.3f", x }'; }
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-declare -A gpu
-rows=()
+declare -A fig
 renderer="" vendor="" version="" backend=""
-for name in "${names[@]}"; do
-  scene=$root/scenes/$name.toml
-  for preset in "${presets[@]}"; do
-    echo "bench_gpu.sh: $name $preset" >&2
-    if ! "$bin" bench "$scene" --preset "$preset" --size "$size" --frames "$frames" --warmup "$warmup" \
-        --backend egl --json >"$tmp/out.json" 2>"$tmp/err.txt"; then
-      echo "bench_gpu.sh: bench failed for $name $preset:" >&2
-      cat "$tmp/err.txt" >&2
-      exit 3
-    fi
-    json=$(<"$tmp/out.json")
-    if [[ -z $renderer ]]; then
-      renderer=$(field "$json" /machine/gl_renderer)
-      vendor=$(field "$json" /machine/gl_vendor)
-      version=$(field "$json" /machine/gl_version)
-      backend=$(field "$json" /machine/backend)
-      if [[ $renderer == *llvmpipe* || $renderer == *softpipe* || $backend != egl-device ]]; then
-        echo "bench_gpu.sh: EGL gave '$renderer' ($backend), not a GPU" >&2
-        [[ ${ALLOW_SOFTWARE:-0} == 1 ]] || exit 3
-      fi
-    fi
-    ms=$(field "$json" /frame_ms/gpu/median)
-    [[ $(field "$json" /frame_ms/gpu_timer) == true ]] || ms=$(field "$json" /frame_ms/wall/median)
-    gpu[$name.$preset]=$ms
-    rows+=("$name|$preset|$ms|$(field "$json" /frame_ms/gpu/p95)|$(field "$json" /frame_ms/wall/median)|$(field "$json" /cost/primary_steps/mean)|$(field "$json" /cost/step_cap_fraction)|$(field "$json" /cost/sdf_evals/mean)|$(field "$json" /startup_ms/compile_link)")
+start=$(date +%s)
+for size in "${sizes[@]}"; do
+  for name in "${names[@]}"; do
+    scene=$root/scenes/$name.toml
+    for preset in "${presets[@]}"; do
+      for d in "${dispatches[@]}"; do
+        echo "bench_gpu.sh: $size $name $preset $d ($(( $(date +%s) - start )) s)" >&2
+        if ! "$bin" bench "$scene" --preset "$preset" --size "$size" --frames "$frames" --warmup "$warmup" \
+            --dispatch "$d" --backend egl --json >"$tmp/out.json" 2>"$tmp/err.txt"; then
+          echo "bench_gpu.sh: bench failed for $size $name $preset $d:" >&2
+          cat "$tmp/err.txt" >&2
+          exit 3
+        fi
+        if [[ -z $renderer ]]; then
+          { read -r renderer; read -r vendor; read -r version; read -r backend; } < <(fields "$tmp/out.json" \
+            /machine/gl_renderer /machine/gl_vendor /machine/gl_version /machine/backend)
+          if [[ $renderer == *llvmpipe* || $renderer == *softpipe* || $backend != egl-device ]]; then
+            echo "bench_gpu.sh: EGL gave '$renderer' ($backend), not a GPU" >&2
+            [[ ${ALLOW_SOFTWARE:-0} == 1 ]] || exit 3
+          fi
+        fi
+        # gpu median, gpu p95, wall median, wall p95, steps, map() calls
+        fig[$size.$name.$preset.$d]=$(fields "$tmp/out.json" /frame_ms/gpu/median /frame_ms/gpu/p95 \
+          /frame_ms/wall/median /frame_ms/wall/p95 /cost/primary_steps/mean /cost/sdf_evals/mean | paste -sd' ')
+      done
+      # The dispatches trace the same pixels; differing counts mean a bug.
+      first=(${fig[$size.$name.$preset.${dispatches[0]}]})
+      for d in "${dispatches[@]}"; do
+        f=(${fig[$size.$name.$preset.$d]})
+        [[ ${f[4]} == "${first[4]}" ]] || echo "bench_gpu.sh: $name $preset $size: $d steps ${f[4]} != ${first[4]}" >&2
+      done
+    done
   done
-  if [[ -n ${SWEEP_DIR:-} ]]; then
+  if [[ -n ${SWEEP_DIR:-} && $size == "${sizes[0]}" ]]; then
     mkdir -p "$SWEEP_DIR"
-    echo "bench_gpu.sh: sweep $name" >&2
-    "$bin" sweep "$scene" --size "$size" --backend egl -q -o "$SWEEP_DIR" >"$SWEEP_DIR/$name.sweep.txt"
+    for name in "${names[@]}"; do
+      echo "bench_gpu.sh: sweep $name" >&2
+      "$bin" sweep "$root/scenes/$name.toml" --size "$size" --backend egl -q -o "$SWEEP_DIR" >"$SWEEP_DIR/$name.sweep.txt"
+    done
   fi
 done
+echo "bench_gpu.sh: done in $(( $(date +%s) - start )) s" >&2
 
-echo "GPU: \`$renderer\` ($vendor), $version, backend \`$backend\`; $size, spp 1, median of $frames frames after $warmup warm-up; $(date -u +%Y-%m-%d)."
+echo "GL: \`$renderer\` ($vendor), $version, backend \`$backend\`; spp 1, median and p95 (nearest rank) of $frames frames after $warmup warm-up; $(date -u +%Y-%m-%d)."
 echo
-echo "Command: \`tools/gpu/bench_gpu.sh\` (each row: \`marchstudio bench scenes/SCENE.toml --preset PRESET --size $size --frames $frames --warmup $warmup --backend egl --json\`)"
+echo "Command: \`FRAMES=$frames WARMUP=$warmup SIZES=\"${sizes[*]}\" PRESETS=\"${presets[*]}\" tools/gpu/bench_gpu.sh\` (each cell: \`marchstudio bench scenes/SCENE.toml --preset PRESET --size WxH --frames $frames --warmup $warmup --dispatch D --backend egl --json\`)"
 echo
-echo "| scene | preset | GPU ms median | p95 | wall ms median | speed-up vs textbook | primary steps / px | step-cap pixels | map() calls / px | compile+link ms |"
-echo "|---|---|---|---|---|---|---|---|---|---|"
-for row in "${rows[@]}"; do
-  IFS='|' read -r name preset ms p95 wall steps cap evals compile <<<"$row"
-  speedup=$(awk -v a="${gpu[$name.textbook]}" -v b="$ms" 'BEGIN { if (b > 0) printf "%.2fx", a / b; else print "-" }')
-  echo "| $name | $preset | $(fmt "$ms" %.3f) | $(fmt "$p95" %.3f) | $(fmt "$wall" %.3f) | $speedup | $(fmt "$steps" %.2f) | $(awk -v x="$cap" 'BEGIN { printf "%.3f%%", 100 * x }') | $(fmt "$evals" %.1f) | $(fmt "$compile" %.0f) |"
+head="| scene | preset | size |" rule="|---|---|---|"
+for d in "${dispatches[@]}"; do
+  head+=" $d GPU ms median | p95 | wall ms median | p95 |"; rule+="---|---|---|---|"
+done
+both=0
+if [[ " ${dispatches[*]} " == *" fragment "* && " ${dispatches[*]} " == *" compute "* ]]; then
+  both=1; head+=" compute speed-up (GPU; wall) |"; rule+="---|"
+fi
+echo "$head primary steps / px | map() calls / px |"
+echo "$rule---|---|"
+for size in "${sizes[@]}"; do
+  for name in "${names[@]}"; do
+    for preset in "${presets[@]}"; do
+      row="| $name | $preset | $size |"
+      for d in "${dispatches[@]}"; do
+        f=(${fig[$size.$name.$preset.$d]})
+        row+=" $(timer "${f[0]}") | $(timer "${f[1]}") | $(fmt "${f[2]}") | $(fmt "${f[3]}") |"
+      done
+      if (( both )); then
+        fr=(${fig[$size.$name.$preset.fragment]}) co=(${fig[$size.$name.$preset.compute]})
+        row+=" $(awk -v a="${fr[0]}" -v b="${co[0]}" -v c="${fr[2]}" -v e="${co[2]}" 'BEGIN {
+          g = (a >= 0.001 && b >= 0.001) ? sprintf("%.2fx", a / b) : "-"
+          printf "%s; %.2fx", g, c / e }') |"
+      fi
+      f=(${fig[$size.$name.$preset.${dispatches[0]}]})
+      echo "$row $(awk -v x="${f[4]}" 'BEGIN { printf "%.2f", x }') | $(awk -v x="${f[5]}" 'BEGIN { printf "%.1f", x }') |"
+    done
+  done
 done
