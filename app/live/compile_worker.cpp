@@ -143,6 +143,10 @@ void CompileWorker::run() {
         }
       }
       r.warm_ms = ms_since(t_warm);
+      if (!given_up && !r.error && post && job.compute) {
+        if (newer_waiting()) continue;  // given up
+        compile_compute(job, *post, r);
+      }
       if (given_up) continue;  // a newer job is waiting: nobody wants this one
       {
         std::lock_guard<std::mutex> lock(m_);
@@ -150,10 +154,36 @@ void CompileWorker::run() {
       }
       cv_.notify_all();
     }
-  }  // the renderer's objects go while this context is current
+    compute_renderer_.reset();
+  }  // the renderers' objects go while this context is current
   glfwMakeContextCurrent(blend_window_);
   blend_renderer.reset();
   glfwMakeContextCurrent(nullptr);
+}
+
+void CompileWorker::compile_compute(const CompileJob& job, const Program& post, CompileResult& r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    r.compute = std::make_shared<const Program>(Program::Compute{}, *job.compute);
+  } catch (const Error& e) {
+    r.compute_error = format_error(e.info());  // ComputeTrace refuses with it, as for its own compile
+    return;
+  }
+  r.gl_ms += ms_since(t0);
+  const auto t_warm = std::chrono::steady_clock::now();
+  // The viewer's first frame after a build: one sample, stored (fused) or
+  // then the post pass. llvmpipe JITs the compute shader at this dispatch.
+  if (!compute_renderer_) compute_renderer_ = std::make_unique<ComputeFrameRenderer>(ctx_);
+  FrameParams fp;
+  fp.width = fp.height = 8;
+  fp.fused_post = !job.accumulates;
+  try {
+    compute_renderer_->draw(*r.compute, [](const Program&) {}, post, fp);
+  } catch (const Error&) {
+    // As the fragment warm-up: no inputs bound is no compile error.
+  }
+  glFinish();
+  r.warm_ms += ms_since(t_warm);
 }
 
 }  // namespace ms::live

@@ -6,7 +6,10 @@
 // first draw, and each context's first variant lands in Mesa's shader
 // cache, so the UI thread's first real draw of the same state loads it
 // instead of compiling (docs/viewer.md, "How a reload compiles").
-// Meanwhile the UI thread keeps drawing the last good programs.
+// Meanwhile the UI thread keeps drawing the last good programs. Under
+// --dispatch compute a job also carries the scene pass's compute source:
+// compiled and dispatched once, 8x8, through a ComputeFrameRenderer of the
+// worker's own (live/compute_trace.h takes the program).
 //
 //   CompileWorker worker(window, ctx);            // UI thread, after the window
 //   worker.submit({id, sources, passes});         // replaces a job not started
@@ -22,10 +25,12 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <thread>
 #include <vector>
 
 #include "gl/context.h"
+#include "render/compute_frame.h"
 #include "render/program.h"
 #include "shader/preprocess.h"
 
@@ -45,14 +50,22 @@ struct CompileJob {
   // that blended state too, in a second context, since each context hands
   // only its first variant of a program on through the disk shader cache.
   bool accumulates = false;
+  // The last pass as compute (compute_source()), when the viewer traces it
+  // with compute: compiled after the fragment programs, warmed up once.
+  std::optional<ShaderSource> compute;
 };
 
 struct CompileResult {
   int id = 0;
   std::vector<std::shared_ptr<const Program>> programs;  // one per source; empty when `error`
   std::exception_ptr error;                              // the first compile or link error (ms::Error)
-  double gl_ms = 0.0;    // compile and link
-  double warm_ms = 0.0;  // the warm-up draws, JIT included
+  double gl_ms = 0.0;    // compile and link (the compute program's included)
+  double warm_ms = 0.0;  // the warm-up draws and dispatch, JIT included
+  // The job's compute program; null when it had none, was given up or failed
+  // (then compute_error: format_error() of its ms::Error, and the frame is
+  // drawn with fragment, as when the UI thread's compile fails).
+  std::shared_ptr<const Program> compute;
+  std::string compute_error;
 };
 
 class CompileWorker {
@@ -71,10 +84,13 @@ class CompileWorker {
  private:
   void run();
   bool newer_waiting();  // a job came after the one in progress: give it up
+  // The job's compute program into r, dispatched once (`post`: the job's).
+  void compile_compute(const CompileJob& job, const Program& post, CompileResult& r);
 
   const Context& ctx_;
   GLFWwindow* window_ = nullptr;
   GLFWwindow* blend_window_ = nullptr;  // the second context, for the accumulating state
+  std::unique_ptr<ComputeFrameRenderer> compute_renderer_;  // window_'s, made at the first compute job
   std::mutex m_;
   std::condition_variable cv_;
   std::optional<CompileJob> queued_;

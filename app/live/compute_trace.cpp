@@ -4,38 +4,61 @@
 
 namespace ms::live {
 
-std::string ComputeTrace::update(PassGraph& graph, int generation, const Program& post,
-                                 const std::function<StillFrame()>& frame) {
+std::vector<std::string> ComputeTrace::update(PassGraph& graph, int generation, const Program& post,
+                                              const std::function<StillFrame()>& frame) {
   if (generation == generation_) return {};
   generation_ = generation;
   active_ = false;
+  std::optional<Offer> offer = std::move(offered_);
+  offered_.reset();
   if (opts_.dispatch == Dispatch::fragment) return {};
-  const auto refused = [](const Error& e) { return "dispatch fragment -- " + format_error(e.info()); };
+  const auto refused = [](const std::string& why) { return "dispatch fragment -- " + why; };
   ShaderSource src;
   try {
     src = compute_source(graph.pass(graph.size() - 1));
   } catch (const Error& e) {
-    return refused(e);  // no probe: fragment is the only choice for this program
+    return {refused(format_error(e.info()))};  // no probe: fragment is the only choice for this program
   }
-  std::string note;
+  std::vector<std::string> notes;
   if (opts_.dispatch == Dispatch::automatic && !chosen_) {
     chosen_ = opts_.choose ? opts_.choose(graph, post, frame(), ctx_) : Dispatch::fragment;
-    note = std::string("dispatch auto=") + dispatch_name(*chosen_);
+    notes.push_back(std::string("dispatch auto=") + dispatch_name(*chosen_));
   }
-  if ((opts_.dispatch == Dispatch::automatic ? *chosen_ : opts_.dispatch) != Dispatch::compute) return note;
+  if ((opts_.dispatch == Dispatch::automatic ? *chosen_ : opts_.dispatch) != Dispatch::compute) return notes;
   if (!main_ || src.text != text_) {
     main_.reset();
     text_.clear();
-    try {
-      main_ = std::make_unique<Program>(Program::Compute{}, src);
-    } catch (const Error& e) {
-      return refused(e);
+    // The worker's, warmed up (live/compile_worker.h), or its compile error.
+    if (offer && offer->text == src.text && (offer->program || !offer->error.empty())) {
+      if (!offer->program) {
+        notes.push_back(refused(offer->error));
+        return notes;
+      }
+      main_ = std::move(offer->program);
+      notes.push_back("dispatch compute=worker");
+    } else {
+      try {
+        main_ = std::make_shared<const Program>(Program::Compute{}, src);
+      } catch (const Error& e) {
+        notes.push_back(refused(format_error(e.info())));
+        return notes;
+      }
+      notes.push_back("dispatch compute=ui");
     }
     text_ = src.text;
   }
   if (!renderer_) renderer_ = std::make_unique<ComputeFrameRenderer>(ctx_);
   active_ = true;
-  return note;
+  return notes;
+}
+
+bool ComputeTrace::wants(const ShaderSource& src) const {
+  const Dispatch d = opts_.dispatch == Dispatch::automatic ? chosen_.value_or(Dispatch::fragment) : opts_.dispatch;
+  return d == Dispatch::compute && !(main_ && src.text == text_);
+}
+
+void ComputeTrace::offer(std::string text, std::shared_ptr<const Program> program, std::string error) {
+  offered_ = Offer{std::move(text), std::move(error), std::move(program)};
 }
 
 void ComputeTrace::draw(PassGraph& graph, const Program& post, const FrameInputs& in, const FrameParams& p,

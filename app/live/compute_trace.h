@@ -1,20 +1,24 @@
 // view --dispatch compute|auto (issue 18): the viewer's scene pass traced by
 // the compute dispatch (render/compute_frame.h) instead of FrameRenderer;
 // the window's blit, the UI and a Shadertoy graph's buffer passes stay
-// fragment passes. Built once per program generation, on the UI thread: the
-// compile worker links only the fragment programs. A pass compute cannot run
+// fragment passes. Built once per program generation: by the compile worker
+// when the build went through it (offer(), live/compile_worker.h), else on
+// the UI thread; a `dispatch compute=worker|ui` line says which. A pass compute cannot run
 // (derivatives, an implicit-LOD lookup of a mipmapped input) or a compute
 // program that fails to build is drawn with fragment, and update() says why;
 // the viewer never exits for it.
 //
 //   ComputeTrace trace(ctx, opts.dispatch);
-//   const std::string note = trace.update(graph, session.generation(), post, probe_frame);
+//   if (trace.wants(src)) job.compute = src;  // the worker compiles it...
+//   trace.offer(src.text, result.compute, result.compute_error);  // ...and the next update() takes it
+//   for (const std::string& note : trace.update(graph, session.generation(), post, probe_frame)) log(note);
 //   if (trace.active()) trace.draw(graph, post, in, fp, step); else graph.draw(renderer, post, in, fp, step);
 #pragma once
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gl/context.h"
 #include "render/compute_frame.h"
@@ -39,10 +43,18 @@ class ComputeTrace {
   // For `graph` (the session's program generation `generation`): nothing when
   // the generation is the last one seen; else compile its last pass as compute
   // when the dispatch asks for it. `frame` gives auto's probe its frame. Returns
-  // a line for the log, empty when there is nothing to say:
-  //   "dispatch auto=compute", "dispatch fragment -- <why compute was refused>".
+  // lines for the log, none when there is nothing to say:
+  //   "dispatch auto=compute", "dispatch fragment -- <why compute was refused>",
+  //   "dispatch compute=worker" (offered) or "dispatch compute=ui" (compiled here).
   // An error of `choose` passes through; the generation then draws with fragment.
-  std::string update(PassGraph& graph, int generation, const Program& post, const std::function<StillFrame()>& frame);
+  std::vector<std::string> update(PassGraph& graph, int generation, const Program& post,
+                                  const std::function<StillFrame()>& frame);
+  // A compute source the worker should compile for the next build: the
+  // dispatch is (or auto chose) compute and `src` is not the program held.
+  bool wants(const ShaderSource& src) const;
+  // The worker's compile of `text` (a program, or its error text), taken by
+  // the next update() whose pass has that source; dropped by any other.
+  void offer(std::string text, std::shared_ptr<const Program> program, std::string error);
   // This generation is traced with compute.
   bool active() const { return active_; }
   // What draws this generation: "compute" or "fragment".
@@ -60,7 +72,12 @@ class ComputeTrace {
   int generation_ = -1;
   bool active_ = false;
   std::string text_;  // main_'s source: an unchanged pass is not compiled again
-  std::unique_ptr<Program> main_;
+  std::shared_ptr<const Program> main_;
+  struct Offer {
+    std::string text, error;
+    std::shared_ptr<const Program> program;
+  };
+  std::optional<Offer> offered_;
   std::unique_ptr<ComputeFrameRenderer> renderer_;
 };
 

@@ -52,6 +52,7 @@ struct Compiling {
   long frame_at_event = 0, iteration_at_event = 0, frames_at_submit = 0;
   long settled_at_submit = 0;  // Viewer::settled_ when it started
   Session::PreparedReload plan;
+  std::string compute_text;  // the compute source the worker compiles with it; empty: none
 };
 
 class Viewer {

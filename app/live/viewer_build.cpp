@@ -4,12 +4,15 @@
 
 #include "live/viewer_app.h"
 
+#include "core/error.h"
+#include "render/compute_frame.h"
+
 namespace ms::live {
 namespace fs = std::filesystem;
 
 void Viewer::reload(bool from_disk, double t_event, long frame_at_event, long iteration_at_event, bool wait) {
   Compiling c{true, BuildKind::reload, reloads_++, t_event, frame_at_event, iteration_at_event, frames_, settled_,
-              session_.prepare(from_disk)};
+              session_.prepare(from_disk), {}};
   if (c.plan.result.camera_changed) s_.camera = s_.scene_camera = session_.scene().camera;
   build(std::move(c), wait);
 }
@@ -31,7 +34,18 @@ void Viewer::build(Compiling c, bool wait) {
     const ReloadResult r = session_.adopt(std::move(c.plan), {}, nullptr, 0.0);
     return finish_build(c, r, 0.0);
   }
-  worker_->submit(CompileJob{++jobs_, std::move(sources), passes, !c.plan.fused});
+  CompileJob job{++jobs_, std::move(sources), passes, !c.plan.fused, std::nullopt};
+  // Traced with compute: the worker compiles that program too (docs/viewer.md#compute).
+  // A pass compute refuses goes without: the UI thread's update() says why.
+  if (c.plan.result.ok && !c.plan.passes.empty()) {
+    try {
+      ShaderSource cs = compute_source(c.plan.passes.back());
+      if (drawer_ && drawer_->wants_compute(cs)) job.compute = std::move(cs);
+    } catch (const Error&) {
+    }
+  }
+  c.compute_text = job.compute ? job.compute->text : std::string();
+  worker_->submit(std::move(job));
   if (c.kind == BuildKind::reload) log_.line("reload compiling " + std::to_string(c.number));
   compiling_ = std::move(c);
   compiling_job_ = jobs_;
@@ -47,6 +61,8 @@ void Viewer::adopt_compiled(bool wait) {
   if (!got || got->id != compiling_job_) return;
   compiling_.active = false;
   const ReloadResult r = session_.adopt(std::move(compiling_.plan), got->programs, got->error, got->gl_ms);
+  if (r.ok && !compiling_.compute_text.empty())  // taken by the drawer's next update() (the program line's)
+    drawer_->offer_compute(std::move(compiling_.compute_text), std::move(got->compute), std::move(got->compute_error));
   finish_build(compiling_, r, got->warm_ms);
 }
 
@@ -142,7 +158,8 @@ void Viewer::rebuild_values(std::vector<std::string> live) {
 // The same files with new defines or live values, compiled like a reload.
 void Viewer::start_rebuild(BuildKind kind) {
   const double now = seconds_now();
-  build(Compiling{true, kind, -1, now, frames_, iterations_, frames_, settled_, session_.prepare(false)}, false);
+  build(Compiling{true, kind, -1, now, frames_, iterations_, frames_, settled_, session_.prepare(false), {}},
+        false);
 }
 
 }  // namespace ms::live

@@ -49,9 +49,9 @@ void FrameDrawer::sync_trace() {
   const Program* post = session_.post_program();
   if (!graph || !post) return;
   const Scene view = posed(static_cast<float>(s_.time));
-  std::string note;
+  std::vector<std::string> notes;
   try {
-    note = trace_.update(*graph, session_.generation(), *post, [&] {
+    notes = trace_.update(*graph, session_.generation(), *post, [&] {
       StillFrame f;  // auto's probe (cli/dispatch_probe.h) draws the scene as it stands, small
       f.in = inputs(view, nullptr);
       f.params.width = rw_;
@@ -61,14 +61,15 @@ void FrameDrawer::sync_trace() {
       return f;
     });
   } catch (const Error& e) {  // auto's probe failed: this generation stays fragment (update() set it so)
-    note = "dispatch fragment -- " + format_error(e.info());
+    notes = {"dispatch fragment -- " + format_error(e.info())};
   }
-  if (note.empty()) return;
-  log_.line(note);
-  // A refusal is shown, never fatal: the fragment pass draws instead.
-  if (note.rfind("dispatch fragment -- ", 0) == 0) {
-    std::fprintf(stderr, "marchstudio: %s\n", note.c_str());
-    s_.say("compute refused, drawing with fragment: " + note.substr(21), 8.0);
+  for (const std::string& note : notes) {
+    log_.line(note);
+    // A refusal is shown, never fatal: the fragment pass draws instead.
+    if (note.rfind("dispatch fragment -- ", 0) == 0) {
+      std::fprintf(stderr, "marchstudio: %s\n", note.c_str());
+      s_.say("compute refused, drawing with fragment: " + note.substr(21), 8.0);
+    }
   }
 }
 

@@ -72,6 +72,13 @@ class FrameDrawer {
     return trace_.name();
   }
 
+  // The compute program for a build's last pass, from the compile worker
+  // (live/compute_trace.h wants/offer): only asked for when it would be used.
+  bool wants_compute(const ShaderSource& src) const { return trace_.wants(src); }
+  void offer_compute(std::string text, std::shared_ptr<const Program> program, std::string error) {
+    trace_.offer(std::move(text), std::move(program), std::move(error));
+  }
+
   int render_width() const { return rw_; }
   int render_height() const { return rh_; }
 

@@ -2,11 +2,13 @@
 // the compute dispatch draws what `render --dispatch fragment` draws, within
 // 1/255: the one-pass frame (fused) and a frame accumulated to N samples; a
 // pass compute cannot run (dFdx) is shown as an error and drawn with
-// fragment, never fatal; a bad name is one line and exit 2. Under Xvfb, on
-// llvmpipe (GL 4.5: compute shaders).
+// fragment, never fatal; a bad name is one line and exit 2; the compute
+// program is compiled on the compile worker, frames coming meanwhile. Under
+// Xvfb, on llvmpipe (GL 4.5: compute shaders).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 
 #include "io/image_io.h"
 #include "run.h"
@@ -16,22 +18,33 @@ namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-const char* kMap =
-    "vec2 map(vec3 p) {\n"
-    "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
-    "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), 1.0), MAT_BALL);\n"
-    "  return opUnion(ground, ball);\n"
-    "}\n";
-
 // A Shadertoy Image pass that needs derivatives: compute refuses it.
 const char* kDerivative = "void mainImage(out vec4 c, in vec2 f) {\n  c = vec4(vec3(0.25 + 0.5 * dFdx(f.x)), 1.0);\n}\n";
+
+// kBallMap's ball of radius 1.3 plus a long function behind a branch no ray
+// takes (test_viewer_async.cpp's trick): the image is the ball's, the
+// compiles and JITs take seconds, and a per-run constant keeps it out of
+// Mesa's disk shader cache.
+std::string heavy_map() {
+  const std::string salt =
+      std::to_string((std::chrono::steady_clock::now().time_since_epoch().count() + getpid()) % 1000003);
+  std::string s = "float heavy(vec3 p) {\n  float a = " + salt + ".0;\n";
+  for (int i = 0; i < 60; ++i)
+    s += "  p = sin(p * " + std::to_string(1.0 + 0.01 * i) + " + p.yzx); a += p.x * p.z;\n";
+  return s + "  return a;\n}\n"
+             "vec2 map(vec3 p) {\n"
+             "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
+             "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), 1.3), MAT_BALL);\n"
+             "  if (p.y > 1e6) ball.x = heavy(p);\n"
+             "  return opUnion(ground, ball);\n}\n";
+}
 
 class DispatchViewer : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
     write_file(dir / "seed.toml", kBallScene);
-    write_file(dir / "seed.glsl", kMap);
+    write_file(dir / "seed.glsl", kBallMap);
     write_file(dir / "d.glsl", kDerivative);
   }
   // The viewer on `input` (a file in dir), its cache (auto's choice) in dir.
@@ -130,10 +143,31 @@ TEST_F(DispatchViewer, ABufferGraphsImagePassReadsTheBufferWithCompute) {
   EXPECT_GT(shots[1].at(0, 0, 0), 5.0f / 255.0f) << "the compute image pass did not see the buffer count";
 }
 
+// The compute program comes from the compile worker (compiled and warmed
+// up there): the old program keeps drawing while a slow one compiles, the
+// UI thread compiles nothing, and the adopted frame is render's.
+TEST_F(DispatchViewer, TheComputeProgramCompilesOnTheWorker) {
+  start("seed.toml", {"--accumulate", "1", "--dispatch", "compute"});
+  save_by_rename(dir / "seed.glsl", heavy_map());
+  ASSERT_FALSE(wait_for_line(log(), "^reload compiling 1$", 20).empty()) << read_file(log());
+  const std::string line = wait_for_line(log(), "^reload (ok|failed) 1 ", 80);
+  ASSERT_EQ(line.rfind("reload ok 1 ", 0), 0u) << line << read_file(dir / "err.txt");
+  EXPECT_GT(field(line, "frames_during_compile"), 0) << line;
+  ASSERT_FALSE(wait_for_line(log(), "^capture 1 ", 10).empty()) << read_file(log());
+  const std::vector<std::string> lines = file_lines(log());
+  // reload 0's program and reload 1's, both from the worker, both drawn by compute.
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), "dispatch compute=worker"), 2) << read_file(log());
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), "dispatch compute=ui"), 0) << read_file(log());
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), "program fused=1 dispatch=compute"), 2) << read_file(log());
+  const Image got = read_image(dir / "cap/frame_1.png");
+  EXPECT_LE(max_abs_diff(got, render("seed.toml", {})), 1.0 / 255.0);
+  EXPECT_GT(mean_abs_diff(got, read_image(dir / "cap/frame_0.png")), 1e-3) << "the reload did not change the image";
+}
+
 TEST(DispatchViewerFlag, ABadNameIsOneLineAndExit2) {
   TempDir dir;
   write_file(dir / "seed.toml", kBallScene);
-  write_file(dir / "seed.glsl", kMap);
+  write_file(dir / "seed.glsl", kBallMap);
   const RunResult r = run_marchstudio({"view", (dir / "seed.toml").string(), "--dispatch", "gpu"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--dispatch 'gpu'"), std::string::npos) << r.err;

@@ -18,19 +18,12 @@ namespace fs = std::filesystem;
 // kBallScene with a specular ball, so the folded material table matters.
 const std::string kScene = std::string(kBallScene) + "specular = 0.6\n";
 
-const char* kMap =
-    "vec2 map(vec3 p) {\n"
-    "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
-    "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), 1.0), MAT_BALL);\n"
-    "  return opUnion(ground, ball);\n"
-    "}\n";
-
 class FoldedViewer : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
     write_file(dir / "seed.toml", kScene);
-    write_file(dir / "seed.glsl", kMap);
+    write_file(dir / "seed.glsl", kBallMap);
   }
   void start(std::vector<std::string> extra) {
     const std::string server = std::to_string(100 + (getpid() + 7321) % 20000);

@@ -176,6 +176,14 @@ name = "ball"
 color = [0.85, 0.10, 0.06]
 )";
 
+// kBallScene's map: the ball of radius 1 on the floor.
+inline const char* const kBallMap =
+    "vec2 map(vec3 p) {\n"
+    "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
+    "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), 1.0), MAT_BALL);\n"
+    "  return opUnion(ground, ball);\n"
+    "}\n";
+
 // Replace a file the way vim and VS Code save it: write a temporary next to
 // it, then rename it over the original.
 inline void save_by_rename(const std::filesystem::path& p, const std::string& text) {
