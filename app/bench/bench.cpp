@@ -149,14 +149,15 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
     bloom = std::make_unique<BloomStage>(scene.bloom, std::make_shared<const Program>(vs, s.bloom[0]),
                                          std::make_shared<const Program>(vs, s.bloom[1]));
   fp.bloom = bloom.get();
-  Dispatch dispatch = s.dispatch;
-  if (dispatch == Dispatch::automatic) {
+  DispatchChoice choice{s.dispatch, s.group};
+  if (choice.dispatch == Dispatch::automatic) {
     StillFrame probe{next(), fp, fps};
     frame = 0;
-    dispatch = s.choose ? s.choose(graph, post_prog, probe) : Dispatch::fragment;
+    choice = s.choose ? s.choose(graph, post_prog, probe) : DispatchChoice{};
   }
-  SceneDrawer renderer(ctx, graph, dispatch, s.group);
+  SceneDrawer renderer(ctx, graph, choice.dispatch, choice.group);
   r.dispatch = renderer.dispatch();
+  r.group = choice.group;
   r.link_ms = ms_since(t0);
   FrameParams tiny = fp;
   tiny.width = tiny.height = 1;

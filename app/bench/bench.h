@@ -36,10 +36,11 @@ struct BenchSettings {
   std::vector<ShaderSource> bloom;
   // Which pass draws the scene (--dispatch): fragment or compute, or
   // automatic, then `choose` decides once the programs exist (cli/ gives it
-  // cli/dispatch_probe.h's choose_dispatch). Buffer passes stay fragment.
+  // cli/dispatch_probe.h's choose_dispatch), its group too. Buffer passes
+  // stay fragment.
   Dispatch dispatch = Dispatch::fragment;
   ComputeGroup group;
-  std::function<Dispatch(PassGraph& graph, const Program& post, const StillFrame& frame)> choose;
+  std::function<DispatchChoice(PassGraph& graph, const Program& post, const StillFrame& frame)> choose;
 };
 
 // The deterministic cost of one frame at spp 1, from the AOV counters.
@@ -84,6 +85,7 @@ struct PassTiming {
 struct BenchResult {
   std::string backend, gl_renderer, gl_vendor, gl_version;
   Dispatch dispatch = Dispatch::fragment;  // what drew the scene pass (auto resolved)
+  ComputeGroup group;                      // its work group, when compute
   // Startup, milliseconds of wall time. llvmpipe compiles a program's
   // machine code lazily at its first draw, so link_ms (the Program
   // constructors returning) hides most of the work: compile_link_ms also

@@ -32,6 +32,7 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
                    {"disable", subject.disable}, {"shader_cache", s.shader_cache},
                    {"specialize", subject.specialize}, {"passes", s.fused_post ? 1 : 2},
                    {"dispatch", dispatch_name(r.dispatch)},
+                   {"compute_group", r.dispatch == Dispatch::compute ? ordered_json(group_name(r.group)) : ordered_json()},
                    {"overrides", subject.overrides}};
   j["machine"] = {{"backend", r.backend},
                   {"gl_renderer", r.gl_renderer},

@@ -92,7 +92,8 @@ std::string sweep_json(const SweepSubject& subject, const SweepSettings& s, cons
   j["settings"] = {{"width", s.width},   {"height", s.height}, {"spp", s.spp},       {"ref_spp", s.ref_spp},
                    {"frames", s.frames}, {"rounds", s.rounds}, {"warmup", s.warmup}, {"time", s.time},
                    {"grid", sweep_grid_name(s.grid)}, {"specialize", subject.specialize},
-                   {"time_by", sweep_clock_name(s.clock)}, {"dispatch", dispatch_name(r.dispatch)}};
+                   {"time_by", sweep_clock_name(s.clock)}, {"dispatch", dispatch_name(r.dispatch)},
+                   {"compute_group", r.dispatch == Dispatch::compute ? Json(group_name(s.group)) : Json()}};
   j["machine"] = {{"backend", r.backend},
                   {"gl_renderer", r.gl_renderer},
                   {"gl_vendor", r.gl_vendor},

@@ -57,7 +57,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
                 "Time the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   cmd->add_option("--dispatch", a.dispatch,
                   "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
-  cmd->add_option("--compute-group", a.compute_group, "Compute work group WxH (default 8x8)")->group("");
+  cmd->add_option("--compute-group", a.compute_group, "Compute work group WxH (default 8x8; auto measures 8x8, 16x8, 16x16 and 32x4)")->group("");
   cmd->add_flag("-v,--verbose", a.verbose, "Say which dispatch --dispatch auto chose, and why");
   return cmd;
 }
@@ -111,7 +111,8 @@ int run_bench_command(const BenchArgs& a) {
 
   s.shader_cache = a.shader_cache;
   s.dispatch = parse_dispatch(a.dispatch);
-  s.group = parse_compute_group(a.compute_group);
+  const std::optional<ComputeGroup> group = parse_compute_group(a.compute_group);
+  s.group = group.value_or(ComputeGroup{});
   check_compute_input(s.dispatch, in, false);
   check_bench_settings(s);  // before the (slow) context
   set_shader_cache(s.shader_cache);
@@ -119,7 +120,7 @@ int run_bench_command(const BenchArgs& a) {
   // Keyframed values at the benchmarked time, as render poses them.
   const Scene posed = animated(in.scene, s.time);
   s.choose = [&](PassGraph& graph, const Program& post_prog, const StillFrame& f) {
-    return choose_dispatch(s.dispatch, graph, post_prog, f, *ctx, s.group, a.verbose);
+    return choose_dispatch(s.dispatch, graph, post_prog, f, *ctx, group, a.verbose);
   };
   const BenchResult r = run_bench(*ctx, posed, in.passes, counting ? &*counting : nullptr, post, s);
   if (!in.shadertoy) {

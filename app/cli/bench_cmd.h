@@ -31,7 +31,7 @@ struct BenchArgs {
   ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
   Overrides overrides;       // --set, --uniform (cli/override_flags.h)
   std::string dispatch = "fragment";  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
-  std::string compute_group = "8x8";  // hidden --compute-group
+  std::string compute_group;  // hidden --compute-group; "": 8x8, or auto's measured group
   bool verbose = false;               // -v: what --dispatch auto chose, and why
 };
 

@@ -14,7 +14,8 @@ Dispatch parse_dispatch(const std::string& name) {
   fail_input("--dispatch '" + name + "' is not one of fragment, compute, auto", {}, 0, "--dispatch");
 }
 
-ComputeGroup parse_compute_group(const std::string& text) {
+std::optional<ComputeGroup> parse_compute_group(const std::string& text) {
+  if (text.empty()) return std::nullopt;
   ComputeGroup g;
   char x = 0, slash = 0, extra = 0;
   const int n = std::sscanf(text.c_str(), "%d%c%d%c%d%c", &g.x, &x, &g.y, &slash, &g.stripe, &extra);

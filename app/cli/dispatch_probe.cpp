@@ -4,10 +4,14 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <vector>
 
+#include "bench/dispatch_plan.h"
+#include "cli/dispatch_flag.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/cache_dir.h"
@@ -19,8 +23,27 @@ namespace fs = std::filesystem;
 namespace {
 
 struct CacheLine {
-  std::string renderer, version, choice;
+  std::string renderer, version, text;
+  DispatchChoice choice;
 };
+
+std::string choice_text(const DispatchChoice& c) {
+  return c.dispatch == Dispatch::compute ? "compute " + group_name(c.group) : "fragment";
+}
+
+// "fragment", "compute" (8x8: the format before groups were measured) or
+// "compute WxH[/S]"; none for anything else.
+std::optional<DispatchChoice> parse_choice(const std::string& text) {
+  if (text == "fragment") return DispatchChoice{Dispatch::fragment, {}};
+  if (text == "compute") return DispatchChoice{Dispatch::compute, {}};
+  if (text.rfind("compute ", 0) != 0) return std::nullopt;
+  try {
+    if (const std::optional<ComputeGroup> g = parse_compute_group(text.substr(8)))
+      return DispatchChoice{Dispatch::compute, *g};
+  } catch (const Error&) {
+  }
+  return std::nullopt;
+}
 
 // The file's lines; `corrupt` when any does not parse (then none is trusted).
 std::vector<CacheLine> read_cache(const fs::path& path, bool& corrupt) {
@@ -33,11 +56,13 @@ std::vector<CacheLine> read_cache(const fs::path& path, bool& corrupt) {
     std::vector<std::string> fields;
     std::stringstream ss(line);
     for (std::string field; std::getline(ss, field, '\t');) fields.push_back(field);
-    if (fields.size() != 3 || fields[0].empty() || (fields[2] != "fragment" && fields[2] != "compute")) {
+    std::optional<DispatchChoice> choice;
+    if (fields.size() == 3 && !fields[0].empty()) choice = parse_choice(fields[2]);
+    if (!choice) {
       corrupt = true;
       return {};
     }
-    lines.push_back({fields[0], fields[1], fields[2]});
+    lines.push_back({fields[0], fields[1], fields[2], *choice});
   }
   return lines;
 }
@@ -67,17 +92,17 @@ double median_frame_ms(SceneDrawer& drawer, PassGraph& graph, const Program& pos
 
 fs::path dispatch_cache_path() { return cache_dir() / "dispatch"; }
 
-Dispatch choose_dispatch(Dispatch requested, PassGraph& graph, const Program& post, const StillFrame& frame,
-                         const Context& ctx, ComputeGroup group, bool verbose) {
-  if (requested != Dispatch::automatic) return requested;
+DispatchChoice choose_dispatch(Dispatch requested, PassGraph& graph, const Program& post, const StillFrame& frame,
+                               const Context& ctx, std::optional<ComputeGroup> group, bool verbose) {
+  if (requested != Dispatch::automatic) return {requested, group.value_or(ComputeGroup{})};
   const auto say = [&](const std::string& text) {
     if (verbose) std::fprintf(stderr, "marchstudio: dispatch auto: %s\n", text.c_str());
   };
   try {
-    (void)compute_source(graph.pass(graph.size() - 1), group);
+    (void)compute_source(graph.pass(graph.size() - 1), group.value_or(ComputeGroup{}));
   } catch (const Error& e) {
     say("fragment (this input cannot run as compute: " + e.info().what + ")");
-    return Dispatch::fragment;
+    return {Dispatch::fragment, group.value_or(ComputeGroup{})};
   }
   const std::string renderer = clean(ctx.info().renderer), version = clean(ctx.info().version);
   const fs::path path = dispatch_cache_path();
@@ -85,43 +110,42 @@ Dispatch choose_dispatch(Dispatch requested, PassGraph& graph, const Program& po
   std::vector<CacheLine> lines = read_cache(path, corrupt);
   for (const CacheLine& l : lines)
     if (l.renderer == renderer && l.version == version) {
-      say(l.choice + " (cached for " + renderer + ", " + version + " in " + path.string() + ")");
-      return l.choice == "compute" ? Dispatch::compute : Dispatch::fragment;
+      DispatchChoice c = l.choice;
+      if (group) c.group = *group;  // a given group is what compute draws with
+      say(choice_text(c) + " (cached for " + renderer + ", " + version + " in " + path.string() + ")");
+      return c;
     }
   if (corrupt) say("the cache " + path.string() + " is unreadable: ignored, and rewritten after the probe");
 
   StillFrame f = frame;
-  f.params.width = kProbeWidth;
-  f.params.height = kProbeHeight;
   f.params.spp = 1;
   f.params.aovs = false;
   f.params.fused_post = false;
   f.params.deadline = nullptr;
-  double frag_ms = 0, comp_ms = 0;
-  {
-    SceneDrawer fragment(ctx, graph, Dispatch::fragment, group);
-    frag_ms = median_frame_ms(fragment, graph, post, f);
-  }
-  {
-    SceneDrawer compute(ctx, graph, Dispatch::compute, group);
-    comp_ms = median_frame_ms(compute, graph, post, f);
-  }
+  // One drawer per dispatch and group, each compiled once for all sizes.
+  std::unique_ptr<SceneDrawer> fragment;
+  std::map<std::string, std::unique_ptr<SceneDrawer>> compute;
+  const DispatchProbe p = plan_dispatch(group, [&](Dispatch d, ComputeGroup g, int w, int h) {
+    std::unique_ptr<SceneDrawer>& drawer = d == Dispatch::fragment ? fragment : compute[group_name(g)];
+    if (!drawer) drawer = std::make_unique<SceneDrawer>(ctx, graph, d, g);
+    f.params.width = w;
+    f.params.height = h;
+    return median_frame_ms(*drawer, graph, post, f);
+  });
+  fragment.reset();
+  compute.clear();
   if (graph.stateful()) graph.reset();  // the probe's frames are not the job's
-  const Dispatch choice = comp_ms < frag_ms ? Dispatch::compute : Dispatch::fragment;
-  lines.push_back({renderer, version, dispatch_name(choice)});
+  lines.push_back({renderer, version, choice_text(p.choice), p.choice});
   std::string text;
-  for (const CacheLine& l : lines) text += l.renderer + "\t" + l.version + "\t" + l.choice + "\n";
+  for (const CacheLine& l : lines) text += l.renderer + "\t" + l.version + "\t" + l.text + "\n";
   std::string where = "cached in " + path.string();
   try {
     write_file_atomic(path, text);
   } catch (const Error& e) {  // a cache that cannot be written costs a probe next time, nothing more
     where = "not cached: " + e.info().what;
   }
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "probe: fragment %.2f ms, compute %.2f ms a frame at %dx%d: ", frag_ms, comp_ms,
-                kProbeWidth, kProbeHeight);
-  say(buf + std::string(dispatch_name(choice)) + ", " + where);
-  return choice;
+  say("probe: " + describe_probe(p) + ": " + choice_text(p.choice) + ", " + where);
+  return p.choice;
 }
 
 }  // namespace ms

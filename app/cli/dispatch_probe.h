@@ -1,19 +1,25 @@
 // --dispatch auto (issue 18): the faster of the fragment pass and the
-// compute dispatch on this device, measured once and kept. The first use on
-// a device draws the job's own scene small (kProbeWidth x kProbeHeight, its
-// passes, post and bloom as the job's), a warm-up frame and kProbeFrames
-// timed frames each way, glFinish around each (wall clock: the GPU timer
-// reads 0 on some drivers), and keeps the faster by median in
-// cache_dir()/dispatch, one line per device: GL_RENDERER, GL_VERSION and
-// the choice, tab-separated, written atomically. A line that does not
-// parse makes the file unreadable: ignored and rewritten, never fatal.
-// An input the compute dispatch cannot run (compute_source refuses it)
-// gets the fragment pass without a probe.
+// compute dispatch on this device, and compute's work group, measured once
+// and kept. The first use on a device draws the job's own scene (its
+// passes, post and bloom as the job's) at the sizes and groups of
+// bench/dispatch_plan.h's plan (256x144 first, larger while a frame is too
+// short to measure; compute's other groups when it wins at 8x8), a warm-up
+// frame and kProbeFrames timed frames each, glFinish around each (wall
+// clock: the GPU timer reads 0 on some drivers), and keeps the fastest by
+// median in cache_dir()/dispatch, one line per device: GL_RENDERER,
+// GL_VERSION and the choice ("fragment", or "compute WxH"; a bare
+// "compute" is 8x8), tab-separated, written atomically. A line that does
+// not parse makes the file unreadable: ignored and rewritten, never fatal.
+// A given --compute-group is the only group timed, and is what compute
+// draws with even when the cache names another. An input the compute
+// dispatch cannot run (compute_source refuses it) gets the fragment pass
+// without a probe.
 //
-//   const Dispatch d = choose_dispatch(requested, graph, post, probe_frame, ctx, group, verbose);
-//   SceneDrawer drawer(ctx, graph, d, group);
+//   const DispatchChoice d = choose_dispatch(requested, graph, post, probe_frame, ctx, group, verbose);
+//   SceneDrawer drawer(ctx, graph, d.dispatch, d.group);
 #pragma once
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "gl/context.h"
@@ -23,17 +29,16 @@
 
 namespace ms {
 
-constexpr int kProbeWidth = 256, kProbeHeight = 144, kProbeFrames = 3;
-
 std::filesystem::path dispatch_cache_path();
 
-// `requested` unless it is automatic: then the cached or measured choice
-// for ctx's device. `frame` is the job's frame (size and samples are the
-// probe's own). A stateful graph is reset after the probe. -v (`verbose`)
-// prints the choice and where it came from, on stderr:
-//   marchstudio: dispatch auto: compute (cached for llvmpipe (...))
-//   marchstudio: dispatch auto: probe: fragment 12.1 ms, compute 9.8 ms a frame at 256x144: compute, cached in ...
-Dispatch choose_dispatch(Dispatch requested, PassGraph& graph, const Program& post, const StillFrame& frame,
-                         const Context& ctx, ComputeGroup group, bool verbose);
+// `requested` (with `group`, or 8x8) unless it is automatic: then the
+// cached or measured choice for ctx's device. `frame` is the job's frame
+// (size and samples are the probe's own). A stateful graph is reset after
+// the probe. -v (`verbose`) prints the choice and where it came from, on
+// stderr:
+//   marchstudio: dispatch auto: compute 16x8 (cached for llvmpipe (...))
+//   marchstudio: dispatch auto: probe: fragment 12.10 ms, compute 9.80 ms (8x8), 9.10 (16x8), ... a frame at 256x144: compute 16x8, cached in ...
+DispatchChoice choose_dispatch(Dispatch requested, PassGraph& graph, const Program& post, const StillFrame& frame,
+                               const Context& ctx, std::optional<ComputeGroup> group, bool verbose);
 
 }  // namespace ms

@@ -53,7 +53,7 @@ struct RenderArgs {
   int tile_size = kTileSize; // hidden --tile-size: largest square per draw (render/tiles.h); 0: whole frame
   int tile_still = 0;        // hidden --tile-still: draw and stream the still in tiles of this side (tests); 0: past the limits only
   std::string dispatch = "fragment";  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
-  std::string compute_group = "8x8";  // hidden --compute-group WxH: the compute work group
+  std::string compute_group;  // hidden --compute-group WxH: the compute work group; "": 8x8, or auto's measured group
   ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
   Overrides overrides;       // --set, --uniform (cli/override_flags.h)
 };

@@ -49,7 +49,7 @@ struct RenderJob {
   int tile_still = 0;                // forced tiled-still side (tests); 0: past the limits only
   ShadertoyFlags shadertoy;
   Dispatch dispatch = Dispatch::fragment;  // --dispatch; automatic: cli/dispatch_probe.h chooses
-  ComputeGroup compute_group;              // --compute-group
+  std::optional<ComputeGroup> compute_group;  // --compute-group; none: 8x8, or auto's measured group
   bool verbose = false;
 
   bool aovs() const { return !aov_channels.empty(); }

@@ -179,7 +179,7 @@ int run_sequence(const RenderArgs& a) {
   report_input_warnings(in.warnings, a.input, a.strict);
   // --dispatch: refused here, before the context, as render refuses it (cli/dispatch_flag.h).
   const Dispatch requested = parse_dispatch(a.dispatch);
-  const ComputeGroup group = parse_compute_group(a.compute_group);
+  const std::optional<ComputeGroup> group = parse_compute_group(a.compute_group);
   check_compute_input(requested, in, false);
   const bool stateful = in.stateful();
   if (stateful && plan.shard.count > 1 && plan.mode == ShardMode::stride)
@@ -266,8 +266,8 @@ int run_sequence(const RenderArgs& a) {
     // The fragment pass or the compute dispatch (auto: cli/dispatch_probe.h), for every frame.
     const Scene first_pose = animated(scene, frame_time(todo.front()));
     const StillFrame probe{inputs_at(todo.front(), first_pose), fp, plan.fps};
-    SceneDrawer renderer(*ctx, graph, choose_dispatch(requested, graph, post_prog, probe, *ctx, group, a.verbose),
-                         group);
+    const DispatchChoice choice = choose_dispatch(requested, graph, post_prog, probe, *ctx, group, a.verbose);
+    SceneDrawer renderer(*ctx, graph, choice.dispatch, choice.group);
     if (stateful) {
       const std::vector<int> buffers = graph.buffers();
       if (sp.resume_from >= 0) {

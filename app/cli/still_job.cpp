@@ -152,7 +152,7 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
   const std::shared_ptr<const Program> post_prog = session.cache.get(fullscreen_vertex_source(), p.post_src);
   // --dispatch compute: the same scene shader as a compute pass, compiled once (render/compute_frame.h).
   std::optional<ComputeStill> compute;
-  if (job.dispatch == Dispatch::compute) compute.emplace(ctx, graph, job.compute_group);
+  if (job.dispatch == Dispatch::compute) compute.emplace(ctx, graph, job.compute_group.value_or(ComputeGroup{}));
   const double t_compile = clock.lap();
   if (job.verbose)
     std::fprintf(stderr, "marchstudio: programs: %ld compiled, %ld from the cache\n",
@@ -192,9 +192,10 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
   add_fingerprint(meta, frame_fingerprint(job_fingerprint(in, fp, p.post_src, job.aov_channels, scene.shadertoy.fps),
                                           job.frame, time));
   // auto: the probe's or the cache's choice for this device (cli/dispatch_probe.h), made with the bloom stage in place.
-  if (job.dispatch == Dispatch::automatic &&
-      choose_dispatch(job.dispatch, graph, *post_prog, still, ctx, job.compute_group, job.verbose) == Dispatch::compute)
-    compute.emplace(ctx, graph, job.compute_group);
+  if (job.dispatch == Dispatch::automatic)
+    if (const DispatchChoice c = choose_dispatch(job.dispatch, graph, *post_prog, still, ctx, job.compute_group, job.verbose);
+        c.dispatch == Dispatch::compute)
+      compute.emplace(ctx, graph, c.group);
   if (tiling.tiled()) {  // rendered and written band by band
     StillFn draw_tile;
     if (compute) draw_tile = [&](const StillFrame& piece) { return compute->render(graph, *post_prog, piece); };

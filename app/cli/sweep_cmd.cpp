@@ -59,7 +59,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   add_override_flags(cmd, a.overrides);
   cmd->add_option("--dispatch", a.dispatch,
                   "Draw every row as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
-  cmd->add_option("--compute-group", a.compute_group, "Compute work group WxH (default 8x8)")->group("");
+  cmd->add_option("--compute-group", a.compute_group, "Compute work group WxH (default 8x8; auto measures 8x8, 16x8, 16x16 and 32x4)")->group("");
   return cmd;
 }
 
@@ -122,7 +122,8 @@ int run_sweep_command(const SweepArgs& a) {
                "wrap the map in a scene .toml");
   s.time = in.scene.render.time;
   s.dispatch = parse_dispatch(a.dispatch);
-  s.group = parse_compute_group(a.compute_group);
+  const std::optional<ComputeGroup> group = parse_compute_group(a.compute_group);
+  s.group = group.value_or(ComputeGroup{});
   check_compute_input(s.dispatch, in, false);
 
   std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.preset);
@@ -160,7 +161,9 @@ int run_sweep_command(const SweepArgs& a) {
     f.in.scene = &posed;
     f.in.time = s.time;
     f.params.exposure = posed.render.exposure;
-    s.dispatch = choose_dispatch(s.dispatch, graph, post, f, *ctx, s.group, !a.quiet);
+    const DispatchChoice c = choose_dispatch(s.dispatch, graph, post, f, *ctx, group, !a.quiet);
+    s.dispatch = c.dispatch;
+    s.group = c.group;
   }
   const size_t n = configs.size();
   const SweepResult r = run_sweep(*ctx, posed, configs, opts, s, [&](size_t i, const std::string& name) {

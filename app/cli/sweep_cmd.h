@@ -32,7 +32,7 @@ struct SweepArgs {
   bool no_specialize = false;       // time the generic shader, as bench --no-specialize
   Overrides overrides;              // --set, --uniform (cli/override_flags.h)
   std::string dispatch = "fragment";  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
-  std::string compute_group = "8x8";  // hidden --compute-group
+  std::string compute_group;  // hidden --compute-group; "": 8x8, or auto's measured group
 };
 
 CLI::App* add_sweep_command(CLI::App& app, SweepArgs& args);

@@ -178,7 +178,7 @@ void CompileWorker::compile_compute(const CompileJob& job, const Program& post, 
   fp.width = fp.height = 8;
   fp.fused_post = !job.accumulates;
   try {
-    compute_renderer_->draw(*r.compute, [](const Program&) {}, post, fp);
+    compute_renderer_->draw(*r.compute, [](const Program&) {}, post, fp, job.compute_group);
   } catch (const Error&) {
     // As the fragment warm-up: no inputs bound is no compile error.
   }

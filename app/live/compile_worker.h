@@ -51,8 +51,10 @@ struct CompileJob {
   // only its first variant of a program on through the disk shader cache.
   bool accumulates = false;
   // The last pass as compute (compute_source()), when the viewer traces it
-  // with compute: compiled after the fragment programs, warmed up once.
+  // with compute (wrapped with compute_group): compiled after the fragment
+  // programs, warmed up once.
   std::optional<ShaderSource> compute;
+  ComputeGroup compute_group;
 };
 
 struct CompileResult {

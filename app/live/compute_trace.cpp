@@ -15,16 +15,18 @@ std::vector<std::string> ComputeTrace::update(PassGraph& graph, int generation, 
   const auto refused = [](const std::string& why) { return "dispatch fragment -- " + why; };
   ShaderSource src;
   try {
-    src = compute_source(graph.pass(graph.size() - 1));
+    src = compute_source(graph.pass(graph.size() - 1), group());
   } catch (const Error& e) {
     return {refused(format_error(e.info()))};  // no probe: fragment is the only choice for this program
   }
   std::vector<std::string> notes;
   if (opts_.dispatch == Dispatch::automatic && !chosen_) {
-    chosen_ = opts_.choose ? opts_.choose(graph, post, frame(), ctx_) : Dispatch::fragment;
-    notes.push_back(std::string("dispatch auto=") + dispatch_name(*chosen_));
+    chosen_ = opts_.choose ? opts_.choose(graph, post, frame(), ctx_) : DispatchChoice{};
+    notes.push_back(std::string("dispatch auto=") + dispatch_name(chosen_->dispatch));
+    // A measured group other than the one src was wrapped with.
+    if (chosen_->dispatch == Dispatch::compute) src = compute_source(graph.pass(graph.size() - 1), group());
   }
-  if ((opts_.dispatch == Dispatch::automatic ? *chosen_ : opts_.dispatch) != Dispatch::compute) return notes;
+  if ((opts_.dispatch == Dispatch::automatic ? chosen_->dispatch : opts_.dispatch) != Dispatch::compute) return notes;
   if (!main_ || src.text != text_) {
     main_.reset();
     text_.clear();
@@ -53,7 +55,8 @@ std::vector<std::string> ComputeTrace::update(PassGraph& graph, int generation, 
 }
 
 bool ComputeTrace::wants(const ShaderSource& src) const {
-  const Dispatch d = opts_.dispatch == Dispatch::automatic ? chosen_.value_or(Dispatch::fragment) : opts_.dispatch;
+  const Dispatch d = opts_.dispatch == Dispatch::automatic ? (chosen_ ? chosen_->dispatch : Dispatch::fragment)
+                                                           : opts_.dispatch;
   return d == Dispatch::compute && !(main_ && src.text == text_);
 }
 
@@ -65,7 +68,7 @@ void ComputeTrace::draw(PassGraph& graph, const Program& post, const FrameInputs
                         bool step) {
   // The graph draws the buffer passes and binds the last pass's inputs; the
   // last pass is this compute program (SceneDrawer's way).
-  graph.draw([&](const Program&, const UniformFn& u) { renderer_->draw(*main_, u, post, p); }, in, p, step);
+  graph.draw([&](const Program&, const UniformFn& u) { renderer_->draw(*main_, u, post, p, group()); }, in, p, step);
 }
 
 }  // namespace ms::live

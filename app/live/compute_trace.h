@@ -32,8 +32,9 @@ struct DispatchOptions {
   Dispatch dispatch = Dispatch::fragment;  // --dispatch
   // auto: the cached or measured choice for this device (cli/dispatch_probe.h
   // choose_dispatch, passed in by cli/); asked once a session, for the first
-  // program compute can run. Unset: auto draws with fragment.
-  std::function<Dispatch(PassGraph&, const Program& post, const StillFrame&, const Context&)> choose;
+  // program compute can run, with its work group. Unset: auto draws with
+  // fragment.
+  std::function<DispatchChoice(PassGraph&, const Program& post, const StillFrame&, const Context&)> choose;
 };
 
 class ComputeTrace {
@@ -57,6 +58,8 @@ class ComputeTrace {
   void offer(std::string text, std::shared_ptr<const Program> program, std::string error);
   // This generation is traced with compute.
   bool active() const { return active_; }
+  // The work group compute traces with: auto's measured one, else 8x8.
+  ComputeGroup group() const { return chosen_ ? chosen_->group : ComputeGroup{}; }
   // What draws this generation: "compute" or "fragment".
   const char* name() const { return active_ ? "compute" : "fragment"; }
 
@@ -68,7 +71,7 @@ class ComputeTrace {
  private:
   const Context& ctx_;
   DispatchOptions opts_;
-  std::optional<Dispatch> chosen_;  // auto's answer, once asked
+  std::optional<DispatchChoice> chosen_;  // auto's answer, once asked
   int generation_ = -1;
   bool active_ = false;
   std::string text_;  // main_'s source: an unchanged pass is not compiled again

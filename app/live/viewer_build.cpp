@@ -34,13 +34,16 @@ void Viewer::build(Compiling c, bool wait) {
     const ReloadResult r = session_.adopt(std::move(c.plan), {}, nullptr, 0.0);
     return finish_build(c, r, 0.0);
   }
-  CompileJob job{++jobs_, std::move(sources), passes, !c.plan.fused, std::nullopt};
+  CompileJob job{++jobs_, std::move(sources), passes, !c.plan.fused, std::nullopt, {}};
   // Traced with compute: the worker compiles that program too (docs/viewer.md#compute).
   // A pass compute refuses goes without: the UI thread's update() says why.
   if (c.plan.result.ok && !c.plan.passes.empty()) {
     try {
-      ShaderSource cs = compute_source(c.plan.passes.back());
-      if (drawer_ && drawer_->wants_compute(cs)) job.compute = std::move(cs);
+      if (drawer_) {
+        job.compute_group = drawer_->compute_group();
+        ShaderSource cs = compute_source(c.plan.passes.back(), job.compute_group);
+        if (drawer_->wants_compute(cs)) job.compute = std::move(cs);
+      }
     } catch (const Error&) {
     }
   }

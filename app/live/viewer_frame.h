@@ -75,6 +75,7 @@ class FrameDrawer {
   // The compute program for a build's last pass, from the compile worker
   // (live/compute_trace.h wants/offer): only asked for when it would be used.
   bool wants_compute(const ShaderSource& src) const { return trace_.wants(src); }
+  ComputeGroup compute_group() const { return trace_.group(); }
   void offer_compute(std::string text, std::shared_ptr<const Program> program, std::string error) {
     trace_.offer(std::move(text), std::move(program), std::move(error));
   }

@@ -30,6 +30,13 @@ namespace ms {
 enum class Dispatch { fragment, compute, automatic };
 const char* dispatch_name(Dispatch d);
 
+// What draws a job: the dispatch, and the work group when it is compute
+// (cli/dispatch_probe.h's auto measures both).
+struct DispatchChoice {
+  Dispatch dispatch = Dispatch::fragment;
+  ComputeGroup group;
+};
+
 struct ComputeTargets;  // the images (compute_frame.cpp)
 
 class ComputeFrameRenderer {

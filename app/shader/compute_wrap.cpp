@@ -9,6 +9,12 @@
 #include "shader/log_map.h"
 
 namespace ms {
+
+std::string group_name(const ComputeGroup& g) {
+  std::string s = std::to_string(g.x) + "x" + std::to_string(g.y);
+  if (g.stripe > 0) s += "/" + std::to_string(g.stripe);
+  return s;
+}
 namespace {
 
 // The text with comments blanked (newlines kept), for scans that must not

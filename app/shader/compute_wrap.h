@@ -30,6 +30,9 @@ struct ComputeGroup {
   int stripe = 0;
 };
 
+// "8x8", "16x8/4" (a stripe order): --compute-group's form.
+std::string group_name(const ComputeGroup& g);
+
 // The first derivative function (dFdx, dFdy, fwidth and their Fine/Coarse
 // forms) the text calls outside comments, or "" when there is none: a
 // compute shader has no pixel quads to take them from.

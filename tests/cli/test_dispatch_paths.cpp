@@ -45,6 +45,12 @@ int count_with(const std::string& text, const std::string& needle) {
   return n;
 }
 
+// The choice field of a one-line dispatch cache.
+std::string cached_choice(const std::string& cache) {
+  const size_t tab = cache.rfind('\t');
+  return tab == std::string::npos ? "" : cache.substr(tab + 1, cache.find('\n', tab) - tab - 1);
+}
+
 RunResult run_in(const TempDir& dir, const std::vector<std::string>& args) {
   return run_marchstudio(args, dir.path(), "XDG_CACHE_HOME='" + (dir / "cache").string() + "' ");
 }
@@ -141,7 +147,8 @@ TEST(DispatchAuto, ProbesOnceThenReadsTheCache) {
   ASSERT_TRUE(fs::exists(cache));
   const std::string kept = read_file(cache);
   EXPECT_EQ(count_with(kept, "\n"), 1) << kept;
-  const std::string choice = kept.find("\tcompute\n") != std::string::npos ? "compute" : "fragment";
+  const std::string choice = cached_choice(kept);  // "fragment" or "compute WxH"
+  EXPECT_TRUE(choice == "fragment" || choice.rfind("compute ", 0) == 0) << kept;
   const std::string second = run("a2.exr", "auto");
   EXPECT_EQ(count_with(second, "dispatch auto: probe: "), 0) << second;
   EXPECT_NE(second.find("dispatch auto: " + choice + " (cached for "), std::string::npos) << second;
@@ -170,9 +177,51 @@ TEST(DispatchAuto, ACorruptCacheIsIgnoredAndRewritten) {
   EXPECT_EQ(count_with(r.err, "dispatch auto: probe: "), 1) << r.err;
   const std::string kept = read_file(cache);
   EXPECT_EQ(count_with(kept, "\n"), 1) << kept;
-  EXPECT_TRUE(kept.find("\tfragment\n") != std::string::npos || kept.find("\tcompute\n") != std::string::npos) << kept;
+  EXPECT_TRUE(kept.find("\tfragment\n") != std::string::npos || kept.find("\tcompute ") != std::string::npos) << kept;
   const RunResult again = run_in(dir, {"render", scene, "--size", "32x18", "--dispatch", "auto", "-v", "-o", "b.png"});
   EXPECT_EQ(count_with(again.err, "dispatch auto: probe: "), 0) << again.err;
+}
+
+// The cache's group is what compute draws with ("compute" alone: 8x8, the
+// format before groups were measured), a given --compute-group overrides
+// it, and a group that cannot be makes the cache unreadable.
+TEST(DispatchAuto, TheCachedGroupIsWhatComputeDrawsWith) {
+  TempDir dir;
+  const std::string scene = (source_dir() / "scenes" / "seed.toml").string();
+  const auto run = [&](const std::string& out, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"render", scene, "--size", "96x54", "-v", "-o", out};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const RunResult r = run_in(dir, args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return r.err;
+  };
+  run("f.exr", {"--dispatch", "fragment"});
+  run("probe.png", {"--dispatch", "auto"});
+  const fs::path cache = dir / "cache" / "marchstudio" / "dispatch";
+  const std::string line = read_file(cache);
+  const std::string device = line.substr(0, line.rfind('\t') + 1);  // GL_RENDERER, GL_VERSION
+  const Image f = read_image(dir / "f.exr");
+  const struct {
+    std::string cached;
+    std::vector<std::string> extra;
+    std::string said;
+  } cases[] = {{"compute 16x16", {}, "compute 16x16"},
+               {"compute", {}, "compute 8x8"},
+               {"compute 16x8/4", {}, "compute 16x8/4"},
+               {"compute 16x16", {"--compute-group", "32x4"}, "compute 32x4"},
+               {"fragment", {}, "fragment"}};
+  for (const auto& c : cases) {
+    write_file(cache, device + c.cached + "\n");
+    std::vector<std::string> extra = {"--dispatch", "auto"};
+    extra.insert(extra.end(), c.extra.begin(), c.extra.end());
+    const std::string err = run("a.exr", extra);
+    EXPECT_NE(err.find("dispatch auto: " + c.said + " (cached for "), std::string::npos) << c.cached << "\n" << err;
+    EXPECT_LE(max_diff(f, read_image(dir / "a.exr")), 1e-5) << c.cached;
+  }
+  write_file(cache, device + "compute 64x64\n");  // 4096 invocations: no such group
+  const std::string err = run("b.png", {"--dispatch", "auto"});
+  EXPECT_NE(err.find("is unreadable: ignored"), std::string::npos) << err;
+  EXPECT_EQ(count_with(err, "dispatch auto: probe: "), 1) << err;
 }
 
 TEST(DispatchAuto, AnInputComputeCannotRunGetsTheFragmentPass) {
