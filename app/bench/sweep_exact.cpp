@@ -153,7 +153,7 @@ std::optional<std::vector<ExactSphere>> parse_sphere_map(std::string_view map_gl
   if (depth != 0) return fail("unbalanced braces in map()");
   if (at != 0 || e != all.size()) return fail("the map file has code besides map()");
   const std::string body = all.substr(at + head.size(), e - 1 - (at + head.size()));
-  Parser p{body, materials};
+  Parser p{body, materials, 0, {}};
   std::vector<ExactSphere> spheres;
   if (!p.body(spheres)) return fail("map() is not a union of constant spheres");
   return spheres;

@@ -17,26 +17,11 @@ namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-// The ball of `radius` on the floor. heavy: plus a long function behind a
-// branch no ray takes (p.y > 1e6), so the image stays the same while the
-// driver's compile and JIT take seconds on llvmpipe. Its constant differs
-// per run, so Mesa's disk shader cache never has it.
-std::string map_glsl(const std::string& radius, bool heavy, const std::string& tail = "", int lines = 60) {
-  static const std::string salt = std::to_string(
-      (std::chrono::steady_clock::now().time_since_epoch().count() + getpid()) % 1000003);
-  std::string s;
-  if (heavy) {
-    s += "float heavy(vec3 p) {\n  float a = " + salt + ".0;\n";
-    for (int i = 0; i < lines; ++i)
-      s += "  p = sin(p * " + std::to_string(1.0 + 0.01 * i) + " + p.yzx); a += p.x * p.z;\n";
-    s += "  return a;\n}\n";
-  }
-  s += "vec2 map(vec3 p) {\n"
-       "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
-       "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), " + radius + "), MAT_BALL);\n";
-  if (heavy) s += "  if (p.y > 1e6) ball.x = heavy(p);\n";
-  s += "  return opUnion(ground, ball);\n}\n" + tail;
-  return s;
+// The heavy map's length: enough that its compile and JIT outlast many
+// 160x90 frames, short enough to keep these tests to seconds.
+constexpr int kHeavy = 30;
+std::string map_glsl(const std::string& radius, bool heavy, const std::string& tail = "", int lines = kHeavy) {
+  return ball_map(radius, heavy ? lines : 0, tail);
 }
 
 class AsyncReload : public ::testing::Test {

@@ -21,23 +21,9 @@ namespace fs = std::filesystem;
 // A Shadertoy Image pass that needs derivatives: compute refuses it.
 const char* kDerivative = "void mainImage(out vec4 c, in vec2 f) {\n  c = vec4(vec3(0.25 + 0.5 * dFdx(f.x)), 1.0);\n}\n";
 
-// kBallMap's ball of radius 1.3 plus a long function behind a branch no ray
-// takes (test_viewer_async.cpp's trick): the image is the ball's, the
-// compiles and JITs take seconds, and a per-run constant keeps it out of
-// Mesa's disk shader cache.
-std::string heavy_map() {
-  const std::string salt =
-      std::to_string((std::chrono::steady_clock::now().time_since_epoch().count() + getpid()) % 1000003);
-  std::string s = "float heavy(vec3 p) {\n  float a = " + salt + ".0;\n";
-  for (int i = 0; i < 60; ++i)
-    s += "  p = sin(p * " + std::to_string(1.0 + 0.01 * i) + " + p.yzx); a += p.x * p.z;\n";
-  return s + "  return a;\n}\n"
-             "vec2 map(vec3 p) {\n"
-             "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
-             "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), 1.3), MAT_BALL);\n"
-             "  if (p.y > 1e6) ball.x = heavy(p);\n"
-             "  return opUnion(ground, ball);\n}\n";
-}
+// kBallMap's ball of radius 1.3 behind ball_map()'s slow-to-compile
+// function: the image is the ball's, the compile and JIT take seconds.
+std::string heavy_map() { return ball_map("1.3", 30); }
 
 class DispatchViewer : public ::testing::Test {
  protected:

@@ -184,6 +184,27 @@ inline const char* const kBallMap =
     "  return opUnion(ground, ball);\n"
     "}\n";
 
+// kBallMap with the ball's `radius`; with heavy_lines > 0, plus a long
+// function behind a branch no ray takes (p.y > 1e6), so the image stays
+// the ball's while llvmpipe's compile and JIT take a second or more. Its
+// constant differs per process, so Mesa's disk shader cache never has it.
+inline std::string ball_map(const std::string& radius, int heavy_lines = 0, const std::string& tail = "") {
+  static const std::string salt =
+      std::to_string((std::chrono::steady_clock::now().time_since_epoch().count() + getpid()) % 1000003);
+  std::string s;
+  if (heavy_lines > 0) {
+    s += "float heavy(vec3 p) {\n  float a = " + salt + ".0;\n";
+    for (int i = 0; i < heavy_lines; ++i)
+      s += "  p = sin(p * " + std::to_string(1.0 + 0.01 * i) + " + p.yzx); a += p.x * p.z;\n";
+    s += "  return a;\n}\n";
+  }
+  s += "vec2 map(vec3 p) {\n"
+       "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
+       "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), " + radius + "), MAT_BALL);\n";
+  if (heavy_lines > 0) s += "  if (p.y > 1e6) ball.x = heavy(p);\n";
+  return s + "  return opUnion(ground, ball);\n}\n" + tail;
+}
+
 // Replace a file the way vim and VS Code save it: write a temporary next to
 // it, then rename it over the original.
 inline void save_by_rename(const std::filesystem::path& p, const std::string& text) {
