@@ -57,7 +57,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
                 "Time the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   cmd->add_option("--dispatch", a.dispatch,
                   "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
-  cmd->add_option("--compute-group", a.compute_group, "Compute work group WxH (default 8x8; auto measures 8x8, 16x8, 16x16 and 32x4)")->group("");
+  cmd->add_option("--compute-group", a.compute_group, kComputeGroupHelp)->group("");
   cmd->add_flag("-v,--verbose", a.verbose, "Say which dispatch --dispatch auto chose, and why");
   return cmd;
 }

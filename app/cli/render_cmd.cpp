@@ -58,7 +58,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
       ->check(not_empty());
   cmd->add_option("--dispatch", a.dispatch,
                   "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
-  cmd->add_option("--compute-group", a.compute_group, "Compute work group WxH (default 8x8; auto measures 8x8, 16x8, 16x16 and 32x4)")->group("");
+  cmd->add_option("--compute-group", a.compute_group, kComputeGroupHelp)->group("");
   add_shadertoy_flags(cmd, a.shadertoy);
   add_override_flags(cmd, a.overrides);
   cmd->add_option("--fps", a.fps,

@@ -59,7 +59,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   add_override_flags(cmd, a.overrides);
   cmd->add_option("--dispatch", a.dispatch,
                   "Draw every row as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
-  cmd->add_option("--compute-group", a.compute_group, "Compute work group WxH (default 8x8; auto measures 8x8, 16x8, 16x16 and 32x4)")->group("");
+  cmd->add_option("--compute-group", a.compute_group, kComputeGroupHelp)->group("");
   return cmd;
 }
 

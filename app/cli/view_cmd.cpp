@@ -83,6 +83,7 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_option("--dispatch", a.dispatch,
                   "Trace the scene pass as a fragment pass (default), a compute dispatch, or auto; the window's "
                   "display pass stays fragment (docs/viewer.md#compute)");
+  cmd->add_option("--compute-group", a.compute_group, kComputeGroupHelp)->group("");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Build the generic shader: every feature compiled (docs/specialization.md)");
   cmd->add_option("--allow-include", a.allow_include,
@@ -206,8 +207,10 @@ int run_view(const ViewArgs& a) {
   o.hide_panel = a.no_panel;
   o.dispatch.dispatch = parse_dispatch(a.dispatch);  // a bad name: exit 2 before the window
   // auto: render's cached or measured choice for this device; -v's line on stderr says which.
-  o.dispatch.choose = [](PassGraph& graph, const Program& post, const StillFrame& frame, const Context& ctx) {
-    return choose_dispatch(Dispatch::automatic, graph, post, frame, ctx, {}, true);
+  o.dispatch.group = parse_compute_group(a.compute_group);
+  o.dispatch.choose = [group = o.dispatch.group](PassGraph& graph, const Program& post, const StillFrame& frame,
+                                                 const Context& ctx) {
+    return choose_dispatch(Dispatch::automatic, graph, post, frame, ctx, group, true);
   };
   return live::run_viewer(o);
 }

@@ -36,6 +36,7 @@ struct ViewArgs {
   int debounce_ms = 10;
   bool no_panel = false;
   std::string dispatch = "fragment";  // --dispatch fragment|compute|auto
+  std::string compute_group;          // hidden --compute-group WxH; "": 8x8, or auto's measured group
   bool no_specialize = false;  // the generic shader, not one specialized to the scene
   std::vector<std::string> allow_include;  // more directories #include may read
   Overrides overrides;       // --set, --uniform: applied again at every reload

@@ -41,6 +41,37 @@ std::string png_key(const std::string& attribute) {
   return attribute == "ImageDescription" ? "Description" : attribute;  // as OpenImageIO names it
 }
 
+// The libpng calls alone, so that the frame holding setjmp has no C++
+// object that a longjmp could leave half-updated: true on success, else
+// w.error says why. The caller owns every buffer.
+bool encode_png(PngWrite& w, int width, int height, int color_type, png_bytep* rows, png_text* text, int ntext) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w, png_fail, png_warn);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!png || !info) {
+    png_destroy_write_struct(&png, nullptr);
+    w.error = "libpng cannot create a writer (out of memory)";
+    return false;
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_set_write_fn(png, &w, png_write_bytes, png_flush);
+  png_set_IHDR(png, info, width, height, 8, color_type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  // Fast zlib settings: about 30% larger files, encoding about 3x faster,
+  // which keeps sequence writing hidden behind rendering (docs/animation.md).
+  png_set_compression_level(png, 1);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+  png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_ABSOLUTE);
+  if (ntext > 0) png_set_text(png, info, text, ntext);
+  png_write_info(png, info);
+  png_write_image(png, rows);
+  png_write_end(png, info);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
 void write_png(const Image& image, int out_ch, AtomicFile& file, const ImageMetadata& meta) {
   const int nch = image.nchannels();
   std::vector<png_byte> bytes(static_cast<size_t>(image.width) * image.height * out_ch);
@@ -63,29 +94,9 @@ void write_png(const Image& image, int out_ch, AtomicFile& file, const ImageMeta
   static constexpr int kColorType[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
                                        PNG_COLOR_TYPE_RGB_ALPHA};
   PngWrite w{&file, {}};
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w, png_fail, png_warn);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!png || !info) {
-    png_destroy_write_struct(&png, nullptr);
-    fail_system("libpng: cannot create a writer", file.target().string());
-  }
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
+  if (!encode_png(w, image.width, image.height, kColorType[out_ch - 1], rows.data(), text.data(),
+                  static_cast<int>(text.size())))
     fail_system("cannot write image: " + w.error, file.target().string());
-  }
-  png_set_write_fn(png, &w, png_write_bytes, png_flush);
-  png_set_IHDR(png, info, image.width, image.height, 8, kColorType[out_ch - 1], PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  // Fast zlib settings: about 30% larger files, encoding about 3x faster,
-  // which keeps sequence writing hidden behind rendering (docs/animation.md).
-  png_set_compression_level(png, 1);
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
-  png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_ABSOLUTE);
-  if (!text.empty()) png_set_text(png, info, text.data(), static_cast<int>(text.size()));
-  png_write_info(png, info);
-  png_write_image(png, rows.data());
-  png_write_end(png, info);
-  png_destroy_write_struct(&png, &info);
 }
 
 // OpenEXR writes through this; like the PNG path, a failed write is

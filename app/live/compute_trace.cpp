@@ -37,7 +37,7 @@ std::vector<std::string> ComputeTrace::update(PassGraph& graph, int generation, 
         return notes;
       }
       main_ = std::move(offer->program);
-      notes.push_back("dispatch compute=worker");
+      notes.push_back("dispatch compute=worker group=" + group_name(group()));
     } else {
       try {
         main_ = std::make_shared<const Program>(Program::Compute{}, src);
@@ -45,7 +45,7 @@ std::vector<std::string> ComputeTrace::update(PassGraph& graph, int generation, 
         notes.push_back(refused(format_error(e.info())));
         return notes;
       }
-      notes.push_back("dispatch compute=ui");
+      notes.push_back("dispatch compute=ui group=" + group_name(group()));
     }
     text_ = src.text;
   }

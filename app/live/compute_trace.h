@@ -35,6 +35,9 @@ struct DispatchOptions {
   // program compute can run, with its work group. Unset: auto draws with
   // fragment.
   std::function<DispatchChoice(PassGraph&, const Program& post, const StillFrame&, const Context&)> choose;
+  // --compute-group: the work group compute traces with, and the only one
+  // auto times. Unset: auto's measured group, else 8x8.
+  std::optional<ComputeGroup> group;
 };
 
 class ComputeTrace {
@@ -46,7 +49,7 @@ class ComputeTrace {
   // when the dispatch asks for it. `frame` gives auto's probe its frame. Returns
   // lines for the log, none when there is nothing to say:
   //   "dispatch auto=compute", "dispatch fragment -- <why compute was refused>",
-  //   "dispatch compute=worker" (offered) or "dispatch compute=ui" (compiled here).
+  //   "dispatch compute=worker group=WxH" (offered) or "dispatch compute=ui group=WxH" (compiled here).
   // An error of `choose` passes through; the generation then draws with fragment.
   std::vector<std::string> update(PassGraph& graph, int generation, const Program& post,
                                   const std::function<StillFrame()>& frame);
@@ -58,8 +61,8 @@ class ComputeTrace {
   void offer(std::string text, std::shared_ptr<const Program> program, std::string error);
   // This generation is traced with compute.
   bool active() const { return active_; }
-  // The work group compute traces with: auto's measured one, else 8x8.
-  ComputeGroup group() const { return chosen_ ? chosen_->group : ComputeGroup{}; }
+  // The work group compute traces with: the given one, auto's measured one, else 8x8.
+  ComputeGroup group() const { return opts_.group ? *opts_.group : chosen_ ? chosen_->group : ComputeGroup{}; }
   // What draws this generation: "compute" or "fragment".
   const char* name() const { return active_ ? "compute" : "fragment"; }
 

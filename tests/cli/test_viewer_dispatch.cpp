@@ -76,6 +76,14 @@ TEST_F(DispatchViewer, AComputeFrameAccumulatedToNIsRenderAtSppN) {
   EXPECT_GT(mean_abs_diff(four, render("seed.toml", {"--spp", "1"})), 1e-4) << "nothing was accumulated";
 }
 
+// --compute-group: the program is wrapped with that group, and its frame is
+// the fragment frame still (a 16x8 group covers 160x90 with a partial row).
+TEST_F(DispatchViewer, AGivenComputeGroupIsTheOneDrawn) {
+  start("seed.toml", {"--accumulate", "1", "--dispatch", "compute", "--compute-group", "16x8"});
+  EXPECT_FALSE(wait_for_line(log(), "^dispatch compute=(worker|ui) group=16x8$", 5).empty()) << read_file(log());
+  EXPECT_LE(max_abs_diff(read_image(dir / "cap/frame_0.png"), render("seed.toml", {})), 1.0 / 255.0);
+}
+
 TEST_F(DispatchViewer, AutoLogsItsChoiceAndDrawsIt) {
   start("seed.toml", {"--accumulate", "1", "--dispatch", "auto"});
   const std::string chosen = wait_for_line(log(), "^dispatch auto=(fragment|compute)$", 5);
@@ -142,15 +150,16 @@ TEST_F(DispatchViewer, TheComputeProgramCompilesOnTheWorker) {
   ASSERT_FALSE(wait_for_line(log(), "^capture 1 ", 10).empty()) << read_file(log());
   const std::vector<std::string> lines = file_lines(log());
   // reload 0's program and reload 1's, both from the worker, both drawn by compute.
-  EXPECT_EQ(std::count(lines.begin(), lines.end(), "dispatch compute=worker"), 2) << read_file(log());
-  EXPECT_EQ(std::count(lines.begin(), lines.end(), "dispatch compute=ui"), 0) << read_file(log());
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), "dispatch compute=worker group=8x8"), 2) << read_file(log());
+  EXPECT_EQ(std::count_if(lines.begin(), lines.end(), [](const std::string& l) { return l.rfind("dispatch compute=ui", 0) == 0; }), 0)
+      << read_file(log());
   EXPECT_EQ(std::count(lines.begin(), lines.end(), "program fused=1 dispatch=compute"), 2) << read_file(log());
   const Image got = read_image(dir / "cap/frame_1.png");
   EXPECT_LE(max_abs_diff(got, render("seed.toml", {})), 1.0 / 255.0);
   EXPECT_GT(mean_abs_diff(got, read_image(dir / "cap/frame_0.png")), 1e-3) << "the reload did not change the image";
 }
 
-TEST(DispatchViewerFlag, ABadNameIsOneLineAndExit2) {
+TEST(DispatchViewerFlag, ABadNameOrGroupIsOneLineAndExit2) {
   TempDir dir;
   write_file(dir / "seed.toml", kBallScene);
   write_file(dir / "seed.glsl", kBallMap);
@@ -158,6 +167,10 @@ TEST(DispatchViewerFlag, ABadNameIsOneLineAndExit2) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--dispatch 'gpu'"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const RunResult g = run_marchstudio({"view", (dir / "seed.toml").string(), "--compute-group", "64x64"});
+  EXPECT_EQ(g.exit_code, 2) << g.err;
+  EXPECT_NE(g.err.find("--compute-group '64x64'"), std::string::npos) << g.err;
+  EXPECT_EQ(std::count(g.err.begin(), g.err.end(), '\n'), 1) << g.err;
 }
 
 }  // namespace
