@@ -82,8 +82,9 @@ class MacroEngine {
   void condition(std::string_view kind, const std::vector<PpToken>& toks, PpWhere where);
   bool evaluate(const std::vector<PpToken>& toks, size_t at, PpWhere where, bool& known);
   void flush();
-  template <class Out>
+  template <class Out>  // macro_expand.cpp alone instantiates it
   void expand(std::deque<PpToken>& in, Out&& out, int nesting);
+  void expand_to(std::deque<PpToken>& in, std::vector<PpToken>& out, int nesting);
   std::vector<PpToken> substitute(const Macro& m, const std::vector<std::vector<PpToken>>& args,
                                   const PpToken& call, int hideset, int nesting);
   PpToken paste(const PpToken& a, const PpToken& b);
@@ -111,6 +112,14 @@ class MacroEngine {
   bool continuing_ = false;
   std::size_t expanded_ = 0;
   ExprDepth depth_;
+};
+
+struct MacroEngine::Macro {
+  std::string name;
+  bool function = false;
+  std::vector<std::string> params;
+  std::string text;  // the body's spelling: body tokens point into it
+  std::vector<PpToken> body;
 };
 
 }  // namespace ms

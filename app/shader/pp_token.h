@@ -25,12 +25,15 @@ struct PpToken {
   std::string_view text;  // points into the source, a macro body or the engine's arena
   PpKind kind = PpKind::other;
   bool space_before = false;  // whitespace separated it from the previous token
-  int hideset = 0;            // macro_engine.cpp: the macros this token may no longer expand
+  int hideset = 0;            // macro_expand.cpp: the macros this token may no longer expand
   PpWhere where;
 };
 
 // Appends the tokens of `text` (comments already removed) to `out`.
 void lex_pp_tokens(std::string_view text, PpWhere where, std::vector<PpToken>& out);
+
+// `t` is the punctuator `s`.
+inline bool is_punct(const PpToken& t, std::string_view s) { return t.kind == PpKind::punct && t.text == s; }
 
 inline bool is_pp_ident_start(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
