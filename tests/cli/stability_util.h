@@ -1,5 +1,6 @@
-// Helpers for tests/cli/test_stability.cpp: render a scenes/hard/ scene with
-// every AOV through the real binary, scene variants, the stated tolerances
+// Helpers for tests/cli/test_stability.cpp and test_nan_guard.cpp: render
+// a scenes/hard/ scene with every AOV through the real binary, scene
+// variants, the stated tolerances
 // (tests/cost/stability.toml), and an exact reference: sphere tracing in
 // double precision of a C++ twin of the scene's map() (exact fields only),
 // converged to 1e-9, which also measures how close each ray passes to a

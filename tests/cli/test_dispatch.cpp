@@ -146,7 +146,7 @@ TEST(Dispatch, WorkGroupsAndStripesEqualFragment) {
 }
 
 // A copy of the library whose main() makes the left 8 columns' sample
-// colour NaN (as tests/cli/test_stability.cpp's NanGuard tests do): the
+// colour NaN (as tests/cli/test_nan_guard.cpp does): the
 // flag path of main.frag and post.frag, fused, accumulated and with AOVs.
 TEST(Dispatch, NanGuardCountsTheSamePixels) {
   TempDir dir;
