@@ -1,13 +1,17 @@
 #include "run.h"
 
+#include <gtest/gtest.h>
+
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 namespace ms::test {
 namespace fs = std::filesystem;
@@ -48,6 +52,26 @@ pid_t spawn_marchstudio(const std::vector<std::string>& args, const fs::path& di
     _exit(127);
   }
   return pid;
+}
+
+int count_files(const fs::path& dir, const std::string& prefix) {
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    n += name.rfind(prefix, 0) == 0 && name.find(".tmp") == std::string::npos;
+  }
+  return n;
+}
+
+void wait_for_files(const fs::path& dir, const std::string& prefix, int n, pid_t pid, const std::string& log) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (count_files(dir, prefix) < n) {
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, WNOHANG), 0)
+        << "the render ended before " << n << " files appeared" << (log.empty() ? "" : ": " + read_file(dir / log));
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline) << n << " files did not appear in 120 s";
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
 }
 
 RunResult run_marchstudio(const std::vector<std::string>& args, const fs::path& cwd, const std::string& shell_prefix) {

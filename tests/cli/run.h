@@ -24,6 +24,14 @@ RunResult run_marchstudio(const std::vector<std::string>& args, const std::files
 // file `log` (relative to `dir`); the caller waits for or kills the pid.
 pid_t spawn_marchstudio(const std::vector<std::string>& args, const std::filesystem::path& dir, const std::string& log);
 
+// Finished files in `dir` whose names start with `prefix` (temporaries,
+// named *.tmp*, left out).
+int count_files(const std::filesystem::path& dir, const std::string& prefix);
+// Polls until `dir` holds `n` such files: a fatal test failure when `pid`
+// ends first (with `log`, a file under `dir`, in the message) or after 120 s.
+void wait_for_files(const std::filesystem::path& dir, const std::string& prefix, int n, pid_t pid,
+                    const std::string& log = {});
+
 // A fresh empty directory under the system temp dir, removed by the destructor.
 class TempDir {
  public:

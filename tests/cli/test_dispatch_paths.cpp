@@ -79,33 +79,19 @@ TEST(DispatchSequence, ComputeEqualsFragmentFrameByFrame) {
   EXPECT_GT(max_diff(read_image(dir / "f_00.exr"), read_image(dir / "f_03.exr")), 1e-3);
 }
 
-int count_frames(const fs::path& dir, const std::string& prefix) {
-  int n = 0;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    const std::string name = e.path().filename().string();
-    n += name.rfind(prefix, 0) == 0 && name.find(".tmp") == std::string::npos;
-  }
-  return n;
-}
-
 TEST(DispatchSequence, KilledComputeSequenceResumesEqualToFragment) {
   TempDir dir;
   write_file(dir / "slow.glsl", kSlow);
   const std::vector<std::string> args = {"render", "slow.glsl", "--frames", "0..11", "--size",
                                          "160x90", "--dispatch", "compute", "-o",    "k_%02d.png"};
   const pid_t pid = spawn_marchstudio(args, dir.path(), "first.log");
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (count_frames(dir.path(), "k_") < 3) {
-    int status = 0;
-    ASSERT_EQ(waitpid(pid, &status, WNOHANG), 0) << "the render ended before 3 frames: " << read_file(dir / "first.log");
-    ASSERT_LT(std::chrono::steady_clock::now(), deadline);
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  wait_for_files(dir.path(), "k_", 3, pid, "first.log");
+  if (HasFatalFailure()) return;
   ASSERT_EQ(kill(pid, SIGKILL), 0);
   int status = 0;
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status));
-  const int before = count_frames(dir.path(), "k_");
+  const int before = count_files(dir.path(), "k_");
   ASSERT_LT(before, 12) << "killed halfway, not at the end";
 
   const RunResult r = run_marchstudio(args, dir.path());
@@ -130,7 +116,7 @@ TEST(DispatchSequence, RefusesWhatComputeCannotRunInOneLine) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("d.glsl:2"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_EQ(count_frames(dir.path(), "x_"), 0);
+  EXPECT_EQ(count_files(dir.path(), "x_"), 0);
 }
 
 TEST(DispatchAuto, ProbesOnceThenReadsTheCache) {

@@ -47,23 +47,6 @@ std::vector<std::string> temp_files(const fs::path& dir) {
   return out;
 }
 
-int count_frames(const fs::path& dir, const std::string& prefix) {
-  int n = 0;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().filename().string().rfind(prefix, 0) == 0) ++n;
-  return n;
-}
-
-void wait_for_frames(const fs::path& dir, const std::string& prefix, int n, pid_t pid) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (count_frames(dir, prefix) < n) {
-    int status = 0;
-    ASSERT_EQ(waitpid(pid, &status, WNOHANG), 0) << "the render ended before " << n << " frames appeared";
-    ASSERT_LT(std::chrono::steady_clock::now(), deadline);
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-}
-
 TEST(Sequence, FrameTimeIsExactlyFrameOverFps) {
   TempDir dir;
   write_file(dir / "clock.glsl", kClock);
@@ -130,7 +113,7 @@ void expect_shards_cover(const std::string& mode) {
     EXPECT_EQ(printed.count(name), 1u) << name << " written by exactly one shard";
     EXPECT_TRUE(frame_is_complete(dir / name, 2, 2)) << name;
   }
-  EXPECT_EQ(count_frames(dir.path(), "s_"), 11);
+  EXPECT_EQ(count_files(dir.path(), "s_"), 11);
 }
 
 TEST(Sequence, StrideShardsRenderEachFrameOnce) { expect_shards_cover("stride"); }
@@ -142,12 +125,12 @@ TEST(Sequence, ResumesAfterSigkill) {
   const std::vector<std::string> args = {"render", "slow.glsl", "--frames", "0..23", "--size", "160x90",
                                          "-o", "k_%03d.png"};
   const pid_t pid = spawn_marchstudio(args, dir.path(), "first.log");
-  wait_for_frames(dir.path(), "k_", 3, pid);
+  wait_for_files(dir.path(), "k_", 3, pid);
   ASSERT_EQ(kill(pid, SIGKILL), 0);
   int status = 0;
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status));
-  const int before = count_frames(dir.path(), "k_");
+  const int before = count_files(dir.path(), "k_");
   ASSERT_LT(before, 24) << "killed halfway, not at the end";
   // What a kill during a write leaves behind (the name write_image uses).
   write_file(dir / ".k_023.tmp99999.png", "half a png");
@@ -173,7 +156,7 @@ TEST(Sequence, SigtermStopsCleanlyAndKeepsRenderedFrames) {
   write_file(dir / "slow.glsl", kSlow);
   const pid_t pid = spawn_marchstudio({"render", "slow.glsl", "--frames", "0..23", "--size", "160x90", "-o", "t_%03d.png"},
                           dir.path(), "run.log");
-  wait_for_frames(dir.path(), "t_", 2, pid);
+  wait_for_files(dir.path(), "t_", 2, pid);
   ASSERT_EQ(kill(pid, SIGTERM), 0);
   int status = 0;
   waitpid(pid, &status, 0);
@@ -181,7 +164,7 @@ TEST(Sequence, SigtermStopsCleanlyAndKeepsRenderedFrames) {
   EXPECT_EQ(WEXITSTATUS(status), 143);
   const std::string log = read_file(dir / "run.log");
   EXPECT_NE(log.find("stopped by SIGTERM"), std::string::npos) << log;
-  EXPECT_EQ(count_frames(dir.path(), "t_"), count_lines_with(log, " rendered in ")) << "every rendered frame is written";
+  EXPECT_EQ(count_files(dir.path(), "t_"), count_lines_with(log, " rendered in ")) << "every rendered frame is written";
   EXPECT_EQ(temp_files(dir.path()), std::vector<std::string>{});
 }
 
@@ -193,7 +176,7 @@ TEST(Sequence, NoWriteRendersButWritesNothing) {
                                 dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(count_lines_with(r.err, " rendered in "), 4) << r.err;
-  EXPECT_EQ(count_frames(dir.path(), "n_"), 0);
+  EXPECT_EQ(count_files(dir.path(), "n_"), 0);
 }
 
 // Each bad flag: exit 2, one line naming the flag, and no file at all.
@@ -265,7 +248,7 @@ TEST(Sequence, VideoRunsFfmpegOnTheFrames) {
   EXPECT_EQ(read_file(dir / "out.mp4"), "video\n");
   const std::string args = read_file(bin / "args");
   EXPECT_NE(args.find("-framerate\n12\n-start_number\n2\n-i\nv_%03d.png\n"), std::string::npos) << args;
-  EXPECT_EQ(count_frames(dir.path(), "v_"), 4);
+  EXPECT_EQ(count_files(dir.path(), "v_"), 4);
   EXPECT_EQ(temp_files(dir.path()), std::vector<std::string>{});
 }
 
