@@ -1,6 +1,8 @@
 #include "render/uniforms.h"
 
+#include <array>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -42,6 +44,63 @@ const MaterialValue kMaterialValues[] = {
     {"patternVelocity", "pattern_velocity", &Material::pattern_velocity},
 };
 
+// The uniform names of each light and material slot, built once: every
+// frame sets them all, and building the strings anew took about a third
+// of stilllife's submit time (docs/gpu.md#per-frame-host-costs). Static
+// locals: a compile worker's thread sets uniforms too, and their
+// initialization is thread-safe.
+struct LightNames {
+  std::string pos, color, size, atten, live_pos, live_color, live_size, live_atten;
+};
+const std::array<LightNames, kMaxLights>& light_names() {
+  static const std::array<LightNames, kMaxLights> names = [] {
+    std::array<LightNames, kMaxLights> t;
+    for (size_t i = 0; i < kMaxLights; ++i) {
+      const std::string b = "uLights[" + std::to_string(i) + "].", l = "uLive_lights_" + std::to_string(i) + "_";
+      t[i] = {b + "pos", b + "color", b + "size", b + "atten", l + "pos", l + "color", l + "size", l + "atten"};
+    }
+    return t;
+  }();
+  return names;
+}
+
+constexpr size_t kMaterialValueCount = std::size(kMaterialValues);
+struct MaterialNames {
+  std::string pattern;
+  std::array<std::string, kMaterialValueCount> field, live;  // by kMaterialValues' order
+};
+const std::array<MaterialNames, kMaxMaterials>& material_names() {
+  static const std::array<MaterialNames, kMaxMaterials> names = [] {
+    std::array<MaterialNames, kMaxMaterials> t;
+    for (size_t i = 0; i < kMaxMaterials; ++i) {
+      const std::string b = "uMaterials[" + std::to_string(i) + "].", l = "uLive_materials_" + std::to_string(i) + "_";
+      t[i].pattern = b + "pattern";
+      for (size_t k = 0; k < kMaterialValueCount; ++k) {
+        t[i].field[k] = b + kMaterialValues[k].field;
+        t[i].live[k] = l + kMaterialValues[k].key;
+      }
+    }
+    return t;
+  }();
+  return names;
+}
+
+// Shadertoy's per-channel names, iChannelN, iChannelTime[N], iChannelResolution[N].
+struct ChannelNames {
+  std::string sampler, time, resolution;
+};
+const std::array<ChannelNames, 4>& channel_names() {
+  static const std::array<ChannelNames, 4> names = [] {
+    std::array<ChannelNames, 4> t;
+    for (int i = 0; i < 4; ++i) {
+      const std::string n = std::to_string(i);
+      t[i] = {"iChannel" + n, "iChannelTime[" + n + "]", "iChannelResolution[" + n + "]"};
+    }
+    return t;
+  }();
+  return names;
+}
+
 }  // namespace
 
 void set_scene_uniforms(const Program& p, const Scene& s, int width, int height, float time, int frame) {
@@ -74,30 +133,29 @@ void set_scene_uniforms(const Program& p, const Scene& s, int width, int height,
   // same values: glsl_light); glUniform* ignores their -1 locations.
   for (size_t i = 0; i < s.lights.size(); ++i) {
     const GlslLight l = glsl_light(s.lights[i]);
-    const std::string base = "uLights[" + std::to_string(i) + "].";
-    glUniform4fv(p.loc(base + "pos"), 1, glm::value_ptr(l.pos));
-    set3(p, base + "color", l.color);
-    set1(p, base + "size", l.size);
-    set3(p, base + "atten", l.atten);
+    const LightNames& n = light_names()[i];
+    glUniform4fv(p.loc(n.pos), 1, glm::value_ptr(l.pos));
+    set3(p, n.color, l.color);
+    set1(p, n.size, l.size);
+    set3(p, n.atten, l.atten);
     // A value the viewer keeps live in a folded table (shader/specialize.h live_uniform_name).
-    const std::string live = "uLive_lights_" + std::to_string(i) + "_";
-    set3(p, live + "pos", glm::vec3(l.pos));
-    set3(p, live + "color", l.color);
-    set1(p, live + "size", l.size);
-    set3(p, live + "atten", l.atten);
+    set3(p, n.live_pos, glm::vec3(l.pos));
+    set3(p, n.live_color, l.color);
+    set1(p, n.live_size, l.size);
+    set3(p, n.live_atten, l.atten);
   }
   for (size_t i = 0; i < s.materials.size(); ++i) {
     const Material& m = s.materials[i];
-    const std::string base = "uMaterials[" + std::to_string(i) + "].";
-    const std::string live = "uLive_materials_" + std::to_string(i) + "_";
-    glUniform1i(p.loc(base + "pattern"), m.pattern == Pattern::checker ? 1 : 0);
-    for (const MaterialValue& v : kMaterialValues) {
+    const MaterialNames& n = material_names()[i];
+    glUniform1i(p.loc(n.pattern), m.pattern == Pattern::checker ? 1 : 0);
+    for (size_t k = 0; k < std::size(kMaterialValues); ++k) {
+      const MaterialValue& v = kMaterialValues[k];
       if (v.vec) {
-        set3(p, base + v.field, m.*v.vec);
-        set3(p, live + v.key, m.*v.vec);
+        set3(p, n.field[k], m.*v.vec);
+        set3(p, n.live[k], m.*v.vec);
       } else {
-        set1(p, base + v.field, m.*v.scalar);
-        set1(p, live + v.key, m.*v.scalar);
+        set1(p, n.field[k], m.*v.scalar);
+        set1(p, n.live[k], m.*v.scalar);
       }
     }
   }
@@ -132,10 +190,10 @@ void set_shadertoy_uniforms(const Program& p, int width, int height, const Shade
   glUniform4f(p.loc("iDate"), 2000.0f, 0.0f, 1.0f, in.time);
   set1(p, "iSampleRate", kShadertoySampleRate);  // Shadertoy's constant, whatever audio is bound
   for (int i = 0; i < 4; ++i) {
-    const std::string idx = std::to_string(i);
-    glUniform1i(p.loc("iChannel" + idx), i);
-    glUniform1f(p.loc("iChannelTime[" + idx + "]"), in.time);
-    glUniform3fv(p.loc("iChannelResolution[" + idx + "]"), 1, in.channel_resolution[i]);
+    const ChannelNames& n = channel_names()[i];
+    glUniform1i(p.loc(n.sampler), i);
+    glUniform1f(p.loc(n.time), in.time);
+    glUniform3fv(p.loc(n.resolution), 1, in.channel_resolution[i]);
   }
 }
 

@@ -30,8 +30,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::size_t kMaxLights = 8;
-constexpr std::size_t kMaxMaterials = 32;
 // Squared length below which a direction has no usable direction.
 constexpr double kTinySq = 1e-12;
 

@@ -145,6 +145,11 @@ struct AnimationTrack {
   int line = 0;                // of the [[animation]] table, for errors at render time
 };
 
+// At most this many [[lights]] and [[materials]] (scene/load.cpp refuses
+// more): the shaders' uniform arrays and the host's name tables are sized by them.
+inline constexpr std::size_t kMaxLights = 8;
+inline constexpr std::size_t kMaxMaterials = 32;
+
 struct Scene {
   std::filesystem::path file;      // the .toml, as given
   std::filesystem::path map_file;  // the GLSL with vec2 map(vec3 p), resolved
