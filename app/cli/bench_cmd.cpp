@@ -10,6 +10,7 @@
 #include "bench/bench.h"
 #include "bench/bench_report.h"
 #include "cli/bloom_setup.h"
+#include "cli/common_flags.h"
 #include "cli/dispatch_flag.h"
 #include "cli/dispatch_probe.h"
 #include "cli/flag_checks.h"
@@ -38,18 +39,11 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
   cmd->add_flag("--json", a.json, "Print one JSON object (schema marchstudio.bench/1) instead of a table");
   cmd->add_flag("--shader-cache", a.shader_cache,
                 "Allow the driver's on-disk shader cache (default: off, so compile times are cold)");
-  cmd->add_option("--backend", a.backend, "GL context: auto, egl or osmesa")
-      ->check(one_of(kBackendNames));
-  cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
-  cmd->add_option("--preset", a.preset,
-                  "Quality preset: fast, balanced, reference or textbook (default: the scene's; its explicit "
-                  "[quality] keys still apply)")
-      ->check(one_of(quality_preset_names()));
-  cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter, bloom")
-      ->delimiter(',')
-      ->check(one_of(kEffectNames));
-  cmd->add_option("--allow-include", a.allow_include,
-                  "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
+  add_backend_flag(cmd, a.backend);
+  add_shader_dir_flag(cmd, a.shader_dir);
+  add_preset_flag(cmd, a.preset);
+  add_disable_flag(cmd, a.disable);
+  add_allow_include_flag(cmd, a.allow_include);
   cmd->add_flag("--strict", a.strict,
                 "Fail (exit 1) when any pixel of the counting pass has a NaN or Inf (colour or AOV); "
                 "the report is still printed");

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "cli/batch.h"
+#include "cli/common_flags.h"
 #include "cli/flag_checks.h"
 #include "cli/input.h"
 #include "cli/render_job.h"
@@ -43,16 +44,10 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   cmd->add_option("--spp", a.spp, "Samples per pixel, stratified, 1..1024 (default: the scene's)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--frame", a.frame, "Frame number (uFrame / iFrame)");
-  cmd->add_option("--backend", a.backend, "GL context: auto, egl or osmesa")
-      ->check(one_of(kBackendNames));
-  cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
-  cmd->add_option("--preset", a.preset,
-                  "Quality preset: fast, balanced, reference or textbook (default: the scene's; its explicit "
-                  "[quality] keys still apply)")
-      ->check(one_of(quality_preset_names()));
-  cmd->add_option("--disable", a.disable, "Switch effects off: shadows, reflections, ao, checker-filter, bloom")
-      ->delimiter(',')
-      ->check(one_of(kEffectNames));
+  add_backend_flag(cmd, a.backend);
+  add_shader_dir_flag(cmd, a.shader_dir);
+  add_preset_flag(cmd, a.preset);
+  add_disable_flag(cmd, a.disable);
   cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
   cmd->add_option("--frames", a.frames, "Render frames A..B (both included) to -o PATTERN, e.g. out/f_%04d.png")
       ->check(not_empty());
@@ -88,8 +83,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                 "Fail (exit 1, no file written) when any pixel has a NaN or Inf in its colour or AOVs; "
                 "without it they are counted on stderr");
   cmd->add_flag("--watch", a.watch, "Render again on every save of the scene or a file it includes, until Ctrl+C");
-  cmd->add_option("--allow-include", a.allow_include,
-                  "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
+  add_allow_include_flag(cmd, a.allow_include);
   cmd->add_option("--timeout", a.timeout,
                   "Give up after SECONDS per image (each frame of --frames): exit 3, no file written");
   cmd->add_option("--tile-size", a.tile_size, "Largest square one draw covers, pixels (0: the whole frame)")

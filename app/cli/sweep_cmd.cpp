@@ -13,6 +13,7 @@
 #include "bench/plot.h"
 #include "bench/sweep.h"
 #include "bench/sweep_report.h"
+#include "cli/common_flags.h"
 #include "cli/dispatch_flag.h"
 #include "cli/dispatch_probe.h"
 #include "cli/flag_checks.h"
@@ -48,11 +49,9 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   cmd->add_option("--only", a.only, "Measure only these rows of the grid, by name (e.g. textbook,balanced)")
       ->delimiter(',');
   cmd->add_option("-o,--out", a.out, "Directory for <scene>.sweep.csv, .json and .png (default .)");
-  cmd->add_option("--backend", a.backend, "GL context: auto, egl or osmesa")
-      ->check(one_of(kBackendNames));
-  cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
-  cmd->add_option("--allow-include", a.allow_include,
-                  "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
+  add_backend_flag(cmd, a.backend);
+  add_shader_dir_flag(cmd, a.shader_dir);
+  add_allow_include_flag(cmd, a.allow_include);
   cmd->add_flag("-q,--quiet", a.quiet, "No progress lines on stderr");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Measure the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");

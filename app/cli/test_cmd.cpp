@@ -16,6 +16,7 @@
 #include "bench/suite_html.h"
 #include "bench/suite_report.h"
 #include "bench/suite_run.h"
+#include "cli/common_flags.h"
 #include "cli/dispatch_flag.h"
 #include "cli/exit_codes.h"
 #include "cli/input.h"
@@ -45,7 +46,7 @@ CLI::App* add_test_command(CLI::App& app, TestArgs& a) {
                   "default (0 pass, 1 fail, 2 bad input, 3 system) or idiff (0 pass, 1 warn, 2 fail, 4 could not run)");
   cmd->add_option("--only", a.only, "Run only the cases whose name matches this glob (repeatable)");
   cmd->add_flag("--list", a.list, "Print the suite's cases, as expanded, and exit");
-  cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
+  add_shader_dir_flag(cmd, a.shader_dir);
   cmd->add_option("--dispatch", a.dispatch,
                   "Draw every case's images and counting pass as a fragment pass (default) or a compute dispatch "
                   "(docs/gpu.md)");

@@ -7,6 +7,7 @@
 #include <regex>
 #include <sstream>
 
+#include "cli/common_flags.h"
 #include "cli/dispatch_flag.h"
 #include "cli/dispatch_probe.h"
 #include "cli/flag_checks.h"
@@ -30,7 +31,7 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
                                              "reloads on every save (docs/viewer.md)");
   cmd->add_option("input", a.input, "Scene .toml or Shadertoy .glsl/.frag")->required();
   cmd->add_option("--size", a.size, "Window size WxH (default: the scene's, at most 1280x720)")->check(not_empty());
-  cmd->add_option("--shader-dir", a.shader_dir, "The sdf_shaders/ directory");
+  add_shader_dir_flag(cmd, a.shader_dir);
   cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
   cmd->add_option("--debug-view", a.debug_view,
                   "Start in a debug view: 0 lit, 1 steps, 2 normals, 3 depth, 4 AO, 5 shadow, 6 material id")
@@ -86,8 +87,7 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_option("--compute-group", a.compute_group, kComputeGroupHelp)->group("");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Build the generic shader: every feature compiled (docs/specialization.md)");
-  cmd->add_option("--allow-include", a.allow_include,
-                  "Let #include read files under DIR too (default: the scene's directory and the shader dir)");
+  add_allow_include_flag(cmd, a.allow_include);
   add_override_flags(cmd, a.overrides);
   return cmd;
 }
