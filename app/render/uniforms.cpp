@@ -133,7 +133,7 @@ void set_scene_uniforms(const Program& p, const Scene& s, int width, int height,
   // same values: glsl_light); glUniform* ignores their -1 locations.
   for (size_t i = 0; i < s.lights.size(); ++i) {
     const GlslLight l = glsl_light(s.lights[i]);
-    const LightNames& n = light_names()[i];
+    const LightNames& n = light_names().at(i);  // load.cpp refuses more than kMaxLights
     glUniform4fv(p.loc(n.pos), 1, glm::value_ptr(l.pos));
     set3(p, n.color, l.color);
     set1(p, n.size, l.size);
@@ -146,7 +146,7 @@ void set_scene_uniforms(const Program& p, const Scene& s, int width, int height,
   }
   for (size_t i = 0; i < s.materials.size(); ++i) {
     const Material& m = s.materials[i];
-    const MaterialNames& n = material_names()[i];
+    const MaterialNames& n = material_names().at(i);
     glUniform1i(p.loc(n.pattern), m.pattern == Pattern::checker ? 1 : 0);
     for (size_t k = 0; k < std::size(kMaterialValues); ++k) {
       const MaterialValue& v = kMaterialValues[k];
