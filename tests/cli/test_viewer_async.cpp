@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <regex>
 
 #include "io/image_io.h"
@@ -17,19 +16,12 @@ namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-// The heavy map's length: enough that its compile and JIT outlast many
-// 160x90 frames, short enough to keep these tests to seconds.
-constexpr int kHeavy = 30;
-std::string map_glsl(const std::string& radius, bool heavy, const std::string& tail = "", int lines = kHeavy) {
-  return ball_map(radius, heavy ? lines : 0, tail);
-}
-
 class AsyncReload : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
     write_file(dir / "seed.toml", kBallScene);
-    write_file(dir / "seed.glsl", map_glsl("1.0", false));
+    write_file(dir / "seed.glsl", ball_map("1.0"));
     const std::string server = std::to_string(100 + (getpid() + 4111) % 20000);
     proc = std::make_unique<BackgroundProcess>(
         std::vector<std::string>{"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
@@ -57,7 +49,7 @@ class AsyncReload : public ::testing::Test {
 };
 
 TEST_F(AsyncReload, FramesKeepComingWhileAHeavyShaderCompiles) {
-  const std::string heavy = map_glsl("1.3", true);
+  const std::string heavy = ball_map("1.3", kHeavyLines);
   save_by_rename(dir / "seed.glsl", heavy);
   ASSERT_FALSE(wait_for_line(log(), "^reload compiling 1$", 20).empty()) << read_file(log());
   const std::string line = wait_for_line(log(), "^reload (ok|failed) 1 ", 90);
@@ -72,9 +64,9 @@ TEST_F(AsyncReload, FramesKeepComingWhileAHeavyShaderCompiles) {
 }
 
 TEST_F(AsyncReload, ASaveDuringACompileEndsOnTheNewestFile) {
-  save_by_rename(dir / "seed.glsl", map_glsl("1.3", true));
+  save_by_rename(dir / "seed.glsl", ball_map("1.3", kHeavyLines));
   ASSERT_FALSE(wait_for_line(log(), "^reload compiling 1$", 20).empty()) << read_file(log());
-  const std::string last = map_glsl("0.7", true, "// the newest\n");
+  const std::string last = ball_map("0.7", kHeavyLines, "// the newest\n");
   save_by_rename(dir / "seed.glsl", last);
   // Number 1 is dropped for number 2 (or done first, when it won the race).
   const std::string line = wait_for_line(log(), "^reload (ok|failed) 2 ", 90);
@@ -89,7 +81,7 @@ TEST_F(AsyncReload, ASaveDuringACompileEndsOnTheNewestFile) {
 
 TEST_F(AsyncReload, ABrokenShaderKeepsTheLastGoodFrame) {
   // Heavy and then a type error at its last line: found by the worker's compile.
-  const std::string broken = map_glsl("1.3", true, "float broken() { return vec3(1.0); }\n");
+  const std::string broken = ball_map("1.3", kHeavyLines, "float broken() { return vec3(1.0); }\n");
   const int bad_line = static_cast<int>(std::count(broken.begin(), broken.end(), '\n'));
   save_by_rename(dir / "seed.glsl", broken);
   ASSERT_FALSE(wait_for_line(log(), "^reload compiling 1$", 20).empty()) << read_file(log());
@@ -100,7 +92,7 @@ TEST_F(AsyncReload, ABrokenShaderKeepsTheLastGoodFrame) {
   ASSERT_FALSE(wait_for_line(log(), "^capture 1 ", 10).empty());
   EXPECT_LT(mean_abs_diff(capture(1), capture(0)), 1e-3) << "a failed reload changed the image";
   // Fixed: the worker's next program shows.
-  const std::string fixed = map_glsl("1.3", false);
+  const std::string fixed = ball_map("1.3");
   save_by_rename(dir / "seed.glsl", fixed);
   ASSERT_EQ(wait_for_line(log(), "^reload (ok|failed) 2 ", 90).rfind("reload ok 2 ", 0), 0u) << read_file(log());
   ASSERT_FALSE(wait_for_line(log(), "^capture 2 ", 10).empty());
@@ -115,7 +107,7 @@ TEST(AsyncRebuild, ADraggedValueCompilesOnTheWorker) {
   if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
   TempDir dir;
   write_file(dir / "seed.toml", kBallScene);
-  write_file(dir / "seed.glsl", map_glsl("1.0", true, "", 20));
+  write_file(dir / "seed.glsl", ball_map("1.0", 20));
   const fs::path log = dir / "log.txt";
   const std::string server = std::to_string(100 + (getpid() + 5123) % 20000);
   BackgroundProcess proc({"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
@@ -134,7 +126,7 @@ TEST(AsyncRebuild, ADraggedValueCompilesOnTheWorker) {
   for (const std::string& v : values) EXPECT_GT(field(v, "frames_during_compile"), 0) << v;
   TempDir r;
   write_file(r / "seed.toml", kBallScene);
-  write_file(r / "seed.glsl", map_glsl("1.0", true, "", 20));
+  write_file(r / "seed.glsl", ball_map("1.0", 20));
   const RunResult run = run_marchstudio({"render", (r / "seed.toml").string(), "--size", "160x90", "--set",
                                          "materials.ball.color=[0.1,0.3,0.9]", "-o", (r / "out.png").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;

@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "io/image_io.h"
 #include "run.h"
@@ -23,7 +22,7 @@ const char* kDerivative = "void mainImage(out vec4 c, in vec2 f) {\n  c = vec4(v
 
 // kBallMap's ball of radius 1.3 behind ball_map()'s slow-to-compile
 // function: the image is the ball's, the compile and JIT take seconds.
-std::string heavy_map() { return ball_map("1.3", 30); }
+std::string heavy_map() { return ball_map("1.3", kHeavyLines); }
 
 class DispatchViewer : public ::testing::Test {
  protected:

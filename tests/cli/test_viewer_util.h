@@ -176,18 +176,11 @@ name = "ball"
 color = [0.85, 0.10, 0.06]
 )";
 
-// kBallScene's map: the ball of radius 1 on the floor.
-inline const char* const kBallMap =
-    "vec2 map(vec3 p) {\n"
-    "  vec2 ground = vec2(sdPlane(p, vec3(0.0, 1.0, 0.0), 0.0), MAT_FLOOR);\n"
-    "  vec2 ball = vec2(sdSphere(p - vec3(0.0, 1.0, 0.0), 1.0), MAT_BALL);\n"
-    "  return opUnion(ground, ball);\n"
-    "}\n";
-
-// kBallMap with the ball's `radius`; with heavy_lines > 0, plus a long
-// function behind a branch no ray takes (p.y > 1e6), so the image stays
-// the ball's while llvmpipe's compile and JIT take a second or more. Its
-// constant differs per process, so Mesa's disk shader cache never has it.
+// kBallScene's map: the ball of `radius` on the floor. With heavy_lines >
+// 0, plus a long function behind a branch no ray takes (p.y > 1e6), so the
+// image stays the ball's while llvmpipe's compile and JIT take a second or
+// more; its constant differs per process, so Mesa's disk shader cache
+// never has it.
 inline std::string ball_map(const std::string& radius, int heavy_lines = 0, const std::string& tail = "") {
   static const std::string salt =
       std::to_string((std::chrono::steady_clock::now().time_since_epoch().count() + getpid()) % 1000003);
@@ -204,6 +197,12 @@ inline std::string ball_map(const std::string& radius, int heavy_lines = 0, cons
   if (heavy_lines > 0) s += "  if (p.y > 1e6) ball.x = heavy(p);\n";
   return s + "  return opUnion(ground, ball);\n}\n" + tail;
 }
+
+// The ball of radius 1 on the floor.
+inline const std::string kBallMap = ball_map("1.0");
+// A heavy map's length: its compile and JIT outlast many 160x90 frames on
+// llvmpipe, and a test with it still takes seconds, not a minute.
+inline constexpr int kHeavyLines = 30;
 
 // Replace a file the way vim and VS Code save it: write a temporary next to
 // it, then rename it over the original.
