@@ -17,6 +17,7 @@
 
 #include "image_diff.h"
 #include "io/image_io.h"
+#include "nan_shaders.h"
 #include "run.h"
 
 namespace ms::test {
@@ -145,19 +146,12 @@ TEST(Dispatch, WorkGroupsAndStripesEqualFragment) {
   }
 }
 
-// A copy of the library whose main() makes the left 8 columns' sample
-// colour NaN (as tests/cli/test_nan_guard.cpp does): the
-// flag path of main.frag and post.frag, fused, accumulated and with AOVs.
+// The NaN guard's flag path (tests/cli/nan_shaders.h: the left 8 columns'
+// samples NaN), fused, accumulated and with AOVs.
 TEST(Dispatch, NanGuardCountsTheSamePixels) {
   TempDir dir;
-  const fs::path shaders = dir / "shaders";
-  fs::copy(source_dir() / "sdf_shaders", shaders, fs::copy_options::recursive);
-  std::string frag = read_file(shaders / "main.frag");
-  const std::string guard = "  bool nonFinite = notFinite(c);";
-  const size_t at = frag.find(guard);
-  ASSERT_NE(at, std::string::npos) << "main.frag changed: update this test";
-  frag.insert(at, "  if (gl_FragCoord.x < 8.0) c = vec3(uintBitsToFloat(0x7fc00000u));\n");
-  write_file(shaders / "main.frag", frag);
+  const fs::path shaders = nan_injecting_shader_dir(dir.path());
+  ASSERT_FALSE(HasFailure());
   const std::string seed = (source_dir() / "scenes/seed.toml").string();
   for (const std::vector<std::string>& extra :
        {std::vector<std::string>{"--spp", "1"}, {"--spp", "4"}, {"--spp", "4", "--aov", "depth"}}) {

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "nan_shaders.h"
 #include "stability_util.h"
 
 namespace ms::test {
@@ -42,25 +43,9 @@ TEST(NanGuard, RenderCountsNonFinitePixelsAndStrictFailsWithoutWriting) {
   EXPECT_FALSE(fs::exists(dir / "s.png"));
 }
 
-// A copy of the library whose main() makes the left 8 columns' sample colour
-// NaN, as a broken user map() or material would: the flag path of main.frag
-// and post.frag, with and without AOVs, through the real binary.
-fs::path nan_injecting_shader_dir(const TempDir& dir) {
-  const fs::path out = dir / "shaders";
-  fs::copy(source_dir() / "sdf_shaders", out, fs::copy_options::recursive);
-  std::string frag = read_file(out / "main.frag");
-  const std::string guard = "  bool nonFinite = notFinite(c);";
-  const size_t at = frag.find(guard);
-  EXPECT_NE(at, std::string::npos) << "main.frag changed: update this test";
-  if (at != std::string::npos)
-    frag.insert(at, "  if (gl_FragCoord.x < 8.0) c = vec3(uintBitsToFloat(0x7fc00000u));\n");
-  write_file(out / "main.frag", frag);
-  return out;
-}
-
 TEST(NanGuard, ANonFiniteSceneSampleIsCountedWithAndWithoutAovs) {
   TempDir dir;
-  const fs::path shaders = nan_injecting_shader_dir(dir);
+  const fs::path shaders = nan_injecting_shader_dir(dir.path());
   const std::string scene = hard_scene("degenerate").string();
   for (const std::vector<std::string>& extra : {std::vector<std::string>{}, {"--aov", "depth"}}) {
     std::vector<std::string> args = {"render", scene,          "--size", "32x18", "--shader-dir",
@@ -132,7 +117,7 @@ TEST(NanGuard, BenchReportsTheCountInJson) {
   EXPECT_EQ(clean.exit_code, 0) << clean.err;
   EXPECT_EQ(json::parse(clean.out).at("cost").at("nonfinite_pixels").get<long long>(), 0);
   TempDir dir;
-  const fs::path shaders = nan_injecting_shader_dir(dir);
+  const fs::path shaders = nan_injecting_shader_dir(dir.path());
   for (const bool strict : {false, true}) {
     std::vector<std::string> args = {"bench", hard_scene("degenerate").string(), "--size", "32x18", "--frames", "1",
                                      "--warmup", "0", "--json", "--shader-dir", shaders.string()};
