@@ -17,7 +17,6 @@
 #include "cli/input.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
-#include "scene/quality.h"
 #include "render/aov.h"
 #include "scene/animation.h"
 #include "render/bounds_check.h"
@@ -51,7 +50,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
                 "Time the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   cmd->add_option("--dispatch", a.dispatch,
                   "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
-  cmd->add_option("--compute-group", a.compute_group, kComputeGroupHelp)->group("");
+  add_compute_group_flag(cmd, a.compute_group);
   cmd->add_flag("-v,--verbose", a.verbose, "Say which dispatch --dispatch auto chose, and why");
   return cmd;
 }

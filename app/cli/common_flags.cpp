@@ -32,4 +32,10 @@ CLI::Option* add_disable_flag(CLI::App* cmd, std::vector<std::string>& effects) 
       ->check(one_of(kEffectNames));
 }
 
+CLI::Option* add_compute_group_flag(CLI::App* cmd, std::string& group) {
+  return cmd
+      ->add_option("--compute-group", group, "Compute work group WxH (default 8x8; auto measures 8x8, 16x8, 16x16 and 32x4)")
+      ->group("");
+}
+
 }  // namespace ms

@@ -22,5 +22,7 @@ CLI::Option* add_allow_include_flag(CLI::App* cmd, std::vector<std::string>& dir
 CLI::Option* add_preset_flag(CLI::App* cmd, std::string& preset);
 // --disable a,b: effects switched off
 CLI::Option* add_disable_flag(CLI::App* cmd, std::vector<std::string>& effects);
+// --compute-group WxH, hidden: parsed by cli/dispatch_flag.h
+CLI::Option* add_compute_group_flag(CLI::App* cmd, std::string& group);
 
 }  // namespace ms

@@ -19,9 +19,6 @@ Dispatch parse_dispatch(const std::string& name);
 // 0..1024); throws bad_input (key "--compute-group"). "" (not given):
 // none, so compute draws 8x8 and auto measures the groups too.
 std::optional<ComputeGroup> parse_compute_group(const std::string& text);
-// The hidden --compute-group flag's help, one text for every command.
-inline constexpr const char* kComputeGroupHelp =
-    "Compute work group WxH (default 8x8; auto measures 8x8, 16x8, 16x16 and 32x4)";
 // Throws bad_input (key "--dispatch", at file:line) when `d` is compute and
 // the frame's pass cannot run as one (render/compute_frame.h's
 // compute_source: derivative calls, implicit-LOD lookups of a mipmapped

@@ -17,7 +17,6 @@
 #include "core/error.h"
 #include "live/render_watch.h"
 #include "render/aov.h"
-#include "scene/quality.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -53,7 +52,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
       ->check(not_empty());
   cmd->add_option("--dispatch", a.dispatch,
                   "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
-  cmd->add_option("--compute-group", a.compute_group, kComputeGroupHelp)->group("");
+  add_compute_group_flag(cmd, a.compute_group);
   add_shadertoy_flags(cmd, a.shadertoy);
   add_override_flags(cmd, a.overrides);
   cmd->add_option("--fps", a.fps,

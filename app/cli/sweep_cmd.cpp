@@ -58,7 +58,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   add_override_flags(cmd, a.overrides);
   cmd->add_option("--dispatch", a.dispatch,
                   "Draw every row as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
-  cmd->add_option("--compute-group", a.compute_group, kComputeGroupHelp)->group("");
+  add_compute_group_flag(cmd, a.compute_group);
   return cmd;
 }
 

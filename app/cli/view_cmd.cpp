@@ -84,7 +84,7 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_option("--dispatch", a.dispatch,
                   "Trace the scene pass as a fragment pass (default), a compute dispatch, or auto; the window's "
                   "display pass stays fragment (docs/viewer.md#compute)");
-  cmd->add_option("--compute-group", a.compute_group, kComputeGroupHelp)->group("");
+  add_compute_group_flag(cmd, a.compute_group);
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Build the generic shader: every feature compiled (docs/specialization.md)");
   add_allow_include_flag(cmd, a.allow_include);
