@@ -69,9 +69,7 @@ void set_shader_cache(bool allowed) {
 
 int run_bench_command(const BenchArgs& a) {
   const Backend backend = parse_backend(a.backend);
-  AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}, parse_allow_include(a.allow_include)};
-  opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  opts.uniforms = a.overrides.uniforms;
+  AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
   LoadedInput in = load_input_scene(a.input, a.disable, a.preset, a.overrides.set);
   apply_shadertoy_flags(in, a.shadertoy);
   // The counting pass: the same scene with the AOV counters compiled in (a

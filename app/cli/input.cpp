@@ -9,6 +9,7 @@
 
 #include "cli/bloom_setup.h"
 #include "cli/flag_checks.h"
+#include "cli/shader_dir.h"
 #include "render/environment.h"
 #include "render/project_passes.h"
 #include "core/error.h"
@@ -57,6 +58,14 @@ std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector
     out.emplace_back(std::move(name), std::move(value));
   }
   return out;
+}
+
+AssembleOptions assemble_options(const std::string& shader_dir, const std::vector<std::string>& allow_include,
+                                 bool no_specialize, const std::vector<UniformValue>& uniforms) {
+  AssembleOptions opts{resolve_shader_dir(shader_dir), {}, parse_allow_include(allow_include)};
+  opts.specialize = no_specialize ? Specialization::generic : Specialization::folded;
+  opts.uniforms = uniforms;
+  return opts;
 }
 
 std::vector<fs::path> parse_allow_include(const std::vector<std::string>& flags) {

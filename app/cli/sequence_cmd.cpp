@@ -149,13 +149,11 @@ int run_sequence(const RenderArgs& a) {
   Deadline deadline = Deadline::after(a.timeout);
   std::optional<Watchdog> watchdog;
   if (deadline.limited()) watchdog.emplace().arm(deadline, "loading and compiling");
-  AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
-                       parse_allow_include(a.allow_include)};
+  // Animated values stay uniforms in a folded shader: one program serves every frame.
+  AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
+  opts.defines = parse_defines(a.defines);
   if (aovs)
     for (const auto& d : aov_defines()) opts.defines.push_back(d);
-  // Animated values stay uniforms in a folded shader: one program serves every frame.
-  opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  opts.uniforms = a.overrides.uniforms;
   LoadedInput in = load_input_scene(a.input, a.disable, a.preset, a.overrides.set);
   if (aovs && in.shadertoy) fail_input("--aov needs a scene, not a Shadertoy shader", a.input, 0, "--aov");
   apply_shadertoy_flags(in, a.shadertoy);

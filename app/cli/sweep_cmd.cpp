@@ -95,10 +95,8 @@ std::string command_line(const SweepArgs& a) {
 
 int run_sweep_command(const SweepArgs& a) {
   const Backend backend = parse_backend(a.backend);
-  AssembleOptions opts{resolve_shader_dir(a.shader_dir), {}, parse_allow_include(a.allow_include)};
   // The shader render and bench build: specialized to the scene (and each row's quality).
-  opts.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  opts.uniforms = a.overrides.uniforms;
+  const AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
   SweepSettings s;
   const ImageSize size = parse_size_flag(a.size);
   s.width = size.width;
