@@ -141,6 +141,7 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   // 1x1 frame, then the first full-size frame.
   const Clock::time_point t0 = Clock::now();
   const long long lookups0 = Program::gl_lookups();  // a process-wide count: only bench's own frames
+  const long long sets0 = Program::gl_uniform_sets();
   const std::string vs = fullscreen_vertex_source();
   PassGraph graph(passes);
   const Program post_prog(vs, post);
@@ -170,37 +171,48 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   glFinish();
   r.first_frame_ms = ms_since(t0);
   r.lookups_first = Program::gl_lookups() - lookups0;
+  r.sets_first = Program::gl_uniform_sets() - sets0;
 
   // Timed frames: the GPU timer brackets exactly the draw; wall time adds
   // the wait for completion (glFinish), which is what a user sees.
   for (int i = 0; i < s.warmup; ++i) renderer.draw(graph, post_prog, next(), fp);
   glFinish();
-  // Each timed frame is followed by one timed pass by pass, so the sum of the
-  // passes and the frame see the same machine load: their ratio shows what
-  // running the passes as one graph adds, even on a busy machine.
+  // Each timed frame of a multi-pass graph is followed by one timed pass by
+  // pass, so the sum of the passes and the frame see the same machine load:
+  // their ratio shows what running the passes as one graph adds, even on a
+  // busy machine. A graph of one pass is its frame (the post pass goes with
+  // the last pass): its pass time is the frame's wall time, and no second
+  // frame is drawn, which halved bench's frames for every scene.
+  const bool by_pass = graph.size() > 1;
   GpuTimer timer;
   std::vector<double> gpu, wall, submit;
   std::vector<std::vector<double>> per(graph.size());
+  long long timed_sets = 0;
   for (int i = 0; i < s.frames; ++i) {
     const FrameInputs in = next();
+    const long long sets_before = Program::gl_uniform_sets();
     const Clock::time_point w0 = Clock::now();
     timer.begin();
     renderer.draw(graph, post_prog, in, fp);
     submit.push_back(ms_since(w0));
+    timed_sets += Program::gl_uniform_sets() - sets_before;
     timer.end();
     glFinish();
     wall.push_back(ms_since(w0));
     gpu.push_back(timer.wait_ms());
+    if (!by_pass) continue;
     graph.set_timing(true);
     renderer.draw(graph, post_prog, next(), fp);
     graph.set_timing(false);
     for (size_t p = 0; p < graph.size(); ++p) per[p].push_back(graph.pass_ms()[p]);
   }
+  if (!by_pass) per[0] = wall;
   r.gpu_timer = std::any_of(gpu.begin(), gpu.end(), [](double x) { return x > 0.0; });
   r.gpu_ms = summarize(gpu);
   r.wall_ms = summarize(wall);
   r.submit_ms = summarize(submit);
   r.lookups_later = Program::gl_lookups() - lookups0 - r.lookups_first;
+  r.sets_per_timed_frame = static_cast<double>(timed_sets) / s.frames;
   for (size_t p = 0; p < graph.size(); ++p) r.passes.push_back({graph.name(p), summarize(per[p])});
 
   if (counting) {

@@ -103,8 +103,14 @@ struct BenchResult {
   // full-size) and by every later one (warm-up, timed, pass by pass): the
   // later count is 0 when uniform locations are kept.
   long long lookups_first = 0, lookups_later = 0;
+  // Program::gl_uniform_sets() made by the startup frames, and by the timed
+  // frames' draws over their count: a program keeps its uniforms, so a still
+  // scene at spp 1 sets none a frame (render/program.h).
+  long long sets_first = 0;
+  double sets_per_timed_frame = 0;
   // Each pass's wall time in frames timed pass by pass (a multi-pass
-  // Shadertoy shader: its buffers, then the Image pass with the post pass).
+  // Shadertoy shader: its buffers, then the Image pass with the post pass);
+  // a graph of one pass: the frame's wall time, no second frame drawn.
   std::vector<PassTiming> passes;
   bool has_cost = false;  // an SDF scene: its counting pass ran
   BenchCost cost;

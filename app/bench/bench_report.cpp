@@ -47,6 +47,7 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
                    {"wall", to_json(r.wall_ms)},
                    {"submit", to_json(r.submit_ms)}};
   j["uniform_lookups"] = {{"first_frames", r.lookups_first}, {"later_frames", r.lookups_later}};
+  j["uniform_sets"] = {{"first_frames", r.sets_first}, {"per_timed_frame", r.sets_per_timed_frame}};
   ordered_json passes = ordered_json::array();
   for (const PassTiming& p : r.passes) passes.push_back({{"name", p.name}, {"wall", to_json(p.wall_ms)}});
   j["pass_ms"] = passes;
@@ -96,6 +97,9 @@ std::string bench_table(const BenchSubject& subject, const BenchSettings& s, con
                 r.submit_ms.p95, r.submit_ms.max);
   std::snprintf(buf, sizeof buf, "  glGetUniformLocation calls: %lld in the first frames, %lld after\n", r.lookups_first,
                 r.lookups_later);
+  out += buf;
+  std::snprintf(buf, sizeof buf, "  uniforms set: %lld in the first frames, %.1f a timed frame (unchanged ones are not sent)\n",
+                r.sets_first, r.sets_per_timed_frame);
   out += buf;
   if (r.passes.size() > 1) {
     out += "\npass ms, each timed alone (wall)      min    median       p95       max\n";

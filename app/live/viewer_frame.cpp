@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "gl/gl.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -26,14 +28,12 @@ namespace {
 
 void set_params(const Program& p, const std::vector<SceneParam>& params) {
   for (const SceneParam& q : params) {
-    const GLint loc = p.loc(q.name);
-    if (loc < 0) continue;  // compiled out
-    switch (q.is_int ? 0 : q.components) {
-      case 0: glUniform1i(loc, static_cast<int>(q.value[0])); break;
-      case 1: glUniform1f(loc, q.value[0]); break;
-      case 2: glUniform2fv(loc, 1, q.value.data()); break;
-      case 3: glUniform3fv(loc, 1, q.value.data()); break;
-      default: glUniform4fv(loc, 1, q.value.data()); break;
+    switch (q.is_int ? 0 : q.components) {  // Program::set skips one compiled out
+      case 0: p.set(q.name, static_cast<int>(q.value[0])); break;
+      case 1: p.set(q.name, q.value[0]); break;
+      case 2: p.set(q.name, glm::make_vec2(q.value.data())); break;
+      case 3: p.set(q.name, glm::make_vec3(q.value.data())); break;
+      default: p.set(q.name, glm::make_vec4(q.value.data())); break;
     }
   }
 }

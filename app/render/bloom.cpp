@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/vec2.hpp>
+
 #include "core/error.h"
 
 namespace ms {
@@ -62,11 +64,11 @@ void BloomStage::run(GLuint accum, int width, int height, float inv_samples) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_[0]);
   glUseProgram(extract_->id());
   glBindTexture(GL_TEXTURE_2D, accum);
-  glUniform1i(extract_->loc("uAccum"), 0);
-  glUniform1f(extract_->loc("uInvSamples"), inv_samples);
-  glUniform1f(extract_->loc("uThreshold"), settings_.threshold);
-  glUniform2i(extract_->loc("uSrcSize"), width, height);
-  glUniform2i(extract_->loc("uDstSize"), w_, h_);
+  extract_->set("uAccum", 0);
+  extract_->set("uInvSamples", inv_samples);
+  extract_->set("uThreshold", settings_.threshold);
+  extract_->set("uSrcSize", glm::ivec2(width, height));
+  extract_->set("uDstSize", glm::ivec2(w_, h_));
   glDrawArrays(GL_TRIANGLES, 0, 3);
 
   // Blur: 0 -> 1 horizontally, 1 -> 0 vertically, per pass; texelFetch
@@ -75,15 +77,14 @@ void BloomStage::run(GLuint accum, int width, int height, float inv_samples) {
   const int half = bloom_half_taps(sigma);
   if (half == 0) return;
   glUseProgram(blur_->id());
-  glUniform1i(blur_->loc("uSrc"), 0);
-  glUniform1f(blur_->loc("uSigma"), sigma);
-  glUniform1i(blur_->loc("uHalf"), half);
-  const GLint dir = blur_->loc("uDir");
+  blur_->set("uSrc", 0);
+  blur_->set("uSigma", sigma);
+  blur_->set("uHalf", half);
   for (int pass = 0; pass < settings_.passes; ++pass) {
     for (int axis = 0; axis < 2; ++axis) {
       glBindFramebuffer(GL_FRAMEBUFFER, fbo_[1 - axis]);
       glBindTexture(GL_TEXTURE_2D, tex_[axis]);
-      glUniform2i(dir, axis == 0 ? 1 : 0, axis == 0 ? 0 : 1);
+      blur_->set("uDir", glm::ivec2(axis == 0 ? 1 : 0, axis == 0 ? 0 : 1));
       glDrawArrays(GL_TRIANGLES, 0, 3);
     }
   }

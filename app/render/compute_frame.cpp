@@ -4,6 +4,9 @@
 #include <cstring>
 #include <vector>
 
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
 #include "core/error.h"
 #include "render/aov.h"
 #include "render/bloom.h"
@@ -104,25 +107,25 @@ void ComputeFrameRenderer::draw(const Program& main, const UniformFn& set_unifor
     glBindImageTexture(static_cast<GLuint>(i), into.tex[i], 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   glUseProgram(main.id());
   set_uniforms(main);
-  glUniform2f(main.loc("uPixelOffset"), static_cast<float>(p.offset_x), static_cast<float>(p.offset_y));
-  if (p.fused_post) glUniform1f(main.loc("uExposure"), p.exposure);
-  glUniform1i(main.loc("uMsAccumulate"), add ? 1 : 0);
-  const GLint jitter = main.loc("uJitter"), rect = main.loc("uMsRect"), groups = main.loc("uMsGroups");
+  main.set("uPixelOffset", glm::vec2(p.offset_x, p.offset_y));
+  if (p.fused_post) main.set("uExposure", p.exposure);
+  main.set("uMsAccumulate", add ? 1 : 0);
   std::vector<glm::vec2> samples = p.open_ended ? open_samples(begin, end) : stratified_samples(p.spp);
   if (!p.open_ended) {
     samples.resize(std::min<size_t>(samples.size(), static_cast<size_t>(end)));
     samples.erase(samples.begin(), samples.begin() + std::min<size_t>(samples.size(), static_cast<size_t>(begin)));
   }
   // Tile by tile, every sample of a tile before the next, as FrameRenderer:
-  // no dispatch covers more than a tile; a flush per tile, or with a
-  // deadline a wait and a check after each dispatch.
-  for (const Tile& t : split_tiles(p.width, p.height, p.tile_size)) {
-    glUniform4i(rect, t.x, t.y, t.width, t.height);
+  // no dispatch covers more than a tile; a flush between tiles (none after
+  // the last), or with a deadline a wait and a check after each dispatch.
+  const std::vector<Tile> tiles = split_tiles(p.width, p.height, p.tile_size);
+  for (const Tile& t : tiles) {
+    main.set("uMsRect", glm::ivec4(t.x, t.y, t.width, t.height));
     const GLuint gx = static_cast<GLuint>((t.width + group.x - 1) / group.x);
     const GLuint gy = static_cast<GLuint>((t.height + group.y - 1) / group.y);
-    if (group.stripe > 0) glUniform2i(groups, static_cast<GLint>(gx), static_cast<GLint>(gy));
+    if (group.stripe > 0) main.set("uMsGroups", glm::ivec2(gx, gy));
     for (const glm::vec2& s : samples) {
-      glUniform2f(jitter, s.x, s.y);
+      main.set("uJitter", s);
       if (group.stripe > 0) glDispatchCompute(gx * gy, 1, 1);  // remapped in the shader (compute_wrap.h)
       else glDispatchCompute(gx, gy, 1);
       // The next sample reads what this one stored. One sample stores each
@@ -134,7 +137,7 @@ void ComputeFrameRenderer::draw(const Program& main, const UniformFn& set_unifor
         if (p.deadline->expired()) p.deadline->check("the render");
       }
     }
-    if (!p.deadline) glFlush();
+    if (!p.deadline && &t != &tiles.back()) glFlush();
   }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   for (int i = 0; i < into.count(); ++i)

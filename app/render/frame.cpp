@@ -112,16 +112,16 @@ void draw_bloom_and_post(const Program& post, GLuint accum, GLuint result_fbo, c
     glActiveTexture(GL_TEXTURE1);
     glBindSampler(1, 0);
     glBindTexture(GL_TEXTURE_2D, p.bloom->texture());
-    glUniform1i(post.loc("uBloom"), 1);
-    glUniform1f(post.loc("uBloomIntensity"), p.bloom->intensity());
+    post.set("uBloom", 1);
+    post.set("uBloomIntensity", p.bloom->intensity());
   } else if (post.loc("uBloom") >= 0) {
     fail_system("internal: a post pass with bloom drawn without its bloom stage");
   }
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, accum);
-  glUniform1i(post.loc("uAccum"), 0);
-  glUniform1f(post.loc("uInvSamples"), 1.0f / static_cast<float>(samples));
-  glUniform1f(post.loc("uExposure"), p.exposure);
+  post.set("uAccum", 0);
+  post.set("uInvSamples", 1.0f / static_cast<float>(samples));
+  post.set("uExposure", p.exposure);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -171,13 +171,14 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
   set_uniforms(main);
   // Integers, so floor(gl_FragCoord.xy) + uPixelOffset is exactly the pixel
   // an untiled draw sees (floats hold every integer below 2^24).
-  glUniform2f(main.loc("uPixelOffset"), static_cast<float>(p.offset_x), static_cast<float>(p.offset_y));
-  if (p.fused_post) glUniform1f(main.loc("uExposure"), p.exposure);
-  const GLint jitter = main.loc("uJitter");
+  main.set("uPixelOffset", glm::vec2(p.offset_x, p.offset_y));
+  if (p.fused_post) main.set("uExposure", p.exposure);
   // Tile by tile (scissor; the viewport stays whole, so gl_FragCoord and the
   // image are unchanged), every sample of a tile before the next: no draw
-  // covers more than a tile. A flush per tile submits it on its own (a GPU
-  // watchdog times single submissions); with a deadline each draw is waited
+  // covers more than a tile. A flush between tiles submits each on its own
+  // (a GPU watchdog times single submissions); none after the last, which
+  // whatever ends the frame submits (the readback, glFinish, the swap), so a
+  // frame of one tile makes no flush. With a deadline each draw is waited
   // for and the deadline checked, the finest point llvmpipe can stop at.
   std::vector<glm::vec2> samples = p.open_ended ? open_samples(begin, end) : stratified_samples(p.spp);
   if (!p.open_ended) {
@@ -185,10 +186,11 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
     samples.erase(samples.begin(), samples.begin() + std::min<size_t>(samples.size(), static_cast<size_t>(begin)));
   }
   glEnable(GL_SCISSOR_TEST);
-  for (const Tile& t : split_tiles(p.width, p.height, p.tile_size)) {
+  const std::vector<Tile> tiles = split_tiles(p.width, p.height, p.tile_size);
+  for (const Tile& t : tiles) {
     glScissor(t.x, t.y, t.width, t.height);
     for (const glm::vec2& s : samples) {
-      glUniform2f(jitter, s.x, s.y);
+      main.set("uJitter", s);
       glDrawArrays(GL_TRIANGLES, 0, 3);
       if (p.deadline) {
         glFinish();
@@ -200,7 +202,7 @@ void FrameRenderer::draw(const Program& main, const UniformFn& set_uniforms, con
         }
       }
     }
-    if (!p.deadline) glFlush();
+    if (!p.deadline && &t != &tiles.back()) glFlush();
   }
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <map>
 
+#include <glm/vec2.hpp>
+
 #include "core/error.h"
 #include "render/audio_texture.h"
 #include "render/cubemap.h"
@@ -261,7 +263,7 @@ void PassGraph::draw_buffer_pass(size_t pass, const FrameInputs& in, const Frame
   if (passes_[pass].uniforms == PassUniforms::glslviewer)
     set_glslviewer_uniforms(prog, p.width, p.height, shadertoy_inputs(in, res), passes_[pass].inputs);
   if (in.extra) (*in.extra)(prog);
-  glUniform2f(prog.loc("uJitter"), 0.5f, 0.5f);
+  prog.set("uJitter", glm::vec2(0.5f));
   // Tile by tile, as FrameRenderer draws: a bounded draw, a deadline check.
   glEnable(GL_SCISSOR_TEST);
   for (const Tile& t : split_tiles(p.width, p.height, p.tile_size)) {
@@ -295,7 +297,7 @@ void PassGraph::draw_cube_pass(size_t pass, const FrameInputs& in, const FramePa
     float res[4][3];
     bind_inputs(pass, p.width, p.height, res);
     set_shadertoy_uniforms(prog, n, n, shadertoy_inputs(in, res));  // iResolution: the face, as Shadertoy
-    glUniform1i(prog.loc("uCubeFace"), face);
+    prog.set("uCubeFace", face);
     if (in.extra) (*in.extra)(prog);
   }, p.deadline);
   unbind_samplers();

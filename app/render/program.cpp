@@ -1,7 +1,15 @@
 #include "render/program.h"
 
 #include <atomic>
+#include <cstring>
 #include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.h"
 #include "shader/log_map.h"
@@ -104,18 +112,62 @@ void Program::link(const ShaderSource& errors_in, const char* what) {
 }
 
 namespace {
-std::atomic<long long> g_gl_lookups{0};  // a viewer may compile on a second thread (shared context)
+// A viewer may compile and draw on a second thread (shared context).
+std::atomic<long long> g_gl_lookups{0}, g_gl_sets{0};
 }  // namespace
 
-GLint Program::loc(const std::string& name) const {
-  if (const auto it = locations_.find(name); it != locations_.end()) return it->second;
+Program::Uniform& Program::uniform(const std::string& name) const {
+  if (const auto it = uniforms_.find(name); it != uniforms_.end()) return it->second;
   ++g_gl_lookups;
-  const GLint l = glGetUniformLocation(id_, name.c_str());
-  locations_.emplace(name, l);
-  return l;
+  Uniform u;
+  u.loc = glGetUniformLocation(id_, name.c_str());
+  return uniforms_.emplace(name, std::move(u)).first->second;
+}
+
+GLint Program::loc(const std::string& name) const { return uniform(name).loc; }
+
+bool Program::changed(Uniform& u, const void* bytes, size_t size) const {
+  if (u.loc < 0) return false;
+  if (u.bits.size() == size && std::memcmp(u.bits.data(), bytes, size) == 0) return false;
+  u.bits.assign(static_cast<const unsigned char*>(bytes), static_cast<const unsigned char*>(bytes) + size);
+  ++g_gl_sets;
+  return true;
+}
+
+void Program::set(const std::string& name, int v) const {
+  if (Uniform& u = uniform(name); changed(u, &v, sizeof v)) glProgramUniform1i(id_, u.loc, v);
+}
+void Program::set(const std::string& name, float v) const {
+  if (Uniform& u = uniform(name); changed(u, &v, sizeof v)) glProgramUniform1f(id_, u.loc, v);
+}
+void Program::set(const std::string& name, const glm::ivec2& v) const {
+  if (Uniform& u = uniform(name); changed(u, &v, sizeof v)) glProgramUniform2iv(id_, u.loc, 1, glm::value_ptr(v));
+}
+void Program::set(const std::string& name, const glm::ivec4& v) const {
+  if (Uniform& u = uniform(name); changed(u, &v, sizeof v)) glProgramUniform4iv(id_, u.loc, 1, glm::value_ptr(v));
+}
+void Program::set(const std::string& name, const glm::vec2& v) const {
+  if (Uniform& u = uniform(name); changed(u, &v, sizeof v)) glProgramUniform2fv(id_, u.loc, 1, glm::value_ptr(v));
+}
+void Program::set(const std::string& name, const glm::vec3& v) const { set(name, &v, 1); }
+void Program::set(const std::string& name, const glm::vec4& v) const {
+  if (Uniform& u = uniform(name); changed(u, &v, sizeof v)) glProgramUniform4fv(id_, u.loc, 1, glm::value_ptr(v));
+}
+void Program::set(const std::string& name, const glm::mat3& v) const {
+  if (Uniform& u = uniform(name); changed(u, &v, sizeof v))
+    glProgramUniformMatrix3fv(id_, u.loc, 1, GL_FALSE, glm::value_ptr(v));
+}
+void Program::set(const std::string& name, const glm::mat4& v) const {
+  if (Uniform& u = uniform(name); changed(u, &v, sizeof v))
+    glProgramUniformMatrix4fv(id_, u.loc, 1, GL_FALSE, glm::value_ptr(v));
+}
+void Program::set(const std::string& name, const glm::vec3* v, int count) const {
+  if (Uniform& u = uniform(name); count > 0 && changed(u, v, sizeof(glm::vec3) * static_cast<size_t>(count)))
+    glProgramUniform3fv(id_, u.loc, count, glm::value_ptr(v[0]));
 }
 
 long long Program::gl_lookups() { return g_gl_lookups.load(); }
+long long Program::gl_uniform_sets() { return g_gl_sets.load(); }
 
 Program::~Program() {
   if (id_) glDeleteProgram(id_);

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "render/audio_texture.h"
@@ -15,11 +16,6 @@
 
 namespace ms {
 namespace {
-
-void set3(const Program& p, const std::string& name, const glm::vec3& v) {
-  glUniform3fv(p.loc(name), 1, glm::value_ptr(v));
-}
-void set1(const Program& p, const std::string& name, float v) { glUniform1f(p.loc(name), v); }
 
 float radians(float deg) { return deg * 3.14159265358979f / 180.0f; }
 
@@ -46,7 +42,7 @@ const MaterialValue kMaterialValues[] = {
 
 // The uniform names of each light and material slot, built once: every
 // frame sets them all, and building the strings anew took about a third
-// of stilllife's submit time (docs/gpu.md#per-frame-host-costs). Static
+// of stilllife's submit time (docs/gpu-bench.md#per-frame-host-costs). Static
 // locals: a compile worker's thread sets uniforms too, and their
 // initialization is thread-safe.
 struct LightNames {
@@ -104,58 +100,58 @@ const std::array<ChannelNames, 4>& channel_names() {
 }  // namespace
 
 void set_scene_uniforms(const Program& p, const Scene& s, int width, int height, float time, int frame) {
-  glUniform2f(p.loc("uResolution"), static_cast<float>(width), static_cast<float>(height));
-  set1(p, "uTime", time);
-  glUniform1i(p.loc("uFrame"), frame);
-  set3(p, "uCamPos", s.camera.position);
-  set3(p, "uCamTarget", s.camera.target);
-  set3(p, "uCamUp", s.camera.up);
-  set1(p, "uFovY", radians(s.camera.fov_deg));
+  p.set("uResolution", glm::vec2(width, height));
+  p.set("uTime", time);
+  p.set("uFrame", frame);
+  p.set("uCamPos", s.camera.position);
+  p.set("uCamTarget", s.camera.target);
+  p.set("uCamUp", s.camera.up);
+  p.set("uFovY", radians(s.camera.fov_deg));
   // The frame every primary ray is built from, once here instead of per pixel.
   const CameraFrame cf = camera_frame(s.camera);
   const glm::mat3 basis(cf.right, cf.up, cf.forward);
-  glUniformMatrix3fv(p.loc("uCamBasis"), 1, GL_FALSE, glm::value_ptr(basis));
-  set1(p, "uCamTanHalfFov", cf.tan_half_fov);
-  set3(p, "uSkyHorizon", s.sky.horizon);
-  set3(p, "uSkyZenith", s.sky.zenith);
-  set3(p, "uAmbient", s.sky.ambient);
+  p.set("uCamBasis", basis);
+  p.set("uCamTanHalfFov", cf.tan_half_fov);
+  p.set("uSkyHorizon", s.sky.horizon);
+  p.set("uSkyZenith", s.sky.zenith);
+  p.set("uAmbient", s.sky.ambient);
   if (!s.sky.environment.empty()) {  // ENV_MAP (render/environment.h): the map turned by -rotation into world
     const float a = radians(s.sky.rotation);
     const glm::mat3 rot(std::cos(a), 0.0f, std::sin(a), 0.0f, 1.0f, 0.0f, -std::sin(a), 0.0f, std::cos(a));
-    glUniformMatrix3fv(p.loc("uEnvRotation"), 1, GL_FALSE, glm::value_ptr(rot));
-    set1(p, "uEnvIntensity", s.sky.intensity);
+    p.set("uEnvRotation", rot);
+    p.set("uEnvIntensity", s.sky.intensity);
     std::array<glm::vec3, 9> sh = s.sky.irradiance;
     for (glm::vec3& c : sh) c *= s.sky.intensity;
-    glUniform3fv(p.loc("uEnvSH[0]"), 9, glm::value_ptr(sh[0]));
+    p.set("uEnvSH[0]", sh.data(), static_cast<int>(sh.size()));
   }
 
   // A specialized shader may have folded some of these into constants (the
-  // same values: glsl_light); glUniform* ignores their -1 locations.
+  // same values: glsl_light); Program::set skips their -1 locations.
   for (size_t i = 0; i < s.lights.size(); ++i) {
     const GlslLight l = glsl_light(s.lights[i]);
     const LightNames& n = light_names().at(i);  // load.cpp refuses more than kMaxLights
-    glUniform4fv(p.loc(n.pos), 1, glm::value_ptr(l.pos));
-    set3(p, n.color, l.color);
-    set1(p, n.size, l.size);
-    set3(p, n.atten, l.atten);
+    p.set(n.pos, l.pos);
+    p.set(n.color, l.color);
+    p.set(n.size, l.size);
+    p.set(n.atten, l.atten);
     // A value the viewer keeps live in a folded table (shader/specialize.h live_uniform_name).
-    set3(p, n.live_pos, glm::vec3(l.pos));
-    set3(p, n.live_color, l.color);
-    set1(p, n.live_size, l.size);
-    set3(p, n.live_atten, l.atten);
+    p.set(n.live_pos, glm::vec3(l.pos));
+    p.set(n.live_color, l.color);
+    p.set(n.live_size, l.size);
+    p.set(n.live_atten, l.atten);
   }
   for (size_t i = 0; i < s.materials.size(); ++i) {
     const Material& m = s.materials[i];
     const MaterialNames& n = material_names().at(i);
-    glUniform1i(p.loc(n.pattern), m.pattern == Pattern::checker ? 1 : 0);
+    p.set(n.pattern, m.pattern == Pattern::checker ? 1 : 0);
     for (size_t k = 0; k < std::size(kMaterialValues); ++k) {
       const MaterialValue& v = kMaterialValues[k];
       if (v.vec) {
-        set3(p, n.field[k], m.*v.vec);
-        set3(p, n.live[k], m.*v.vec);
+        p.set(n.field[k], m.*v.vec);
+        p.set(n.live[k], m.*v.vec);
       } else {
-        set1(p, n.field[k], m.*v.scalar);
-        set1(p, n.live[k], m.*v.scalar);
+        p.set(n.field[k], m.*v.scalar);
+        p.set(n.live[k], m.*v.scalar);
       }
     }
   }
@@ -181,19 +177,19 @@ void BlackChannels::bind() const {
 }
 
 void set_shadertoy_uniforms(const Program& p, int width, int height, const ShadertoyInputs& in) {
-  glUniform3f(p.loc("iResolution"), static_cast<float>(width), static_cast<float>(height), 1.0f);
-  set1(p, "iTime", in.time);
-  set1(p, "iTimeDelta", in.time_delta);
-  set1(p, "iFrameRate", in.time_delta > 0 ? 1.0f / in.time_delta : 0.0f);
-  glUniform1i(p.loc("iFrame"), in.frame);
-  glUniform4fv(p.loc("iMouse"), 1, in.mouse);
-  glUniform4f(p.loc("iDate"), 2000.0f, 0.0f, 1.0f, in.time);
-  set1(p, "iSampleRate", kShadertoySampleRate);  // Shadertoy's constant, whatever audio is bound
+  p.set("iResolution", glm::vec3(width, height, 1.0f));
+  p.set("iTime", in.time);
+  p.set("iTimeDelta", in.time_delta);
+  p.set("iFrameRate", in.time_delta > 0 ? 1.0f / in.time_delta : 0.0f);
+  p.set("iFrame", in.frame);
+  p.set("iMouse", glm::make_vec4(in.mouse));
+  p.set("iDate", glm::vec4(2000.0f, 0.0f, 1.0f, in.time));
+  p.set("iSampleRate", kShadertoySampleRate);  // Shadertoy's constant, whatever audio is bound
   for (int i = 0; i < 4; ++i) {
     const ChannelNames& n = channel_names()[i];
-    glUniform1i(p.loc(n.sampler), i);
-    glUniform1f(p.loc(n.time), in.time);
-    glUniform3fv(p.loc(n.resolution), 1, in.channel_resolution[i]);
+    p.set(n.sampler, i);
+    p.set(n.time, in.time);
+    p.set(n.resolution, glm::make_vec3(in.channel_resolution[i]));
   }
 }
 
@@ -203,24 +199,22 @@ namespace ms {
 
 void set_glslviewer_uniforms(const Program& p, int width, int height, const ShadertoyInputs& in,
                              const std::array<GraphInput, 4>& inputs) {
-  glUniform2f(p.loc("u_resolution"), static_cast<float>(width), static_cast<float>(height));
-  glUniform1f(p.loc("u_time"), in.time);
-  glUniform1f(p.loc("u_delta"), in.time_delta);
-  glUniform1i(p.loc("u_frame"), in.frame);
-  glUniform2f(p.loc("u_mouse"), in.mouse[0], in.mouse[1]);
-  glUniform4f(p.loc("u_date"), 2000.0f, 0.0f, 1.0f, in.time);  // as iDate: never the wall clock
+  p.set("u_resolution", glm::vec2(width, height));
+  p.set("u_time", in.time);
+  p.set("u_delta", in.time_delta);
+  p.set("u_frame", in.frame);
+  p.set("u_mouse", glm::vec2(in.mouse[0], in.mouse[1]));
+  p.set("u_date", glm::vec4(2000.0f, 0.0f, 1.0f, in.time));  // as iDate: never the wall clock
   // A 2D canvas: glslViewer sets these to identity (u_model to (1, 1, 1)).
-  const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   for (const char* m : {"u_modelMatrix", "u_viewMatrix", "u_projectionMatrix", "u_modelViewProjectionMatrix"})
-    glUniformMatrix4fv(p.loc(m), 1, GL_FALSE, identity);
-  const float identity3[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-  glUniformMatrix3fv(p.loc("u_view2d"), 1, GL_FALSE, identity3);
-  glUniform3f(p.loc("u_model"), 1.0f, 1.0f, 1.0f);
+    p.set(m, glm::mat4(1.0f));
+  p.set("u_view2d", glm::mat3(1.0f));
+  p.set("u_model", glm::vec3(1.0f));
   for (int c = 0; c < 4; ++c) {
     if (inputs[c].uniform.empty()) continue;
-    glUniform1i(p.loc(inputs[c].uniform), c);
+    p.set(inputs[c].uniform, c);
     if (inputs[c].kind == InputKind::texture)
-      glUniform2f(p.loc(inputs[c].uniform + "Resolution"), in.channel_resolution[c][0], in.channel_resolution[c][1]);
+      p.set(inputs[c].uniform + "Resolution", glm::vec2(in.channel_resolution[c][0], in.channel_resolution[c][1]));
   }
 }
 

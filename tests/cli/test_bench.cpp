@@ -146,6 +146,32 @@ TEST(Bench, NoUniformLookupsAfterTheFirstFrame) {
   }
 }
 
+// A per-frame host cost (issue 18 item 5): a program keeps its uniforms,
+// so a frame sends only the values that differ from the last one
+// (render/program.h). A still scene at spp 1 changes nothing; at spp 4 the
+// jitter changes four times a frame (one tile: uMsRect stays).
+TEST(Bench, OnlyChangedUniformsAreSentAgain) {
+  const std::string toy = (source_dir() / "tests/data/shader/shadertoy/ok.glsl").string();
+  struct Case {
+    std::vector<std::string> args;
+    double per_frame;
+  };
+  for (const Case& c : std::vector<Case>{
+           {{scene("seed"), "--dispatch", "fragment"}, 0},
+           {{scene("stilllife"), "--dispatch", "compute"}, 0},
+           {{scene("seed"), "--dispatch", "fragment", "--spp", "4"}, 4},
+           {{scene("seed"), "--dispatch", "compute", "--spp", "4"}, 4},
+           {{toy, "--dispatch", "fragment"}, 0},
+       }) {
+    std::vector<std::string> a = c.args;
+    a.insert(a.end(), {"--size", "32x18", "--frames", "4", "--warmup", "2"});
+    const json j = bench_json(a);
+    const json& n = j.at("uniform_sets");
+    EXPECT_GT(n.at("first_frames").get<long long>(), 4) << c.args[0];  // uResolution, the camera, ...
+    EXPECT_EQ(n.at("per_timed_frame").get<double>(), c.per_frame) << c.args[0] << " " << c.args[2];
+  }
+}
+
 TEST(Bench, BadInputExitsTwo) {
   for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
            {"bench", scene("seed"), "--frames", "0"},

@@ -96,6 +96,36 @@ TEST(Sequence, KeyframesAnimateTheSceneAndMatchSingleRenders) {
   EXPECT_GT(a2.at(cx, cy, 2), 3 * a2.at(cx, cy, 0)) << "blue ball at t=1";
 }
 
+// A program keeps its uniforms and a frame sends only what changed
+// (render/program.h): a value that leaves and comes back must be sent again.
+// The ball goes red, blue, red and the camera out and back, so frame 2 is
+// frame 0, and each frame is its single render.
+TEST(Sequence, AValueThatComesBackIsSentAgain) {
+  TempDir dir;
+  write_file(dir / "seed.glsl", read_file(source_dir() / "scenes" / "seed.glsl"));
+  write_file(dir / "anim.toml", "[scene]\nmap = \"seed.glsl\"\n[camera]\nposition = [0, 1.6, -5]\n"
+                                "target = [0, 0.8, 0]\n[render]\nwidth = 32\nheight = 18\n[[lights]]\n"
+                                "position = [4, 5, -1.5]\n[[materials]]\nname = \"floor\"\n[[materials]]\n"
+                                "name = \"ball\"\ncolor = [1, 0, 0]\n"
+                                "[[animation]]\ntarget = \"materials[1].color\"\n"
+                                "keys = [[0, 1, 0, 0], [1, 0, 0, 1], [2, 1, 0, 0]]\n"
+                                "[[animation]]\ntarget = \"camera.position\"\n"
+                                "keys = [[0, 0, 1.6, -5], [1, 1, 1.6, -4.5], [2, 0, 1.6, -5]]\n");
+  for (const char* d : {"fragment", "compute"}) {
+    RunResult r = run_marchstudio({"render", "anim.toml", "--frames", "0..2", "--fps", "1", "--dispatch", d, "-o",
+                                   std::string(d) + "_%d.exr"},
+                                  dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Image a0 = read_image(dir / (std::string(d) + "_0.exr")), a1 = read_image(dir / (std::string(d) + "_1.exr"));
+    const Image a2 = read_image(dir / (std::string(d) + "_2.exr"));
+    EXPECT_NE(a0.pixels, a1.pixels) << d;
+    EXPECT_EQ(a2.pixels, a0.pixels) << d << ": frame 2 holds frame 0's values";
+    RunResult one = run_marchstudio({"render", "anim.toml", "--time", "1", "--dispatch", d, "-o", "one.exr"}, dir.path());
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    EXPECT_EQ(read_image(dir / "one.exr").pixels, a1.pixels) << d;
+  }
+}
+
 void expect_shards_cover(const std::string& mode) {
   TempDir dir;
   write_file(dir / "clock.glsl", kClock);
