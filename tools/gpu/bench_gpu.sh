@@ -58,23 +58,8 @@ if (( ${#names[@]} == 0 )); then
   exit 2
 fi
 
-# Fields of bench's JSON by JSON pointer (/frame_ms/gpu/median), one per
-# line: jq if there is one, else python3.
-fields() {
-  local file=$1; shift
-  if command -v jq >/dev/null 2>&1; then
-    local p
-    for p in "$@"; do jq -r "getpath(\"$p\" | ltrimstr(\"/\") | split(\"/\"))" "$file"; done
-  else
-    python3 -c 'import json, sys
-d = json.load(open(sys.argv[1]))
-for p in sys.argv[2:]:
-    v = d
-    for k in p.strip("/").split("/"):
-        v = v[k]
-    print(v)' "$file" "$@"
-  fi
-}
+# shellcheck source=json_fields.sh
+source "$root/tools/gpu/json_fields.sh"
 fmt() { awk -v x="$1" 'BEGIN { printf "%.3f", x }'; }
 timer() { awk -v x="$1" 'BEGIN { if (x < 0.001) print "-"; else printf "%.3f", x }'; }
 
