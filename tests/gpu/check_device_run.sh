@@ -34,4 +34,12 @@ rc=$?
 (( rc == 4 )) || fail "a spent budget exits $rc, not 4"
 grep -q 'targets: skipped, the budget is spent' "$out/b/log.txt" || fail "log.txt does not say targets was skipped"
 [[ ! -e $out/b/targets.md ]] || fail "targets.md written with no budget"
+# Without ALLOW_SOFTWARE, llvmpipe is refused (exit 3) before any stage,
+# so a table from the script is a GPU's. (Where EGL gives a GPU, skipped.)
+if grep -q '"gl_renderer": "llvmpipe' "$out/a/info.txt"; then
+  env -u ALLOW_SOFTWARE OUT="$out/c" "$root/tools/gpu/device_run.sh" "$bin" 2>/dev/null
+  rc=$?
+  (( rc == 3 )) || fail "llvmpipe without ALLOW_SOFTWARE exits $rc, not 3"
+  [[ ! -e $out/c/targets.md && ! -e $out/c/targets.md.part ]] || fail "a stage ran on llvmpipe"
+fi
 echo "check_device_run.sh: ok"
