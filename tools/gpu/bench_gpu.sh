@@ -5,8 +5,9 @@
 # shipped scene, at 1280x720, 1920x1080 and 3840x2160, through EGL's device
 # platform (the NVIDIA driver). One markdown table on stdout, a row per
 # scene, preset and size: each dispatch's GPU-timer median and p95 and its
-# wall median, and compute's speed-up. Progress and warnings go to stderr,
-# so `tools/gpu/bench_gpu.sh > gpu.md` keeps only the table.
+# wall median, and compute's speed-up, each row printed as it finishes (a
+# run cut short keeps its rows). Progress and warnings go to stderr, so
+# `tools/gpu/bench_gpu.sh > gpu.md` keeps only the table.
 #
 # Usage: tools/gpu/bench_gpu.sh [path/to/marchstudio]
 #   The binary defaults to $MARCHSTUDIO, else build/marchstudio, else any
@@ -66,50 +67,25 @@ timer() { awk -v x="$1" 'BEGIN { if (x < 0.001) print "-"; else printf "%.3f", x
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 declare -A fig
-renderer="" vendor="" version="" backend=""
 start=$(date +%s)
-for size in "${sizes[@]}"; do
-  for name in "${names[@]}"; do
-    scene=$root/scenes/$name.toml
-    for preset in "${presets[@]}"; do
-      for d in "${dispatches[@]}"; do
-        echo "bench_gpu.sh: $size $name $preset $d ($(( $(date +%s) - start )) s)" >&2
-        if ! "$bin" bench "$scene" --preset "$preset" --size "$size" --frames "$frames" --warmup "$warmup" \
-            --dispatch "$d" --backend egl --json >"$tmp/out.json" 2>"$tmp/err.txt"; then
-          echo "bench_gpu.sh: bench failed for $size $name $preset $d:" >&2
-          cat "$tmp/err.txt" >&2
-          exit 3
-        fi
-        if [[ -z $renderer ]]; then
-          { read -r renderer; read -r vendor; read -r version; read -r backend; } < <(fields "$tmp/out.json" \
-            /machine/gl_renderer /machine/gl_vendor /machine/gl_version /machine/backend)
-          if [[ $renderer == *llvmpipe* || $renderer == *softpipe* || $backend != egl-device ]]; then
-            echo "bench_gpu.sh: EGL gave '$renderer' ($backend), not a GPU" >&2
-            [[ ${ALLOW_SOFTWARE:-0} == 1 ]] || exit 3
-          fi
-        fi
-        # gpu median, gpu p95, wall median, wall p95, steps, map() calls
-        fig[$size.$name.$preset.$d]=$(fields "$tmp/out.json" /frame_ms/gpu/median /frame_ms/gpu/p95 \
-          /frame_ms/wall/median /frame_ms/wall/p95 /cost/primary_steps/mean /cost/sdf_evals/mean | paste -sd' ')
-      done
-      # The dispatches trace the same pixels; differing counts mean a bug.
-      first=(${fig[$size.$name.$preset.${dispatches[0]}]})
-      for d in "${dispatches[@]}"; do
-        f=(${fig[$size.$name.$preset.$d]})
-        [[ ${f[4]} == "${first[4]}" ]] || echo "bench_gpu.sh: $name $preset $size: $d steps ${f[4]} != ${first[4]}" >&2
-      done
-    done
-  done
-  if [[ -n ${SWEEP_DIR:-} && $size == "${sizes[0]}" ]]; then
-    mkdir -p "$SWEEP_DIR"
-    for name in "${names[@]}"; do
-      echo "bench_gpu.sh: sweep $name" >&2
-      "$bin" sweep "$root/scenes/$name.toml" --size "$size" --backend egl -q -o "$SWEEP_DIR" >"$SWEEP_DIR/$name.sweep.txt"
-    done
-  fi
-done
-echo "bench_gpu.sh: done in $(( $(date +%s) - start )) s" >&2
 
+# The GL strings first, from a tiny run, so a software renderer stops the
+# script before any row and the table's heading can name the GL.
+if ! "$bin" bench "$root/scenes/${names[0]}.toml" --size 8x8 --frames 1 --warmup 0 --backend egl --json \
+    >"$tmp/out.json" 2>"$tmp/err.txt"; then
+  echo "bench_gpu.sh: the probe run failed:" >&2
+  cat "$tmp/err.txt" >&2
+  exit 3
+fi
+{ read -r renderer; read -r vendor; read -r version; read -r backend; } < <(fields "$tmp/out.json" \
+  /machine/gl_renderer /machine/gl_vendor /machine/gl_version /machine/backend)
+if [[ $renderer == *llvmpipe* || $renderer == *softpipe* || $backend != egl-device ]]; then
+  echo "bench_gpu.sh: EGL gave '$renderer' ($backend), not a GPU" >&2
+  [[ ${ALLOW_SOFTWARE:-0} == 1 ]] || exit 3
+fi
+
+# The heading, then each row as soon as its dispatches are measured: a run
+# cut short (tools/gpu/device_run.sh's time box) keeps the rows it finished.
 echo "GL: \`$renderer\` ($vendor), $version, backend \`$backend\`; spp 1, median and p95 (nearest rank) of $frames frames after $warmup warm-up; $(date -u +%Y-%m-%d)."
 echo
 echo "Command: \`FRAMES=$frames WARMUP=$warmup SIZES=\"${sizes[*]}\" PRESETS=\"${presets[*]}\" tools/gpu/bench_gpu.sh\` (each cell: \`marchstudio bench scenes/SCENE.toml --preset PRESET --size WxH --frames $frames --warmup $warmup --dispatch D --backend egl --json\`)"
@@ -124,22 +100,56 @@ if [[ " ${dispatches[*]} " == *" fragment "* && " ${dispatches[*]} " == *" compu
 fi
 echo "$head primary steps / px | map() calls / px |"
 echo "$rule---|---|"
+
+# row SIZE NAME PRESET: the table row of measured figures.
+row() {
+  local size=$1 name=$2 preset=$3 d line f fr co
+  line="| $name | $preset | $size |"
+  for d in "${dispatches[@]}"; do
+    f=(${fig[$size.$name.$preset.$d]})
+    line+=" $(timer "${f[0]}") | $(timer "${f[1]}") | $(fmt "${f[2]}") | $(fmt "${f[3]}") |"
+  done
+  if (( both )); then
+    fr=(${fig[$size.$name.$preset.fragment]}) co=(${fig[$size.$name.$preset.compute]})
+    line+=" $(awk -v a="${fr[0]}" -v b="${co[0]}" -v c="${fr[2]}" -v e="${co[2]}" 'BEGIN {
+      g = (a >= 0.001 && b >= 0.001) ? sprintf("%.2fx", a / b) : "-"
+      printf "%s; %.2fx", g, c / e }') |"
+  fi
+  f=(${fig[$size.$name.$preset.${dispatches[0]}]})
+  echo "$line $(awk -v x="${f[4]}" 'BEGIN { printf "%.2f", x }') | $(awk -v x="${f[5]}" 'BEGIN { printf "%.1f", x }') |"
+}
+
 for size in "${sizes[@]}"; do
   for name in "${names[@]}"; do
+    scene=$root/scenes/$name.toml
     for preset in "${presets[@]}"; do
-      row="| $name | $preset | $size |"
+      for d in "${dispatches[@]}"; do
+        echo "bench_gpu.sh: $size $name $preset $d ($(( $(date +%s) - start )) s)" >&2
+        if ! "$bin" bench "$scene" --preset "$preset" --size "$size" --frames "$frames" --warmup "$warmup" \
+            --dispatch "$d" --backend egl --json >"$tmp/out.json" 2>"$tmp/err.txt"; then
+          echo "bench_gpu.sh: bench failed for $size $name $preset $d:" >&2
+          cat "$tmp/err.txt" >&2
+          exit 3
+        fi
+        # gpu median, gpu p95, wall median, wall p95, steps, map() calls
+        fig[$size.$name.$preset.$d]=$(fields "$tmp/out.json" /frame_ms/gpu/median /frame_ms/gpu/p95 \
+          /frame_ms/wall/median /frame_ms/wall/p95 /cost/primary_steps/mean /cost/sdf_evals/mean | paste -sd' ')
+      done
+      # The dispatches trace the same pixels; differing counts mean a bug.
+      first=(${fig[$size.$name.$preset.${dispatches[0]}]})
       for d in "${dispatches[@]}"; do
         f=(${fig[$size.$name.$preset.$d]})
-        row+=" $(timer "${f[0]}") | $(timer "${f[1]}") | $(fmt "${f[2]}") | $(fmt "${f[3]}") |"
+        [[ ${f[4]} == "${first[4]}" ]] || echo "bench_gpu.sh: $name $preset $size: $d steps ${f[4]} != ${first[4]}" >&2
       done
-      if (( both )); then
-        fr=(${fig[$size.$name.$preset.fragment]}) co=(${fig[$size.$name.$preset.compute]})
-        row+=" $(awk -v a="${fr[0]}" -v b="${co[0]}" -v c="${fr[2]}" -v e="${co[2]}" 'BEGIN {
-          g = (a >= 0.001 && b >= 0.001) ? sprintf("%.2fx", a / b) : "-"
-          printf "%s; %.2fx", g, c / e }') |"
-      fi
-      f=(${fig[$size.$name.$preset.${dispatches[0]}]})
-      echo "$row $(awk -v x="${f[4]}" 'BEGIN { printf "%.2f", x }') | $(awk -v x="${f[5]}" 'BEGIN { printf "%.1f", x }') |"
+      row "$size" "$name" "$preset"
     done
   done
+  if [[ -n ${SWEEP_DIR:-} && $size == "${sizes[0]}" ]]; then
+    mkdir -p "$SWEEP_DIR"
+    for name in "${names[@]}"; do
+      echo "bench_gpu.sh: sweep $name" >&2
+      "$bin" sweep "$root/scenes/$name.toml" --size "$size" --backend egl -q -o "$SWEEP_DIR" >"$SWEEP_DIR/$name.sweep.txt"
+    done
+  fi
 done
+echo "bench_gpu.sh: done in $(( $(date +%s) - start )) s" >&2
