@@ -16,26 +16,12 @@
 
 #include "io/image_io.h"
 #include "run.h"
+#include "shadertoy_json.h"
 
 namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-std::string escape(const std::string& code) {
-  std::string esc;
-  for (char c : code) esc += c == '"' ? std::string("\\\"") : c == '\n' ? std::string("\\n") : std::string(1, c);
-  return esc;
-}
-std::string pass(const std::string& name, const std::string& type, const std::string& out_id, const std::string& code,
-                 const std::string& inputs = "") {
-  return "{\"name\": \"" + name + "\", \"type\": \"" + type + "\", \"code\": \"" + escape(code) + "\", \"inputs\": [" +
-         inputs + "], \"outputs\": [" + (out_id.empty() ? "" : "{\"id\": " + out_id + ", \"channel\": 0}") + "]}";
-}
-std::string shader(const std::vector<std::string>& passes) {
-  std::string s = "{\"Shader\": {\"info\": {\"name\": \"cube\"}, \"renderpass\": [";
-  for (size_t i = 0; i < passes.size(); ++i) s += (i ? ", " : "") + passes[i];
-  return s + "]}}";
-}
 std::string cube_input(int channel, const std::string& src, const std::string& filter = "linear",
                        const std::string& vflip = "false") {
   return "{\"id\": 22, \"ctype\": \"cubemap\", \"channel\": " + std::to_string(channel) + ", \"src\": \"" + src +
@@ -265,7 +251,7 @@ std::string counting_json(bool with_buffer) {
       "void mainImage(out vec4 o, in vec2 f) { vec3 d = vec3(f.x - 2.0, 1.0, f.y - 1.5);\n"
       "  o = vec4(texture(iChannel0, d).xy, texelFetch(iChannel1, ivec2(f), 0).x, 1.0); }";
   std::vector<std::string> passes = {pass("Cube A", "cubemap", "41", cube, cube_a_input(0))};
-  if (with_buffer) passes.push_back(pass("Buffer A", "buffer", "257", buf, "{\"id\": 257, \"ctype\": \"buffer\", \"channel\": 0}"));
+  if (with_buffer) passes.push_back(pass("Buffer A", "buffer", "257", buf, buffer_input(0, 257)));
   passes.push_back(pass("Image", "image", "", image,
                         cube_a_input(0) + (with_buffer ? ", {\"id\": 257, \"ctype\": \"buffer\", \"channel\": 1}" : "")));
   return shader(passes);

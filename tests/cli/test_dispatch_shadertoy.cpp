@@ -15,6 +15,7 @@
 #include "image_diff.h"
 #include "io/image_io.h"
 #include "run.h"
+#include "shadertoy_json.h"
 #include "test_texture.h"
 
 namespace ms::test {
@@ -33,19 +34,6 @@ Image render(const TempDir& dir, const std::string& input, const std::string& di
   return read_image(dir / out);
 }
 
-// A pass as Shadertoy API JSON (as tests/cli/test_multipass.cpp writes them).
-std::string pass(const std::string& name, const std::string& type, int output, const std::string& code,
-                 const std::string& inputs) {
-  std::string esc;
-  for (char c : code) esc += c == '"' ? std::string("\\\"") : c == '\n' ? std::string("\\n") : std::string(1, c);
-  return "{\"name\": \"" + name + "\", \"type\": \"" + type + "\", \"code\": \"" + esc + "\", \"inputs\": [" + inputs +
-         "], \"outputs\": [" + (output > 0 ? "{\"id\": " + std::to_string(output) + ", \"channel\": 0}" : "") + "]}";
-}
-std::string shader(const std::vector<std::string>& passes) {
-  std::string s = "{\"Shader\": {\"info\": {\"name\": \"t\"}, \"renderpass\": [";
-  for (size_t i = 0; i < passes.size(); ++i) s += (i ? ", " : "") + passes[i];
-  return s + "]}}";
-}
 std::string sampler(const std::string& filter) {
   return "{\"filter\": \"" + filter + "\", \"wrap\": \"repeat\", \"vflip\": \"true\"}";
 }

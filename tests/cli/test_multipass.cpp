@@ -10,29 +10,12 @@
 
 #include "io/image_io.h"
 #include "run.h"
+#include "shadertoy_json.h"
 #include "test_texture.h"
 
 namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
-
-// A pass as Shadertoy API JSON; `inputs` is the JSON array's text.
-std::string pass(const std::string& name, const std::string& type, int output, const std::string& code,
-                 const std::string& inputs = "") {
-  std::string esc;
-  for (char c : code) esc += c == '"' ? std::string("\\\"") : c == '\n' ? std::string("\\n") : std::string(1, c);
-  return "{\"name\": \"" + name + "\", \"type\": \"" + type + "\", \"code\": \"" + esc + "\", \"inputs\": [" + inputs +
-         "], \"outputs\": [" + (output > 0 ? "{\"id\": " + std::to_string(output) + ", \"channel\": 0}" : "") + "]}";
-}
-std::string buffer_input(int channel, int id, const std::string& sampler = "") {
-  return "{\"id\": " + std::to_string(id) + ", \"ctype\": \"buffer\", \"channel\": " + std::to_string(channel) +
-         (sampler.empty() ? "" : ", \"sampler\": " + sampler) + "}";
-}
-std::string shader(const std::vector<std::string>& passes) {
-  std::string s = "{\"Shader\": {\"info\": {\"name\": \"t\"}, \"renderpass\": [";
-  for (size_t i = 0; i < passes.size(); ++i) s += (i ? ", " : "") + passes[i];
-  return s + "]}}";
-}
 
 const char* kCounterA =
     "void mainImage(out vec4 o, in vec2 f) { o = texelFetch(iChannel0, ivec2(f), 0) + vec4(1.0 / 255.0); }";

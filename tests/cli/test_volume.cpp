@@ -11,6 +11,7 @@
 #include "io/image_io.h"
 #include "render/project_passes.h"
 #include "run.h"
+#include "shadertoy_json.h"
 
 namespace ms::test {
 namespace {
@@ -19,11 +20,6 @@ namespace fs = std::filesystem;
 const char* kGray3D = "/media/a/27012b4eadd0c3ce12498b867058e4f717ce79e10a99568cca461682d84a4b04.bin";
 const char* kRgba3D = "/media/a/aea6b99da1d53055107966b59ac5444fc8bc7b3ce2d0bbb6a4a3cbae1d97f3aa.bin";
 
-std::string escape(const std::string& code) {
-  std::string esc;
-  for (char c : code) esc += c == '"' ? std::string("\\\"") : c == '\n' ? std::string("\\n") : std::string(1, c);
-  return esc;
-}
 std::string volume_input(int channel, const std::string& src, const std::string& sampler = "") {
   return "{\"id\": 30, \"ctype\": \"volume\", \"channel\": " + std::to_string(channel) + ", \"src\": \"" + src + "\"" +
          (sampler.empty() ? "" : ", \"sampler\": " + sampler) + "}";
@@ -34,7 +30,7 @@ std::string image_json(const std::string& code, const std::string& inputs, bool 
   if (with_buffer)
     s += "{\"name\": \"Buffer A\", \"type\": \"buffer\", \"code\": \"void mainImage(out vec4 o, in vec2 f) { o = "
          "vec4(0.25); }\", \"inputs\": [], \"outputs\": [{\"id\": 257, \"channel\": 0}]}, ";
-  return s + "{\"name\": \"Image\", \"type\": \"image\", \"code\": \"" + escape(code) + "\", \"inputs\": [" + inputs +
+  return s + "{\"name\": \"Image\", \"type\": \"image\", \"code\": \"" + json_escape(code) + "\", \"inputs\": [" + inputs +
          "], \"outputs\": []}]}}";
 }
 
