@@ -59,8 +59,8 @@ if (( ${#names[@]} == 0 )); then
   exit 2
 fi
 
-# shellcheck source=json_fields.sh
-source "$root/tools/gpu/json_fields.sh"
+# shellcheck source=common.sh
+source "$root/tools/gpu/common.sh"
 fmt() { awk -v x="$1" 'BEGIN { printf "%.3f", x }'; }
 timer() { awk -v x="$1" 'BEGIN { if (x < 0.001) print "-"; else printf "%.3f", x }'; }
 
@@ -79,8 +79,8 @@ if ! "$bin" bench "$root/scenes/${names[0]}.toml" --size 8x8 --frames 1 --warmup
 fi
 { read -r renderer; read -r vendor; read -r version; read -r backend; } < <(fields "$tmp/out.json" \
   /machine/gl_renderer /machine/gl_vendor /machine/gl_version /machine/backend)
-if [[ $renderer == *llvmpipe* || $renderer == *softpipe* || $backend != egl-device ]]; then
-  echo "bench_gpu.sh: EGL gave '$renderer' ($backend), not a GPU" >&2
+if why=$(not_a_gpu "$tmp/out.json"); then
+  echo "bench_gpu.sh: $why" >&2
   [[ ${ALLOW_SOFTWARE:-0} == 1 ]] || exit 3
 fi
 

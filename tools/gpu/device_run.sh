@@ -79,8 +79,10 @@ stage() {
 "$bin" bench "$root/scenes/seed.toml" --size 8x8 --frames 1 --warmup 0 --backend egl --json \
   >"$out/probe.json" 2>>"$log" || { say "probe: bench failed"; exit 3; }
 grep -E '"(backend|gl_renderer|gl_vendor|gl_version)"' "$out/probe.json" >>"$out/info.txt"
-if grep -qE '"gl_renderer": "[^"]*(llvmpipe|softpipe)' "$out/probe.json" && [[ ${ALLOW_SOFTWARE:-0} != 1 ]]; then
-  say "EGL gave a software renderer, not a GPU"
+# shellcheck source=common.sh
+source "$root/tools/gpu/common.sh"
+if why=$(not_a_gpu "$out/probe.json") && [[ ${ALLOW_SOFTWARE:-0} != 1 ]]; then
+  say "$why"
   exit 3
 fi
 export ALLOW_SOFTWARE=${ALLOW_SOFTWARE:-0}

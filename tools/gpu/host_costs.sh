@@ -16,8 +16,8 @@ read -r -a sizes <<<"${SIZES:-320x180 1280x720}"
 read -r -a dispatches <<<"${DISPATCHES:-fragment compute}"
 read -r -a extra <<<"${BENCH_FLAGS:-}"
 frames=${FRAMES:-50} warmup=${WARMUP:-5}
-# shellcheck source=json_fields.sh
-source "$root/tools/gpu/json_fields.sh"
+# shellcheck source=common.sh
+source "$root/tools/gpu/common.sh"
 r3() { awk -v x="$1" 'BEGIN { printf "%.3f", x }'; }
 timer() { awk -v x="$1" 'BEGIN { if (x < 0.001) print "-"; else printf "%.3f", x }'; }
 tmp=$(mktemp -d)
