@@ -45,8 +45,11 @@ read -r -a sizes <<<"${SIZES:-${SIZE:-1280x720 1920x1080 3840x2160}}"
 read -r -a presets <<<"${PRESETS:-textbook fast balanced reference}"
 read -r -a dispatches <<<"${DISPATCHES:-fragment compute}"
 
-# Let glvnd pick the GPU's EGL vendor: undo what the llvmpipe scripts pin.
-unset __EGL_VENDOR_LIBRARY_FILENAMES LIBGL_ALWAYS_SOFTWARE GALLIUM_DRIVER || true
+# The GPU's EGL vendor and libraries (launch.sh): undo what the llvmpipe
+# scripts pin, unless device_run.sh has already set this machine up.
+# shellcheck source=launch.sh
+source "$root/tools/gpu/launch.sh"
+[[ ${MARCH_GPU_ENV:-} == 1 ]] || gpu_environment "$(cd "$(dirname "$bin")" && pwd)"
 
 if [[ -n ${SCENES:-} ]]; then
   read -r -a names <<<"$SCENES"

@@ -12,33 +12,38 @@
 #   log.txt         every stage's progress and its time
 #
 # Usage: tools/gpu/device_run.sh [path/to/marchstudio-gpubench]
+#   (default .gpu/marchstudio-gpubench, as tools/gpu/pack.sh packs it; the
+#   packed folder goes first on the library path, and where the machine's
+#   glibc is too old the binary starts through the packed one: launch.sh)
 # Environment:
 #   OUT: the output directory (default gpu-out); the device tool's $OUT works
 #   BUDGET_S (default 480): seconds for all the stages; a stage gets what
 #     is left, the full table last, size by size
 #   FRAMES (60) and WARMUP (10) for every bench run
 #   TARGET_SIZE (1920x1080), HOST_SIZES ("1280x720 TARGET_SIZE"),
-#   FULL_SIZES ("1280x720 1920x1080 3840x2160"),
+#   FULL_SIZES ("1280x720 1920x1080 3840x2160"; set empty, no full table),
 #   FULL_SCENES and FULL_PRESETS (bench_gpu.sh's defaults: every scene and
 #     preset): a smaller run, e.g. the llvmpipe check in tests/CMakeLists.txt
 #   ALLOW_SOFTWARE=1: run on llvmpipe (the check; tables then say llvmpipe)
+#   MARCH_SHADER_DIR (default the checkout's sdf_shaders)
 # Exit codes: 0 every stage ran; 2 no binary; 3 no GPU behind EGL (unless
-# ALLOW_SOFTWARE=1); 4 a stage failed or ran out of time (the others ran).
+# ALLOW_SOFTWARE=1); 4 a stage failed or ran out of time (the others ran);
+# 5 the binary does not start on this machine (log.txt says why).
 set -uo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 bin=${1:-$root/.gpu/marchstudio-gpubench}
 out=${OUT:-gpu-out}
 budget=${BUDGET_S:-480}
 target_size=${TARGET_SIZE:-1920x1080}
-read -r -a full_sizes <<<"${FULL_SIZES:-1280x720 1920x1080 3840x2160}"
+read -r -a full_sizes <<<"${FULL_SIZES-1280x720 1920x1080 3840x2160}"
 export FRAMES=${FRAMES:-60} WARMUP=${WARMUP:-10}
 if [[ ! -x $bin ]]; then
   echo "device_run.sh: no binary at $bin (build the lean bench: docs/gpu-bench.md#gpu-figures)" >&2
   exit 2
 fi
-# Let glvnd pick the GPU's EGL vendor: undo what the llvmpipe scripts pin.
-unset __EGL_VENDOR_LIBRARY_FILENAMES LIBGL_ALWAYS_SOFTWARE GALLIUM_DRIVER || true
+export MARCH_SHADER_DIR=${MARCH_SHADER_DIR:-$root/sdf_shaders}
 mkdir -p "$out"
+out=$(cd "$out" && pwd)
 log=$out/log.txt
 start=$(date +%s)
 failed=0
@@ -70,14 +75,31 @@ stage() {
 
 {
   echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-  echo "host: $(uname -n) $(uname -r), $(nproc) CPUs"
+  echo "host: $(uname -n) $(uname -r), $(nproc) CPUs, $(ldd --version 2>/dev/null | head -1)"
   command -v nvidia-smi >/dev/null 2>&1 &&
     nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm --format=csv,noheader
 } >"$out/info.txt" 2>&1
 
+# The library path and EGL vendor for this machine's driver, and a binary
+# that starts here: the packed one, or the same through the packed glibc.
+# shellcheck source=launch.sh
+source "$root/tools/gpu/launch.sh"
+gpu_environment "$(cd "$(dirname "$bin")" && pwd)"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+if ! bin=$(gpu_launcher "$bin" "$work" 2>>"$log"); then
+  say "the binary does not start here: $(tail -1 "$log")"
+  exit 5
+fi
+{
+  echo "launch: $( [[ $bin == "$work"/* ]] && echo "through the packed glibc" || echo "plain")"
+  echo "LD_LIBRARY_PATH: $LD_LIBRARY_PATH"
+  echo "EGL vendor: ${__EGL_VENDOR_LIBRARY_FILENAMES:-none named, glvnd searches its folders}"
+} >>"$out/info.txt"
+
 # The GL strings, and the refusal of a software renderer, from one tiny run.
 "$bin" bench "$root/scenes/seed.toml" --size 8x8 --frames 1 --warmup 0 --backend egl --json \
-  >"$out/probe.json" 2>>"$log" || { say "probe: bench failed"; exit 3; }
+  >"$out/probe.json" 2>>"$log" || { say "probe: bench failed"; gpu_diagnosis >>"$log"; exit 3; }
 grep -E '"(backend|gl_renderer|gl_vendor|gl_version)"' "$out/probe.json" >>"$out/info.txt"
 # shellcheck source=common.sh
 source "$root/tools/gpu/common.sh"
