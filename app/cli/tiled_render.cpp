@@ -12,6 +12,7 @@
 #include "cli/progress.h"
 #include "core/error.h"
 #include "core/signal_scope.h"
+#include "io/atomic_file.h"
 #include "io/image_stream.h"
 #include "render/aov.h"
 #include "render/tiled_still.h"
@@ -72,8 +73,11 @@ void render_tiled_file(const TiledFile& job, FrameRenderer& renderer, PassGraph&
   const FrameParams& fp = still.params;
   std::vector<std::string> channels = {"R", "G", "B", "A"};
   channels.insert(channels.end(), job.aov_names.begin(), job.aov_names.end());
+  // The handler goes in before the writer makes its temporary (the path is
+  // AtomicFile's, io/atomic_file.h): a signal between the two, while the
+  // codec is set up, used to leave the temporary behind.
+  const RemoveOnSignal on_signal(temp_path_for(job.output, ::getpid()));
   ImageStreamWriter out(job.output, fp.width, fp.height, channels, job.meta);
-  const RemoveOnSignal on_signal(out.temp_path());
   if (job.watchdog && job.deadline && job.deadline->limited())
     job.watchdog->arm(*job.deadline, "the render", [temp = out.temp_path()] { ::unlink(temp.c_str()); });
 
