@@ -73,13 +73,15 @@ void render_tiled_file(const TiledFile& job, FrameRenderer& renderer, PassGraph&
   const FrameParams& fp = still.params;
   std::vector<std::string> channels = {"R", "G", "B", "A"};
   channels.insert(channels.end(), job.aov_names.begin(), job.aov_names.end());
-  // The handler goes in before the writer makes its temporary (the path is
-  // AtomicFile's, io/atomic_file.h): a signal between the two, while the
-  // codec is set up, used to leave the temporary behind.
-  const RemoveOnSignal on_signal(temp_path_for(job.output, ::getpid()));
-  ImageStreamWriter out(job.output, fp.width, fp.height, channels, job.meta);
+  // The signal handler and the watchdog's hook go in before the writer
+  // makes its temporary (the name is AtomicFile's, io/atomic_file.h): a
+  // signal or the deadline between the two, while the codec is set up, used
+  // to leave the temporary behind.
+  const fs::path temp = temp_path_for(job.output, ::getpid());
+  const RemoveOnSignal on_signal(temp);
   if (job.watchdog && job.deadline && job.deadline->limited())
-    job.watchdog->arm(*job.deadline, "the render", [temp = out.temp_path()] { ::unlink(temp.c_str()); });
+    job.watchdog->arm(*job.deadline, "the render", [temp] { ::unlink(temp.c_str()); });
+  ImageStreamWriter out(job.output, fp.width, fp.height, channels, job.meta);
 
   Progress progress(static_cast<int>(still_tiles(fp.width, fp.height, tiling).size()), ::isatty(2) == 1, stderr,
                     "tiles");

@@ -167,10 +167,15 @@ TEST(HugeStill, SigtermRemovesTheTemporary) { expect_sigterm_leaves_nothing({});
 // up: tests/shims/slow_temp.c holds the process there for 300 ms. The
 // handler used to go in only after the writer was built, so this left the
 // temporary behind (seen once in a loaded ctest run, every time with the shim).
+// LD_PRELOAD's value with tests/shims/slow_temp.c after what is preloaded
+// already (the sanitizer job's own stays first).
+std::string preload_slow_temp() {
+  const char* preload = std::getenv("LD_PRELOAD");
+  return (preload && *preload ? std::string(preload) + ":" : std::string()) + MARCH_SLOW_TEMP_SHIM;
+}
+
 TEST(HugeStill, ASignalRightAfterTheTemporaryIsMadeRemovesIt) {
-  const char* preload = std::getenv("LD_PRELOAD");  // the sanitizer job's own stays, first
-  expect_sigterm_leaves_nothing(
-      {"LD_PRELOAD=" + (preload && *preload ? std::string(preload) + ":" : std::string()) + MARCH_SLOW_TEMP_SHIM});
+  expect_sigterm_leaves_nothing({"LD_PRELOAD=" + preload_slow_temp()});
 }
 
 TEST(HugeStill, ATimeoutStopsBetweenTilesAndLeavesNothing) {
@@ -184,6 +189,19 @@ TEST(HugeStill, ATimeoutStopsBetweenTilesAndLeavesNothing) {
   EXPECT_TRUE(one_line(r.err)) << r.err;
   EXPECT_NE(r.err.find("--timeout: the render did not finish within 1 s"), std::string::npos) << r.err;
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 20.0);
+  EXPECT_TRUE(dir.entries().empty()) << "no file, no temporary";
+}
+
+// The deadline passes while the writer holds its new temporary (the shim
+// holds it 3 s): the watchdog's hook was armed only after the writer was
+// built, so the first watchdog (no hook) ended the process and left it.
+TEST(HugeStill, ATimeoutRightAfterTheTemporaryIsMadeLeavesNothing) {
+  TempDir dir;
+  const RunResult r = run_marchstudio({"render", kSeed, "--size", "2048x2048", "--spp", "8", "--tile-still", "256",
+                                       "--timeout", "1", "-o", "big.exr"},
+                                      dir.path(), "SLOW_TEMP_MS=3000 LD_PRELOAD='" + preload_slow_temp() + "' ");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("--timeout: the render did not finish within 1 s"), std::string::npos) << r.err;
   EXPECT_TRUE(dir.entries().empty()) << "no file, no temporary";
 }
 
