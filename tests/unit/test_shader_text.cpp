@@ -1,7 +1,7 @@
 // Whole numbers read from shader inputs are range-checked before they are
 // narrowed (JSON channels and ids, VS Code channel numbers, int uniforms),
-// labels put into generated GLSL stay inside their comment, and a -D value
-// cannot join the next line.
+// labels put into generated GLSL stay inside their comment, a -D value
+// cannot join the next line, and a driver's unknown name gets a did-you-mean.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "shader/glsl_scan.h"
+#include "shader/log_map.h"
 #include "shader/project_json.h"
 #include "shader/scene_params.h"
 #include "shader/vscode.h"
@@ -180,6 +181,45 @@ TEST(GeneratedText, TheReturnTypeOfADefinition) {
   EXPECT_EQ(definition_type("vec2 other(vec3 p);\nvec4  map (vec3 p) {}", "map"), "vec4");
   EXPECT_EQ(definition_type("float d = map(p);", "map"), "");
   EXPECT_EQ(definition_type("float mapX(vec3 p) {}", "map"), "");
+}
+
+TEST(CompileLog, ATrailingNulIsNoDiagnostic) {
+  ShaderSource src;
+  src.files = {"root.frag"};
+  // GL's INFO_LOG_LENGTH counts the terminator: a log read whole ends in it.
+  const std::string log = std::string("0:3(5): error: `x' undeclared\n") + '\0';
+  EXPECT_EQ(parse_info_log(log, src).size(), 1u);
+}
+
+TEST(CompileLog, AnUnknownNameGetsTheNearestDefinedOne) {
+  ShaderSource src;
+  src.files = {"root.frag"};
+  const std::string program =
+      "#define MAT_FLOOR 0\n#define MAT_BALL 1\n"
+      "float sdSphere(vec3 p, float r) { return length(p) - r; }\n"
+      "vec2 map(vec3 p) { return vec2(sdSphere(p, 1.0), MAT_BAL); }\n";
+  std::vector<ShaderDiagnostic> d = parse_info_log(
+      "0:4(40): error: `MAT_BAL' undeclared\n"
+      "0:4(20): error: no function with name 'sdSpher'\n"
+      "0:4(20): error: no function with name 'lenght'\n"
+      "0:4(20): error: `zzzzzz' undeclared\n"
+      "0:4(1): error: type mismatch\n",
+      src);
+  suggest_names(d, program);
+  ASSERT_EQ(d.size(), 5u);
+  EXPECT_EQ(d[0].suggestion, "did you mean 'MAT_BALL'?");
+  EXPECT_EQ(d[1].suggestion, "did you mean 'sdSphere'?");
+  EXPECT_EQ(d[2].suggestion, "did you mean 'length'?");
+  EXPECT_EQ(d[3].suggestion, "");
+  EXPECT_EQ(d[4].suggestion, "");
+  EXPECT_NE(format_diagnostics(d).find("root.frag:4: error: `MAT_BAL' undeclared (did you mean 'MAT_BALL'?)\n"),
+            std::string::npos)
+      << format_diagnostics(d);
+  // glslang's spelling too.
+  std::vector<ShaderDiagnostic> g = parse_info_log("ERROR: 0:4: 'MAT_BAL' : undeclared identifier\n", src);
+  suggest_names(g, program);
+  ASSERT_EQ(g.size(), 1u);
+  EXPECT_EQ(g[0].suggestion, "did you mean 'MAT_BALL'?");
 }
 
 }  // namespace
