@@ -19,6 +19,7 @@
 #include "scene/suggest.h"
 #include "scene/toml_guard.h"
 #include "scene/toml_read.h"
+#include "shader/glsl_scan.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -236,7 +237,7 @@ void read_case(const Reader& r, const toml::table& own, const toml::table* defau
       if (const auto* s = v.as_string()) value = s->get();
       else if (const auto* i = v.as_integer()) value = std::to_string(i->get());
       else r.fail(v, key, quote(key) + " must be a string or an integer", "write a float as a string: \"0.5\"");
-      if (value.find_first_of("\r\n") != std::string::npos) r.fail(v, key, quote(key) + " spans lines");
+      if (const std::string problem = define_value_problem(value); !problem.empty()) r.fail(v, key, quote(key) + " " + problem);
       c.defines.emplace_back(std::string(k.str()), value);
     }
   }

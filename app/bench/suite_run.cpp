@@ -217,6 +217,7 @@ CaseResult error_result(const SuiteCase& c, const ErrorInfo& e) {
   r.outcome = Outcome::error;
   r.error_code = e.code == Exit::system ? Exit::system : Exit::bad_input;
   r.message = format_error(e);
+  r.detail = e.detail;
   return r;
 }
 

@@ -72,6 +72,7 @@ struct CaseResult {
   Exit error_code = Exit::ok;  // bad_input or system when outcome is error
   std::string message;         // one line: the first failure, or what passed
   bool message_sums_up = false;  // the message only repeats the checks and budgets below
+  std::string detail;            // an error's whole compile log, one diagnostic a line (test -v)
   std::string backend, renderer;
   int width = 0, height = 0, frames = 1;
   double seconds = 0.0;

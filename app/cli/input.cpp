@@ -17,6 +17,7 @@
 #include "io/input_file.h"
 #include "scene/load.h"
 #include "scene/quality.h"
+#include "shader/glsl_scan.h"
 #include "shader/shadertoy.h"
 
 namespace ms {
@@ -53,8 +54,8 @@ std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector
     std::string name = f.substr(0, eq), value = eq == std::string::npos ? "1" : f.substr(eq + 1);
     if (!std::regex_match(name, ident))
       fail_input("'" + name + "' is not a GLSL identifier", {}, 0, "-D", "use -D NAME or -D NAME=VALUE");
-    if (value.find_first_of("\r\n") != std::string::npos)
-      fail_input("the value of '" + name + "' spans lines", {}, 0, "-D");
+    if (const std::string problem = define_value_problem(value); !problem.empty())
+      fail_input("the value of '" + name + "' " + problem, {}, 0, "-D", "one line, without a trailing '\\'");
     out.emplace_back(std::move(name), std::move(value));
   }
   return out;

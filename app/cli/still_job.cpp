@@ -24,6 +24,7 @@
 #include "render/still.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
+#include "shader/glsl_scan.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -89,7 +90,7 @@ Context& session_context(RenderSession& session, Backend backend) {
 void print_job_shader(const RenderJob& job) {
   const PreparedStill p = prepare_still(job);
   for (const PassSource& pass : p.in.passes) {
-    if (p.in.passes.size() > 1) std::printf("// ==== marchstudio: pass %s ====\n", pass.name.c_str());
+    if (p.in.passes.size() > 1) std::printf("// ==== marchstudio: pass %s ====\n", comment_label(pass.name).c_str());
     std::fputs(pass.source.text.c_str(), stdout);
   }
 }

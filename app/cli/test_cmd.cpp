@@ -46,6 +46,7 @@ CLI::App* add_test_command(CLI::App& app, TestArgs& a) {
                   "default (0 pass, 1 fail, 2 bad input, 3 system) or idiff (0 pass, 1 warn, 2 fail, 4 could not run)");
   cmd->add_option("--only", a.only, "Run only the cases whose name matches this glob (repeatable)");
   cmd->add_flag("--list", a.list, "Print the suite's cases, as expanded, and exit");
+  cmd->add_flag("-v,--verbose", a.verbose, "Print every compile error of a case that could not run, after its line");
   add_shader_dir_flag(cmd, a.shader_dir);
   cmd->add_option("--dispatch", a.dispatch,
                   "Draw every case's images and counting pass as a fragment pass (default) or a compute dispatch "
@@ -129,6 +130,13 @@ class Terminal {
     std::fflush(out_);
   }
   void line(const std::string& text) { std::fprintf(out_, "%s\n", text.c_str()); }
+  // An error's whole log (-v), indented under its case line.
+  void detail(const std::string& text) {
+    for (size_t at = 0, end; at < text.size(); at = end + 1) {
+      end = std::min(text.find('\n', at), text.size());
+      if (end > at) std::fprintf(out_, "  %s\n", text.substr(at, end - at).c_str());
+    }
+  }
 
  private:
   double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
@@ -187,7 +195,10 @@ int run(const TestArgs& a, ExitCodes codes) {
   opts.dispatch = dispatch;
   opts.report_dir = a.report;
   opts.on_start = [&](const SuiteCase& c, int i, int n) { term.start(c, i, n); };
-  opts.on_done = [&](const CaseResult& r, int i, int n) { term.done(r, i, n); };
+  opts.on_done = [&](const CaseResult& r, int i, int n) {
+    term.done(r, i, n);
+    if (a.verbose) term.detail(r.detail);
+  };
   const SuiteResult result = run_suite(suite, cases, calibration ? &*calibration : nullptr, opts);
 
   std::vector<std::string> updated;

@@ -22,6 +22,7 @@ struct TestArgs {
   std::string exit_codes = "default"; // default | idiff
   std::vector<std::string> only;      // case-name globs
   bool list = false;                  // print the cases and exit
+  bool verbose = false;               // -v: every compile error of a case that could not run
   std::string shader_dir;
   std::string dispatch = "fragment";  // --dispatch fragment|compute (cli/dispatch_flag.h)
 };

@@ -81,6 +81,8 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_option("--debounce-ms", a.debounce_ms, "Quiet time that ends a save, ms (default 10)")
       ->check(CLI::Range(0, 1000));
   cmd->add_flag("--no-panel", a.no_panel, "Start with the panel hidden (Tab shows it)");
+  // A failed reload prints the compiler's whole log anyway; -v, as render's, prints it for an error that ends the run.
+  cmd->add_flag("-v,--verbose", a.verbose, "Print every compile error, not the first and a count");
   cmd->add_option("--dispatch", a.dispatch,
                   "Trace the scene pass as a fragment pass (default), a compute dispatch, or auto; the window's "
                   "display pass stays fragment (docs/viewer.md#compute)");

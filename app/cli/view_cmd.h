@@ -38,6 +38,7 @@ struct ViewArgs {
   std::string dispatch = "fragment";  // --dispatch fragment|compute|auto
   std::string compute_group;          // hidden --compute-group WxH; "": 8x8, or auto's measured group
   bool no_specialize = false;  // the generic shader, not one specialized to the scene
+  bool verbose = false;        // -v: every compile error of a load that fails before the window
   std::vector<std::string> allow_include;  // more directories #include may read
   Overrides overrides;       // --set, --uniform: applied again at every reload
 };

@@ -1,5 +1,6 @@
 #include "render/program.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstring>
 #include <vector>
@@ -23,7 +24,11 @@ std::string info_log(GLuint object, GetIv get_iv, GetLog get_log) {
   GLint len = 0;
   get_iv(object, GL_INFO_LOG_LENGTH, &len);
   std::string log(len > 0 ? len : 0, '\0');
-  if (len > 0) get_log(object, len, nullptr, log.data());
+  GLsizei written = 0;
+  if (len > 0) get_log(object, len, &written, log.data());
+  // INFO_LOG_LENGTH counts the terminating NUL: kept, it read as one more
+  // diagnostic ("+1 more" for a single error).
+  log.resize(static_cast<size_t>(std::clamp<GLsizei>(written, 0, len)));
   return log;
 }
 
@@ -33,7 +38,8 @@ std::string program_log(GLuint program) { return info_log(program, glGetProgrami
 // The first error-level diagnostic as the one-line Error; the count of the
 // rest goes into the hint so nothing is silently dropped.
 [[noreturn]] void fail_with_log(const std::string& stage, const std::string& log, const ShaderSource& src) {
-  const std::vector<ShaderDiagnostic> diags = parse_info_log(log, src);
+  std::vector<ShaderDiagnostic> diags = parse_info_log(log, src);
+  suggest_names(diags, src.text);
   const ShaderDiagnostic* first = nullptr;
   int errors = 0;
   for (const auto& d : diags) {
@@ -42,16 +48,12 @@ std::string program_log(GLuint program) { return info_log(program, glGetProgrami
     ++errors;
   }
   if (!first && !diags.empty()) first = &diags.front();
-  std::string hint = errors > 1 ? "+" + std::to_string(errors - 1) + " more; -v prints them all" : "";
   if (!first) fail_input(stage + " failed with an empty log", src.files.empty() ? "" : src.files[0]);
+  std::string hint = first->suggestion;
+  if (errors > 1) hint += (hint.empty() ? "+" : "; +") + std::to_string(errors - 1) + " more; -v prints them all";
   // The whole log, mapped, for -v: what "+N more" stands for.
-  std::string detail;
-  for (const ShaderDiagnostic& d : diags) {
-    if (!d.file.empty()) detail += d.file + (d.line > 0 ? ":" + std::to_string(d.line) : "") + ": ";
-    if (!d.severity.empty()) detail += d.severity + ": ";
-    detail += d.message + "\n";
-  }
-  throw Error(ErrorInfo{Exit::bad_input, first->file, first->line, {}, stage + " error: " + first->message, hint, detail});
+  throw Error(ErrorInfo{Exit::bad_input, first->file, first->line, {}, stage + " error: " + first->message, hint,
+                        format_diagnostics(diags)});
 }
 
 GLuint compile(GLenum type, const std::string& text, const ShaderSource& src, const char* stage) {

@@ -39,4 +39,35 @@ size_t find_definition(std::string_view code, std::string_view name, std::string
   return std::string_view::npos;
 }
 
+std::string definition_type(std::string_view code, std::string_view name) {
+  static constexpr std::string_view kTypes[] = {"void",  "float", "int",   "uint",  "bool",  "double", "vec2",
+                                                "vec3",  "vec4",  "ivec2", "ivec3", "ivec4", "uvec2",  "uvec3",
+                                                "uvec4", "bvec2", "bvec3", "bvec4", "mat2",  "mat3",   "mat4"};
+  size_t best = std::string_view::npos;
+  std::string_view type;
+  for (std::string_view t : kTypes)
+    if (const size_t at = find_definition(code, name, t); at < best) best = at, type = t;
+  return std::string(type);
+}
+
+std::string comment_label(std::string_view label) {
+  std::string out;
+  for (char c : label) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) c = ' ';
+    if (c == '\\') c = '/';
+    if (c == '/' && !out.empty() && out.back() == '*') out += ' ';
+    out += c;
+  }
+  return out;
+}
+
+std::string define_value_problem(std::string_view value) {
+  if (value.find_first_of("\r\n") != std::string_view::npos) return "spans lines";
+  const size_t last = value.find_last_not_of(" \t");
+  if (last != std::string_view::npos && value[last] == '\\')
+    return "ends in a backslash, which would join the next line of the shader";
+  return {};
+}
+
 }  // namespace ms

@@ -2,15 +2,21 @@
 
 #include <cctype>
 #include <regex>
+#include <set>
+
+#include "scene/suggest.h"
+#include "shader/glsl_scan.h"
 
 namespace ms {
 
 namespace {
 
+// A NUL is blank too: a log read with its terminator ends in one.
 std::string trimmed(std::string_view s) {
-  size_t b = s.find_first_not_of(" \t\r");
+  constexpr std::string_view blank(" \t\r\0", 4);
+  size_t b = s.find_first_not_of(blank);
   if (b == std::string_view::npos) return {};
-  size_t e = s.find_last_not_of(" \t\r");
+  size_t e = s.find_last_not_of(blank);
   return std::string(s.substr(b, e - b + 1));
 }
 
@@ -40,7 +46,89 @@ void locate(ShaderDiagnostic& d, const ShaderSource& src, const std::string& str
   }
 }
 
+// The name a driver reports unknown, in Mesa's, glslang's and NVIDIA's
+// words, or "".
+std::string unknown_name(const std::string& m) {
+  static const std::regex forms[] = {
+      std::regex(R"(^`([A-Za-z_]\w*)' undeclared)"),                     // Mesa
+      std::regex(R"(^no function with name '([A-Za-z_]\w*)')"),          // Mesa
+      std::regex(R"(^'([A-Za-z_]\w*)' : (?:undeclared identifier|no matching overloaded function found))"),  // glslang
+      std::regex(R"(undefined variable \"([A-Za-z_]\w*)\")"),             // NVIDIA
+  };
+  if (m.size() > 300) return {};  // no such message is long; the regex recurses per character
+  std::smatch hit;
+  for (const std::regex& f : forms)
+    if (std::regex_search(m, hit, f)) return hit[1];
+  return {};
+}
+
+bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The names `program` defines: each #define's, and each function's (an
+// identifier after a type and before '(').
+std::vector<std::string> defined_names(std::string_view program) {
+  static const std::set<std::string, std::less<>> not_types = {"return", "else", "case", "define", "if", "elif",
+                                                               "ifdef", "ifndef", "undef", "defined"};
+  const std::string code = strip_comments(program);
+  std::set<std::string> names;
+  std::string previous;  // the identifier just before, with only blanks between
+  bool after_hash_define = false;
+  for (size_t i = 0; i < code.size();) {
+    const char c = code[i];
+    if (std::isdigit(static_cast<unsigned char>(c))) {  // a number, with its suffix or exponent (1.0e5, 0x1Fu)
+      while (i < code.size() && (ident_char(code[i]) || code[i] == '.')) ++i;
+      previous.clear();
+      continue;
+    }
+    if (!ident_char(c)) {
+      if (c == '#') {
+        const size_t j = code.find_first_not_of(" \t", i + 1);
+        after_hash_define = j != std::string::npos && code.compare(j, 6, "define") == 0;
+      }
+      if (c != ' ' && c != '\t' && c != '\n' && c != '\r') previous.clear();
+      ++i;
+      continue;
+    }
+    size_t j = i;
+    while (j < code.size() && ident_char(code[j])) ++j;
+    std::string word = code.substr(i, j - i);
+    const size_t next = code.find_first_not_of(" \t\n", j);
+    if (after_hash_define && word != "define") {
+      names.insert(word);
+      after_hash_define = false;
+    } else if (next != std::string::npos && code[next] == '(' && !previous.empty() && !not_types.count(previous)) {
+      names.insert(word);
+    }
+    previous = std::move(word);
+    i = j;
+  }
+  return {names.begin(), names.end()};
+}
+
 }  // namespace
+
+void suggest_names(std::vector<ShaderDiagnostic>& diags, std::string_view program) {
+  static const std::vector<std::string> builtins = {
+      "radians", "degrees", "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "pow", "exp", "log",
+      "exp2", "log2", "sqrt", "inversesqrt", "abs", "sign", "floor", "trunc", "round", "ceil", "fract", "mod", "modf",
+      "min", "max", "clamp", "mix", "step", "smoothstep", "isnan", "isinf", "length", "distance", "dot", "cross",
+      "normalize", "reflect", "refract", "faceforward", "transpose", "inverse", "determinant", "texture", "texelFetch",
+      "textureLod", "textureSize", "dFdx", "dFdy", "fwidth", "vec2", "vec3", "vec4", "mat2", "mat3", "mat4"};
+  std::vector<std::string> names;
+  std::vector<std::string_view> candidates;
+  for (ShaderDiagnostic& d : diags) {
+    const std::string name = d.severity == "error" ? unknown_name(d.message) : std::string();
+    if (name.empty()) continue;
+    if (names.empty()) {  // read the program once, and only when a name is unknown
+      names = defined_names(program);
+      names.insert(names.end(), builtins.begin(), builtins.end());
+    }
+    candidates.clear();
+    for (const std::string& n : names)
+      if (n != name) candidates.emplace_back(n);
+    d.suggestion = did_you_mean(name, candidates);
+  }
+}
 
 SourceLocation map_location(const ShaderSource& src, long long string_no, long long line) {
   // Lines of included files carry their file in the line number (see
@@ -113,7 +201,7 @@ std::string format_diagnostics(const std::vector<ShaderDiagnostic>& diags) {
       out += ": ";
     }
     if (!d.severity.empty()) out += d.severity + ": ";
-    out += d.message + "\n";
+    out += d.message + (d.suggestion.empty() ? "" : " (" + d.suggestion + ")") + "\n";
   }
   return out;
 }

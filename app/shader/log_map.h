@@ -14,6 +14,7 @@ struct ShaderDiagnostic {
   int line = 0;          // 0 when unknown
   std::string severity;  // "error", "warning", "info", or empty for lines passed through
   std::string message;
+  std::string suggestion;  // "did you mean 'MAT_BALL'?" for an unknown name, or empty
 };
 
 struct SourceLocation {
@@ -33,7 +34,13 @@ SourceLocation map_location(const ShaderSource& src, long long string_no, long l
 // glslang's "N compilation errors" summary are dropped.
 std::vector<ShaderDiagnostic> parse_info_log(std::string_view log, const ShaderSource& src);
 
-// One "file:line: severity: message" line per diagnostic, each ending in '\n'.
+// For each diagnostic about an unknown name (an undeclared identifier, no
+// function of that name), the nearest name `program` defines (its #define
+// macros, MAT_<NAME> included, and its functions) or a GLSL built-in.
+void suggest_names(std::vector<ShaderDiagnostic>& diags, std::string_view program);
+
+// One "file:line: severity: message (suggestion)" line per diagnostic, each
+// ending in '\n'.
 std::string format_diagnostics(const std::vector<ShaderDiagnostic>& diags);
 
 }  // namespace ms

@@ -3,7 +3,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <map>
+#include <optional>
 
 #include "core/error.h"
 
@@ -101,19 +104,33 @@ class Loader {
     if (j.is_string() && (j == "true" || j == "false")) return j == "true";
     fail(path, "'" + path + "' must be true or false");
   }
-  int integer(const json& j, const std::string& path) const {
-    if (j.is_number_integer()) return j.get<int>();
+  // The value as a whole number, never narrowed: callers range-check it
+  // (get<int>() read 4294967297 as 1).
+  long long integer(const json& j, const std::string& path) const {
+    if (const std::optional<long long> v = whole(j)) return *v;
     if (j.is_string()) {
       const std::string s = j.get<std::string>();
-      if (!s.empty() && s.size() < 9 && s.find_first_not_of("0123456789") == std::string::npos) return std::stoi(s);
+      if (!s.empty() && s.size() <= 18 && s.find_first_not_of("0123456789") == std::string::npos) return std::stoll(s);
     }
-    fail(path, "'" + path + "' must be a whole number");
+    fail(path, "'" + path + "' must be a whole number", "at most 18 digits");
+  }
+
+  // A JSON integer that fits a long long, else nothing (a float, or
+  // 2^64-1 as nlohmann's unsigned).
+  static std::optional<long long> whole(const json& j) {
+    if (j.is_number_unsigned()) {
+      const std::uint64_t u = j.get<std::uint64_t>();
+      if (u > static_cast<std::uint64_t>(std::numeric_limits<long long>::max())) return std::nullopt;
+      return static_cast<long long>(u);
+    }
+    if (j.is_number_integer()) return j.get<std::int64_t>();
+    return std::nullopt;
   }
 
   // A buffer named by id (257..260, or the site's string ids) or by the
   // previz file ("/media/previz/buffer00.png" .. buffer03), or -1.
   static int buffer_of(const json& id, const std::string& file) {
-    if (id.is_number_integer() && id.get<int>() >= 257 && id.get<int>() <= 260) return id.get<int>() - 257;
+    if (const std::optional<long long> n = whole(id); n && *n >= 257 && *n <= 260) return static_cast<int>(*n - 257);
     if (id.is_string()) {
       static const char* ids[] = {"4dXGR8", "XsXGR8", "4sXGR8", "XdfGR8"};
       for (int i = 0; i < 4; ++i)
@@ -131,7 +148,7 @@ class Loader {
 
   // Cube A, by id (41, or the site's "4dX3Rr") or its previz file.
   static bool is_cube_a(const json& id, const std::string& file) {
-    if ((id.is_number_integer() && id.get<int>() == 41) || (id.is_string() && (id == "4dX3Rr" || id == "41")))
+    if (whole(id) == 41LL || (id.is_string() && (id == "4dX3Rr" || id == "41")))
       return true;
     return file.find("/media/previz/cubemap00.png") != std::string::npos;
   }
@@ -186,9 +203,9 @@ class Loader {
     if (type.is_null()) fail(path, "'" + path + "' has no ctype", "each input says what it reads");
     out.kind = kind_of(str(type, path + (in.contains("ctype") ? ".ctype" : ".type")), path + ".ctype");
     if (!in.contains("channel")) fail(path, "'" + path + "' has no channel");
-    channel = integer(in["channel"], path + ".channel");
-    if (channel < 0 || channel > 3)
-      fail(path + ".channel", "channel " + std::to_string(channel) + " is out of range", "iChannel0..iChannel3");
+    const long long n = integer(in["channel"], path + ".channel");
+    if (n < 0 || n > 3) fail(path + ".channel", "channel " + std::to_string(n) + " is out of range", "iChannel0..iChannel3");
+    channel = static_cast<int>(n);
     const std::string src = in.contains("src") && in["src"].is_string()           ? in["src"].get<std::string>()
                             : in.contains("filepath") && in["filepath"].is_string() ? in["filepath"].get<std::string>()
                                                                                   : "";

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <regex>
 #include <set>
 #include <string>
@@ -104,7 +105,14 @@ std::string initializer(const SceneParam& p, const UniformValue& v) {
     if (!std::isfinite(x)) fail_input(what + " must be a finite number, got " + format_number(x), {}, 0, key);
     if (p.is_int && x != std::floor(x))
       fail_input(what + " takes a whole number, got " + format_number(x), {}, 0, key);
-    if (x < p.lo || x > p.hi)
+    // 1e3 is 1000 for an int; past int's range it would wrap or not compile.
+    if (p.is_int && (x < std::numeric_limits<int>::min() || x > std::numeric_limits<int>::max()))
+      fail_input(format_number(x) + " is out of range for int (-2147483648..2147483647)", {}, 0, key,
+                 what + " is a GLSL int");
+    // A float is compared as the float it becomes, as the range's bounds
+    // are: 1e11 is then inside range(0, 1e11).
+    const double as_set = p.is_int ? x : static_cast<double>(static_cast<float>(x));
+    if (as_set < p.lo || as_set > p.hi)
       fail_input(format_number(x) + " is outside the range " + range + " of " + what, {}, 0, key,
                  p.color ? "a colour's components are in [0, 1]" : "its declaration says range(" + format_number(p.lo) +
                                                                        ", " + format_number(p.hi) + ")");

@@ -115,7 +115,11 @@ struct Loader {
   }
 
   void parse_channel(File& f, const std::string& name, const std::string& args, int line) {
-    const int n = std::stoi(name.substr(8).substr(0, 3));
+    // The extension reads the number with parseInt: "00003" is 3. Leading
+    // zeros dropped, a number longer than 3 digits is out of range, whatever
+    // its first digits (reading only those made 00003 iChannel0).
+    const std::string digits = name.substr(std::min(name.find_first_not_of('0', 8), name.size() - 1));
+    const int n = digits.size() > 3 ? 1000 : std::stoi(digits);
     const std::string key = "#" + name;
     if (n > 3)
       fail(key + ": marchstudio binds iChannel0..iChannel3", f.where, line, key, "Shadertoy's four channels; the extension's go to 9");

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 #include "core/error.h"
@@ -59,6 +60,12 @@ std::string number(double v, bool is_int) {
   std::string s = o.str();
   if (s.find_first_of(".e") == std::string::npos) s += ".0";
   return s;
+}
+
+std::string format_int_range(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str() + " is out of range for int (-2147483648..2147483647)";
 }
 
 }  // namespace
@@ -146,9 +153,14 @@ std::string vscode_uniform_line(const std::string& args, const std::string& wher
     if (value.empty()) value = {lo};  // as the extension: no default, the minimum
   }
   if (value.empty()) fail("no value: give '= value' or a range 'in { min, max }'");
-  if (is_int)
+  if (is_int) {
     for (double v : value)
       if (v != std::floor(v)) fail("'" + def + "' is not an int");
+    // Past int's range the literal would wrap or not compile.
+    for (double v : {value[0], lo, hi})
+      if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+        fail(format_int_range(v), "#iUniform int is a 32-bit GLSL int");
+  }
 
   const std::string glsl_type = color ? "vec3" : type;
   std::string init;
