@@ -16,6 +16,7 @@
 #include "io/direct_codec.h"
 #include "io/image_backend.h"
 #include "io/image_io.h"
+#include "io/temp_cleanup.h"
 #include "render/aov.h"
 #include "render/bounds_check.h"
 #include "render/compute_frame.h"
@@ -111,6 +112,8 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
     fail_input("--frame conflicts with a shader that has buffers: its still replays frames 0..N, N = round(time x fps)",
                {}, 0, "--frame", "give --time (and --fps) instead");
   report_input_warnings(in.warnings, input.string(), job.strict);
+  for (const fs::path& t : remove_dead_temps(output))
+    std::fprintf(stderr, "marchstudio: removed %s, left by an interrupted run\n", t.string().c_str());
   fp.exposure = scene.render.exposure;
   fp.aovs = aovs;
   fp.deadline = deadline.limited() ? &deadline : nullptr;
@@ -214,7 +217,10 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
   const double t_render = clock.lap();
   deadline.check("the render");
   if (watchdog) watchdog->disarm();  // the write is atomic and must not be cut short
-  write_image(img, output, meta);
+  {
+    const RemoveTempOnSignal on_signal(output);  // Ctrl-C or SIGTERM while writing: no temporary left
+    write_image(img, output, meta);
+  }
   if (job.verbose)
     std::fprintf(stderr, "marchstudio: context %.1f ms, compile %.1f ms, render %.1f ms, write %.1f ms\n",
                  t_context * 1e3, t_compile * 1e3, t_render * 1e3, clock.lap() * 1e3);
