@@ -207,12 +207,7 @@ int run_sequence(const RenderArgs& a) {
   StatefulPlan sp;
   if (stateful) {
     sp = plan_stateful(mine, pattern, fp.width, fp.height, state_key(job), fingerprint, a.no_write || a.force);
-    if (!a.no_write) {  // a checkpoint's temporary is never renamed into place: a killed run's
-      std::vector<fs::path> frames;
-      for (int f : mine) frames.push_back(pattern.path(f));
-      for (const fs::path& p : remove_checkpoint_temps(frames, sp.key))
-        std::fprintf(stderr, "marchstudio: removed %s, left by an interrupted run\n", p.string().c_str());
-    }
+    if (!a.no_write) remove_checkpoint_temps(pattern, mine, sp.key);
     // Read now, before the context: a checkpoint that cannot be used costs a replay, not the run.
     load_resume_state(sp, mine, pattern, state_buffers(in.passes), fp.width, fp.height, fingerprint);
     // Frames after the resume point render again even when present: they follow from it.

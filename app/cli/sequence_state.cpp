@@ -83,6 +83,13 @@ void load_resume_state(StatefulPlan& p, const std::vector<int>& mine, const Fram
   resume_at(p, mine, -1);
 }
 
+void remove_checkpoint_temps(const FramePattern& pattern, const std::vector<int>& mine, const std::string& key) {
+  std::vector<fs::path> frames;
+  for (int f : mine) frames.push_back(pattern.path(f));
+  for (const fs::path& p : remove_checkpoint_temps(frames, key))
+    std::fprintf(stderr, "marchstudio: removed %s, left by an interrupted run\n", p.string().c_str());
+}
+
 std::vector<int> state_buffers(const std::vector<PassSource>& passes) {
   std::vector<int> out;
   for (int b = 0; b < 4; ++b)

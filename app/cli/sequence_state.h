@@ -65,6 +65,10 @@ StatefulPlan plan_stateful(const std::vector<int>& mine, const FramePattern& pat
 void load_resume_state(StatefulPlan& p, const std::vector<int>& mine, const FramePattern& pattern,
                        const std::vector<int>& buffers, int width, int height, const FrameFingerprint& fingerprint);
 
+// Removes the temporaries of this run's checkpoints that a killed run left
+// (io/checkpoint.h), saying so on stderr, as scan_existing() does for frames.
+void remove_checkpoint_temps(const FramePattern& pattern, const std::vector<int>& mine, const std::string& key);
+
 // The buffers a graph of `passes` carries, as PassGraph::buffers() lists
 // them (A..D that some pass writes, then Cube A), known before any GL.
 std::vector<int> state_buffers(const std::vector<PassSource>& passes);
