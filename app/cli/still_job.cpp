@@ -87,6 +87,11 @@ Context& session_context(RenderSession& session, Backend backend) {
 
 }  // namespace
 
+void say_removed_temps(const std::vector<fs::path>& outputs) {
+  for (const fs::path& t : remove_dead_temps(outputs))
+    std::fprintf(stderr, "marchstudio: removed %s, left by an interrupted run\n", t.string().c_str());
+}
+
 void print_job_shader(const RenderJob& job) {
   const PreparedStill p = prepare_still(job);
   for (const PassSource& pass : p.in.passes) {
@@ -112,8 +117,6 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
     fail_input("--frame conflicts with a shader that has buffers: its still replays frames 0..N, N = round(time x fps)",
                {}, 0, "--frame", "give --time (and --fps) instead");
   report_input_warnings(in.warnings, input.string(), job.strict);
-  for (const fs::path& t : remove_dead_temps(output))
-    std::fprintf(stderr, "marchstudio: removed %s, left by an interrupted run\n", t.string().c_str());
   fp.exposure = scene.render.exposure;
   fp.aovs = aovs;
   fp.deadline = deadline.limited() ? &deadline : nullptr;

@@ -3,10 +3,12 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cstring>
+#include <map>
 #include <string>
 
 #include "io/atomic_file.h"
@@ -57,19 +59,24 @@ RemoveTempOnSignal::~RemoveTempOnSignal() {
   if (slot_ >= 0) g_count = slot_;
 }
 
-std::vector<fs::path> remove_dead_temps(const fs::path& target) {
+std::vector<fs::path> remove_dead_temps(const std::vector<fs::path>& targets) {
+  std::map<fs::path, std::vector<fs::path>> by_dir;
+  for (const fs::path& t : targets) by_dir[t.parent_path()].push_back(t);
   std::vector<fs::path> removed;
-  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  std::error_code ec;
-  std::vector<fs::path> found;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind('.', 0) == 0 && is_temp_of(name, target)) found.push_back(target.parent_path() / name);
-  }
-  for (const fs::path& p : found) {
-    const long pid = temp_pid(p.filename().string());
-    if (pid == ::getpid() || alive(pid)) continue;  // ours (made later), or another run's still writing
-    if (fs::remove(p, ec)) removed.push_back(p);
+  for (const auto& [parent, in_dir] : by_dir) {
+    std::error_code ec;
+    std::vector<fs::path> found;
+    for (const fs::directory_entry& e : fs::directory_iterator(parent.empty() ? fs::path(".") : parent, ec)) {
+      const std::string name = e.path().filename().string();
+      if (name.rfind('.', 0) != 0 || name.find(".tmp") == std::string::npos) continue;
+      if (std::any_of(in_dir.begin(), in_dir.end(), [&](const fs::path& t) { return is_temp_of(name, t); }))
+        found.push_back(parent / name);
+    }
+    for (const fs::path& p : found) {
+      const long pid = temp_pid(p.filename().string());
+      if (pid == ::getpid() || alive(pid)) continue;  // ours (made later), or another run's still writing
+      if (fs::remove(p, ec)) removed.push_back(p);
+    }
   }
   return removed;
 }

@@ -2,7 +2,7 @@
 // target) under signals and reruns, for every still a process writes (one
 // image, a --jobs batch, a tiled still): one signal scope for all of them.
 //
-//   for (const fs::path& p : remove_dead_temps(output)) ...   // a killed run's
+//   for (const fs::path& p : remove_dead_temps({output})) ...   // a killed run's
 //   {
 //     const RemoveTempOnSignal guard(output);  // before the temporary is made
 //     write_image(img, output, meta);          // SIGINT/SIGTERM: removed, exit 130/143
@@ -38,9 +38,10 @@ class RemoveTempOnSignal {
   std::optional<SignalScope> scope_;
 };
 
-// Removes the temporaries of `target` (io/atomic_file.h's is_temp_of) whose
-// process is gone: not this one, and no live process has that pid. Returns
-// what it removed.
-std::vector<std::filesystem::path> remove_dead_temps(const std::filesystem::path& target);
+// Removes the temporaries of `targets` (io/atomic_file.h's is_temp_of)
+// whose process is gone: not this one, and no live process has that pid.
+// Each directory is read once, however many targets are in it (a batch).
+// Returns what it removed.
+std::vector<std::filesystem::path> remove_dead_temps(const std::vector<std::filesystem::path>& targets);
 
 }  // namespace ms
