@@ -49,10 +49,11 @@ bool read_cache(const fs::path& f, IrradianceSh& sh) {
   return true;
 }
 
-// Why cached coefficients cannot be those of map `m`, or empty when they can:
-// each is at most 4 pi x 1.1 times the map's brightest texel (every basis
-// function is below 1.1 in magnitude on the sphere, every band weight <= 1), and they are not all zero unless the
-// map is black. A planted or damaged entry (zeros, 1e38) is not trusted.
+// Why cached coefficients cannot be those of map `m`, or empty when they
+// can: each is at most 4 pi x 1.1 times the map's brightest texel (every
+// basis function is below 1.1 in magnitude on the sphere, every band weight
+// <= 1), and they are not all zero unless the map is black. A planted or
+// damaged entry (zeros, 1e38) is not trusted.
 std::string implausible(const IrradianceSh& sh, const Image& m) {
   const int nc = std::min(m.nchannels(), 3);
   double brightest = 0;
