@@ -92,6 +92,10 @@ int run_batch(const RenderArgs& a) {
   const std::vector<BatchEntry> entries = batch_entries(a);
   if (entries.empty()) fail_input("the batch has no jobs", a.jobs, 0, "--jobs", "one JSON object per line");
   refuse_shared_outputs(entries);
+  std::vector<fs::path> outputs;
+  for (const BatchEntry& e : entries)
+    if (e.job) outputs.push_back(e.job->output);
+  say_removed_temps(outputs);
 
   const int total = static_cast<int>(entries.size());
   const bool tty = total > 1 && ::isatty(2) == 1;

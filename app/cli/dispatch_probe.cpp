@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -13,7 +12,6 @@
 #include "bench/dispatch_plan.h"
 #include "cli/dispatch_flag.h"
 #include "core/error.h"
-#include "io/atomic_file.h"
 #include "io/cache_dir.h"
 #include "render/scene_drawer.h"
 
@@ -49,8 +47,9 @@ std::optional<DispatchChoice> parse_choice(const std::string& text) {
 std::vector<CacheLine> read_cache(const fs::path& path, bool& corrupt) {
   corrupt = false;
   std::vector<CacheLine> lines;
-  std::ifstream f(path);
-  if (!f) return lines;
+  std::string text;
+  if (!read_cache_file(path, text)) return lines;  // missing, or not a regular file: a miss
+  std::istringstream f(text);
   std::string line;
   while (std::getline(f, line)) {
     std::vector<std::string> fields;
@@ -90,7 +89,10 @@ double median_frame_ms(SceneDrawer& drawer, PassGraph& graph, const Program& pos
 
 }  // namespace
 
-fs::path dispatch_cache_path() { return cache_dir() / "dispatch"; }
+fs::path dispatch_cache_path() {
+  const fs::path dir = cache_dir();
+  return dir.empty() ? fs::path() : dir / "dispatch";
+}
 
 DispatchChoice choose_dispatch(Dispatch requested, PassGraph& graph, const Program& post, const StillFrame& frame,
                                const Context& ctx, std::optional<ComputeGroup> group, bool verbose) {
@@ -138,12 +140,9 @@ DispatchChoice choose_dispatch(Dispatch requested, PassGraph& graph, const Progr
   lines.push_back({renderer, version, choice_text(p.choice), p.choice});
   std::string text;
   for (const CacheLine& l : lines) text += l.renderer + "\t" + l.version + "\t" + l.text + "\n";
-  std::string where = "cached in " + path.string();
-  try {
-    write_file_atomic(path, text);
-  } catch (const Error& e) {  // a cache that cannot be written costs a probe next time, nothing more
-    where = "not cached: " + e.info().what;
-  }
+  // A cache that cannot be written costs a probe next time, nothing more.
+  std::string where = "cached in " + path.string(), why;
+  if (!write_cache_file(path, text, &why)) where = "not cached: " + why;
   say("probe: " + describe_probe(p) + ": " + choice_text(p.choice) + ", " + where);
   return p.choice;
 }

@@ -29,6 +29,7 @@
 
 namespace ms {
 
+// cache_dir()/dispatch; empty when there is no cache (io/cache_dir.h).
 std::filesystem::path dispatch_cache_path();
 
 // `requested` (with `group`, or 8x8) unless it is automatic: then the

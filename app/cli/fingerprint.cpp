@@ -33,6 +33,10 @@ std::string job_fingerprint(const LoadedInput& in, const FrameParams& fp, const 
       }
     }
   }
+  // The environment's irradiance is uniforms, not shader text, and may come
+  // from the cache (render/environment.h): what lit the image is hashed.
+  if (!in.scene.sky.environment.empty())
+    for (const glm::vec3& c : in.scene.sky.irradiance) h.add(c.x).add(c.y).add(c.z);
   h.add(post.text);
   h.add(fp.width).add(fp.height).add(fp.spp).add(fp.exposure).add(fp.aovs).add(fp.fused_post);
   for (const std::string& a : aovs) h.add(a);

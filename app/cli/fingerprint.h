@@ -8,9 +8,9 @@
 // The job part hashes the input file's bytes and its --set overrides,
 // every pass's assembled shader (the map, includes, defines, --uniform
 // values, quality and specialization are in that text), each texture's
-// pixels and sampler, the post shader, the size, samples, exposure, AOVs,
-// frame rate and iMouse, and the program's version; a frame adds its
-// number and its time.
+// pixels and sampler, the environment map's irradiance, the post shader,
+// the size, samples, exposure, AOVs, frame rate and iMouse, and the
+// program's version; a frame adds its number and its time.
 #pragma once
 #include <string>
 #include <vector>

@@ -140,6 +140,7 @@ int run_render(const RenderArgs& args) {
     print_job_shader(job);
     return 0;
   }
+  say_removed_temps({job.output});
   RenderSession session;
   render_still_job(job, session);
   std::printf("%s\n", job.output.string().c_str());

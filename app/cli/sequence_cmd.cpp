@@ -207,6 +207,9 @@ int run_sequence(const RenderArgs& a) {
   StatefulPlan sp;
   if (stateful) {
     sp = plan_stateful(mine, pattern, fp.width, fp.height, state_key(job), fingerprint, a.no_write || a.force);
+    if (!a.no_write) remove_checkpoint_temps(pattern, mine, sp.key);
+    // Read now, before the context: a checkpoint that cannot be used costs a replay, not the run.
+    load_resume_state(sp, mine, pattern, state_buffers(in.passes), fp.width, fp.height, fingerprint);
     // Frames after the resume point render again even when present: they follow from it.
     scan.todo = sp.todo;
     scan.skipped.erase(std::remove_if(scan.skipped.begin(), scan.skipped.end(),
@@ -269,13 +272,12 @@ int run_sequence(const RenderArgs& a) {
     if (stateful) {
       const std::vector<int> buffers = graph.buffers();
       if (sp.resume_from >= 0) {
-        const BufferState state = read_checkpoint(checkpoint_path(pattern.path(sp.resume_from), sp.key), buffers,
-                                                  fp.width, fp.height);
-        if (state.size() != buffers.size())
-          fail_system("the checkpoint of frame " + std::to_string(sp.resume_from) + " cannot be read",
+        if (buffers != state_buffers(in.passes))
+          fail_system("internal: the graph's buffers are not those its checkpoint was read for",
                       checkpoint_path(pattern.path(sp.resume_from), sp.key).string());
         graph.reset();
-        for (const auto& [b, img] : state) graph.write_buffer(b, img);
+        for (const auto& [b, img] : sp.state) graph.write_buffer(b, img);
+        sp.state.clear();
         progress.line("resuming after frame " + std::to_string(sp.resume_from) + " from its checkpoint");
       } else {
         graph.reset();

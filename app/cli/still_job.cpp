@@ -16,6 +16,7 @@
 #include "io/direct_codec.h"
 #include "io/image_backend.h"
 #include "io/image_io.h"
+#include "io/temp_cleanup.h"
 #include "render/aov.h"
 #include "render/bounds_check.h"
 #include "render/compute_frame.h"
@@ -86,6 +87,11 @@ Context& session_context(RenderSession& session, Backend backend) {
 }
 
 }  // namespace
+
+void say_removed_temps(const std::vector<fs::path>& outputs) {
+  for (const fs::path& t : remove_dead_temps(outputs))
+    std::fprintf(stderr, "marchstudio: removed %s, left by an interrupted run\n", t.string().c_str());
+}
 
 void print_job_shader(const RenderJob& job) {
   const PreparedStill p = prepare_still(job);
@@ -215,7 +221,10 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
   const double t_render = clock.lap();
   deadline.check("the render");
   if (watchdog) watchdog->disarm();  // the write is atomic and must not be cut short
-  write_image(img, output, meta);
+  {
+    const RemoveTempOnSignal on_signal(output);  // Ctrl-C or SIGTERM while writing: no temporary left
+    write_image(img, output, meta);
+  }
   if (job.verbose)
     std::fprintf(stderr, "marchstudio: context %.1f ms, compile %.1f ms, render %.1f ms, write %.1f ms\n",
                  t_context * 1e3, t_compile * 1e3, t_render * 1e3, clock.lap() * 1e3);

@@ -9,7 +9,9 @@
 //   render_still_job(job, session);        // throws ms::Error; no file on failure
 //   session.cache.misses();                // programs compiled so far
 #pragma once
+#include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "cli/render_job.h"
 #include "gl/context.h"
@@ -29,6 +31,10 @@ struct RenderSession {
 // before the context is made. With job.verbose: the backend, the phases'
 // times and how many programs were compiled or taken from the cache.
 void render_still_job(const RenderJob& job, RenderSession& session);
+
+// Removes the temporaries of `outputs` left by killed runs (io/temp_cleanup.h),
+// one line each on stderr; once per run, before the first job.
+void say_removed_temps(const std::vector<std::filesystem::path>& outputs);
 
 // --print-shader: the job's assembled passes on stdout; nothing is drawn.
 void print_job_shader(const RenderJob& job);

@@ -1,51 +1,20 @@
 #include "cli/tiled_render.h"
 
-#include <signal.h>
 #include <unistd.h>
 
 #include <chrono>
-#include <climits>
-#include <cstring>
-#include <optional>
 
 #include "bench/bench.h"
 #include "cli/progress.h"
 #include "core/error.h"
-#include "core/signal_scope.h"
 #include "io/atomic_file.h"
 #include "io/image_stream.h"
+#include "io/temp_cleanup.h"
 #include "render/aov.h"
 #include "render/tiled_still.h"
 
 namespace ms {
 namespace fs = std::filesystem;
-
-namespace {
-
-// The temporary's name where a signal handler can read it: a handler may
-// only call async-signal-safe functions (unlink, _exit).
-char g_temp[PATH_MAX];
-extern "C" void remove_temp_and_exit(int sig) {
-  ::unlink(g_temp);
-  ::_exit(128 + sig);
-}
-
-// While a tiled still streams (minutes, gigabytes), Ctrl-C and SIGTERM
-// (scancel, a farm's time limit) remove the temporary and end the process
-// with 130 / 143, as a sequence does; SIGKILL cannot be caught and leaves
-// only the temporary, never the target.
-class RemoveOnSignal {
- public:
-  explicit RemoveOnSignal(const fs::path& temp) {
-    std::strncpy(g_temp, temp.c_str(), sizeof g_temp - 1);  // first: the handler may run at once
-    scope_.emplace(remove_temp_and_exit);
-  }
-
- private:
-  std::optional<SignalScope> scope_;
-};
-
-}  // namespace
 
 StillTiling plan_render_tiling(const LoadedInput& in, const FrameParams& fp, int gpu_targets, int forced, int max_w,
                                int max_h) {
@@ -77,8 +46,12 @@ void render_tiled_file(const TiledFile& job, FrameRenderer& renderer, PassGraph&
   // makes its temporary (the name is AtomicFile's, io/atomic_file.h): a
   // signal or the deadline between the two, while the codec is set up, used
   // to leave the temporary behind.
+  // While a tiled still streams (minutes, gigabytes), Ctrl-C and SIGTERM
+  // (scancel, a farm's time limit) remove the temporary and end the process
+  // with 130 / 143 (io/temp_cleanup.h, as every still); SIGKILL cannot be
+  // caught and leaves only the temporary, never the target.
   const fs::path temp = temp_path_for(job.output, ::getpid());
-  const RemoveOnSignal on_signal(temp);
+  const RemoveTempOnSignal on_signal(job.output);
   if (job.watchdog && job.deadline && job.deadline->limited())
     job.watchdog->arm(*job.deadline, "the render", [temp] { ::unlink(temp.c_str()); });
   ImageStreamWriter out(job.output, fp.width, fp.height, channels, job.meta);

@@ -3,7 +3,10 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "io/atomic_file.h"
+#include "io/image_backend.h"
 #include "io/image_io.h"
+#include "io/input_file.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -47,19 +50,21 @@ std::string state_key(const std::string& text) {
   return buf;
 }
 
-void write_checkpoint(const fs::path& path, const BufferState& all_state) {
+void write_checkpoint(const fs::path& path, const BufferState& all_state, const std::string& fingerprint) {
   if (all_state.empty()) return;
+  ImageMetadata meta{{"Software", "marchstudio 0.1.0 sequence state"}};
+  if (!fingerprint.empty()) add_fingerprint(meta, fingerprint);
   // Cube A beside, written first: the main file marks a complete checkpoint.
   BufferState state;
   for (const auto& entry : all_state)
-    if (entry.first == kCube) write_image(entry.second, cube_checkpoint_path(path), {{"Software", "marchstudio 0.1.0 sequence state"}});
+    if (entry.first == kCube) write_image(entry.second, cube_checkpoint_path(path), meta);
     else state.push_back(entry);
   Image all;
   if (state.empty()) {  // Cube A alone: a one-pixel marker
     all.width = all.height = 1;
     all.channels = {"Cube"};
     all.pixels = {0.0f};
-    write_image(all, path, {{"Software", "marchstudio 0.1.0 sequence state"}});
+    write_image(all, path, meta);
     return;
   }
   all.width = state.front().second.width;
@@ -71,22 +76,45 @@ void write_checkpoint(const fs::path& path, const BufferState& all_state) {
   for (size_t k = 0; k < state.size(); ++k)
     for (size_t p = 0; p < n; ++p)
       for (int c = 0; c < 4; ++c) all.pixels[p * nc + k * 4 + c] = state[k].second.pixels[p * 4 + c];
-  write_image(all, path, {{"Software", "marchstudio 0.1.0 sequence state"}});
+  write_image(all, path, meta);
 }
 
-BufferState read_checkpoint(const fs::path& path, const std::vector<int>& all_buffers, int width, int height) {
+namespace {
+
+// One file of a checkpoint, its pixels and its fingerprint, read from one
+// copy of its bytes. Throws bad_input (a cut or corrupt file).
+Image read_state_file(const fs::path& path, const std::string& fingerprint, std::string& why) {
+  const std::string bytes = read_input_file(path, "checkpoint", {}, kMaxImageInput);
+  const ImageBackend& codec = image_backend();
+  if (!fingerprint.empty() && fingerprint_of(codec.read_info(bytes, path)) != fingerprint) {
+    why = "it was made for another frame or run";
+    return {};
+  }
+  return codec.read(bytes, path);
+}
+
+// read_checkpoint(), with why it is empty in `why`.
+BufferState read_checkpoint_checked(const fs::path& path, const std::vector<int>& all_buffers, int width, int height,
+                                    const std::string& fingerprint, std::string& why) {
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) return {};
+  if (!fs::is_regular_file(path, ec)) {
+    why = "missing";
+    return {};
+  }
   std::vector<int> buffers;
   for (int b : all_buffers)
     if (b != kCube) buffers.push_back(b);
   Image all, cube;
   try {
-    all = read_image(path);
-    if (buffers.size() != all_buffers.size()) cube = read_image(cube_checkpoint_path(path));
-  } catch (const Error&) {
-    return {};  // unreadable: not a state to resume from
+    all = read_state_file(path, fingerprint, why);
+    if (why.empty() && buffers.size() != all_buffers.size())
+      cube = read_state_file(cube_checkpoint_path(path), fingerprint, why);
+  } catch (const Error& e) {
+    why = "unreadable: " + e.info().what.substr(0, e.info().what.find('\n'));
+    return {};  // not a state to resume from
   }
+  if (!why.empty()) return {};
+  why = "it holds other buffers or another size";
   const bool marker = buffers.empty() && all.nchannels() == 1 && all.channels[0] == "Cube";
   if (!marker && (all.width != width || all.height != height || all.nchannels() != 4 * static_cast<int>(buffers.size())))
     return {};
@@ -117,7 +145,37 @@ BufferState read_checkpoint(const fs::path& path, const std::vector<int>& all_bu
     out.emplace_back(buffers[k], std::move(img));
   }
   if (with_cube) out.emplace_back(kCube, std::move(cube));
+  why.clear();
   return out;
+}
+
+}  // namespace
+
+BufferState read_checkpoint(const fs::path& path, const std::vector<int>& all_buffers, int width, int height,
+                            const std::string& fingerprint, std::string* why_not) {
+  std::string why;
+  BufferState out = read_checkpoint_checked(path, all_buffers, width, height, fingerprint, why);
+  if (why_not) *why_not = why;
+  return out;
+}
+
+std::vector<fs::path> remove_checkpoint_temps(const std::vector<fs::path>& frames, const std::string& key) {
+  std::vector<fs::path> removed;
+  if (frames.empty()) return removed;
+  const fs::path dir = frames.front().parent_path().empty() ? fs::path(".") : frames.front().parent_path();
+  std::error_code ec;
+  std::vector<fs::path> candidates;  // a checkpoint's temporary starts with ".."
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec))
+    if (e.path().filename().string().rfind("..", 0) == 0) candidates.push_back(e.path());
+  for (const fs::path& c : candidates)
+    for (const fs::path& f : frames) {
+      const fs::path state = checkpoint_path(f, key);
+      if (!is_temp_of(c.filename().string(), state) && !is_temp_of(c.filename().string(), cube_checkpoint_path(state)))
+        continue;
+      if (fs::remove(c, ec)) removed.push_back(frames.front().parent_path() / c.filename());
+      break;
+    }
+  return removed;
 }
 
 void remove_checkpoints(const fs::path& frame, const fs::path& keep) {

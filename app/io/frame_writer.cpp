@@ -17,7 +17,10 @@ FrameWriter::FrameWriter(std::size_t capacity, DoneFn done, WriteFn write, int t
       write_(write ? std::move(write) : WriteFn([](const WriteJob& j) {
         write_image(j.image, j.path, j.meta);
         if (j.state.empty()) return;
-        write_checkpoint(j.state_path, j.state);  // only after its frame: a checkpoint means the frame is there
+        // Only after its frame: a checkpoint means the frame is there. It
+        // carries the frame's fingerprint, binding it to this frame and run.
+        const auto fp = j.meta.find(kFingerprintKey);
+        write_checkpoint(j.state_path, j.state, fp == j.meta.end() ? std::string() : fp->second);
         if (!j.drop.empty()) remove_checkpoint(j.drop);  // with its Cube A file
       })) {
   for (int i = 0; i < std::max(threads, 1); ++i) threads_.emplace_back([this] { run(); });

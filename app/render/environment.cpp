@@ -1,5 +1,6 @@
 #include "render/environment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -12,7 +13,6 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "io/cache_dir.h"
-#include "io/atomic_file.h"
 #include "io/image_io.h"
 
 namespace ms {
@@ -38,24 +38,45 @@ std::array<double, 9> sh_basis(glm::dvec3 d) {
 // The cosine lobe's band weights A_l / pi (Ramamoorthi and Hanrahan): E/pi.
 constexpr double kBandWeight[9] = {1.0, 2.0 / 3, 2.0 / 3, 2.0 / 3, 0.25, 0.25, 0.25, 0.25, 0.25};
 
+// The coefficients of a cache entry; false (a miss) when it is missing, not
+// a regular file or does not parse: nine lines of three finite numbers.
 bool read_cache(const fs::path& f, IrradianceSh& sh) {
-  std::ifstream in(f);
+  std::string text;
+  if (!read_cache_file(f, text, 4096)) return false;
+  std::istringstream in(text);
   for (glm::vec3& c : sh)
     if (!(in >> c.x >> c.y >> c.z) || !std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) return false;
   return true;
+}
+
+// Why cached coefficients cannot be those of map `m`, or empty when they
+// can: each is at most 4 pi x 1.1 times the map's brightest texel (every
+// basis function is below 1.1 in magnitude on the sphere, every band weight
+// <= 1), and they are not all zero unless the map is black. A planted or
+// damaged entry (zeros, 1e38) is not trusted.
+std::string implausible(const IrradianceSh& sh, const Image& m) {
+  const int nc = std::min(m.nchannels(), 3);
+  double brightest = 0;
+  for (int y = 0; y < m.height; ++y)
+    for (int x = 0; x < m.width; ++x)
+      for (int c = 0; c < nc; ++c) brightest = std::max(brightest, std::abs(static_cast<double>(m.at(x, y, c))));
+  const double bound = brightest * 4.0 * kPi * 1.1 * (1.0 + 1e-6);
+  bool all_zero = true;
+  for (const glm::vec3& c : sh)
+    for (int i = 0; i < 3; ++i) {
+      if (std::abs(static_cast<double>(c[i])) > bound) return "a coefficient is larger than the map allows";
+      all_zero = all_zero && c[i] == 0.0f;
+    }
+  if (all_zero && brightest > 0) return "all zero, but the map is not black";
+  return {};
 }
 
 void write_cache(const fs::path& f, const IrradianceSh& sh) {
   std::ostringstream out;
   out.precision(9);
   for (const glm::vec3& c : sh) out << c.x << ' ' << c.y << ' ' << c.z << '\n';
-  try {
-    std::error_code ec;
-    fs::create_directories(f.parent_path(), ec);
-    write_file_atomic(f, out.str());
-  } catch (const Error&) {
-    // A cache that cannot be written costs the next run a few milliseconds, nothing more.
-  }
+  // A cache that cannot be written costs the next run a few milliseconds, nothing more.
+  (void)write_cache_file(f, out.str());
 }
 
 }  // namespace
@@ -92,7 +113,8 @@ glm::vec3 eval_irradiance(const IrradianceSh& sh, glm::vec3 n) {
 }
 
 fs::path irradiance_cache_path(const std::string& content_hash) {
-  return cache_dir() / "irradiance" / (content_hash + ".txt");
+  const fs::path dir = cache_dir();
+  return dir.empty() ? fs::path() : dir / "irradiance" / (content_hash + ".txt");
 }
 
 namespace {
@@ -138,6 +160,12 @@ void attach_environment(Scene& scene, PassSource& pass, bool* from_cache) {
                  scene.file.string(), 0, "sky.environment", "an equirectangular image, twice as wide as high");
     const fs::path cache = irradiance_cache_path(Hash128().add(bytes).hex());
     cached = read_cache(cache, scene.sky.irradiance);
+    if (cached)
+      if (const std::string why = implausible(scene.sky.irradiance, *decoded); !why.empty()) {
+        std::fprintf(stderr, "marchstudio: %s: warning: the cached irradiance of %s is not trusted (%s): computed again\n",
+                     cache.string().c_str(), file.string().c_str(), why.c_str());
+        cached = false;
+      }
     if (!cached) {
       scene.sky.irradiance = irradiance_sh(*decoded);
       write_cache(cache, scene.sky.irradiance);

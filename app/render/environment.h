@@ -34,7 +34,10 @@ glm::vec3 eval_irradiance(const IrradianceSh& sh, glm::vec3 n);
 glm::vec3 equirect_direction(double x, double y, int w, int h);
 
 // Where the coefficients of a file with this content hash are kept:
-// $XDG_CACHE_HOME (else ~/.cache)/marchstudio/irradiance/<hash>.txt.
+// cache_dir()/irradiance/<hash>.txt (io/cache_dir.h); empty with no cache.
+// An entry is trusted only when it is plausible for the map read (finite,
+// within what its brightest texel allows, not all zero unless the map is
+// black); else it is computed again, with a warning on stderr.
 std::filesystem::path irradiance_cache_path(const std::string& content_hash);
 
 // For a scene with [sky] environment: reads the map (bad_input naming it

@@ -91,16 +91,22 @@ TEST(Environment, IrradianceLightsTheBallAndIsCachedByContent) {
   double diff = 0;
   for (size_t i = 0; i < lit.pixels.size(); ++i) diff += std::abs(lit.pixels[i] - no_ao.pixels[i]);
   EXPECT_GT(diff, 0.01) << "--disable ao changed nothing under an environment map";
-  // The coefficients were written under the cache; replaced by zeros, the
-  // next render reads them back: no ambient light, the sky unchanged.
+  // The coefficients were written under the cache; replaced by a tenth of
+  // themselves (plausible: zeros or 1e38 would be computed again,
+  // EnvironmentCache.*), the next render reads them back: little ambient
+  // light, the sky unchanged.
   std::vector<fs::path> cached;
   for (const auto& e : fs::recursive_directory_iterator(d.dir / "cache" / "marchstudio"))
     if (e.is_regular_file()) cached.push_back(e.path());
   ASSERT_EQ(cached.size(), 1u);
   EXPECT_EQ(cached[0].parent_path().filename(), "irradiance");
   {
-    std::ofstream zeros(cached[0]);
-    for (int i = 0; i < 9; ++i) zeros << "0 0 0\n";
+    std::vector<float> c;
+    std::ifstream in(cached[0]);
+    for (float x; in >> x;) c.push_back(x * 0.1f);
+    ASSERT_EQ(c.size(), 27u);
+    std::ofstream dim(cached[0]);
+    for (size_t i = 0; i < c.size(); i += 3) dim << c[i] << ' ' << c[i + 1] << ' ' << c[i + 2] << '\n';
   }
   const Image dark = d.render("environment = \"sky.exr\"\n");
   EXPECT_LT(dark.at(32, 29, 0), top * 0.5f) << "the cached coefficients were not used";

@@ -1,0 +1,88 @@
+// One signal scope for every still's write (io/temp_cleanup.h): SIGTERM or
+// Ctrl-C while an ordinary still or a --jobs batch writes its image leaves
+// no temporary (exit 143 / 130), and a rerun removes the temporary a
+// killed run (a pid that is gone) left beside its output, never one of a
+// live process. tests/shims/slow_temp.c holds each temporary's creation so
+// the signal lands while it exists.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
+#include "run.h"
+#include "test_viewer_util.h"
+
+namespace ms::test {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kSeed = (source_dir() / "scenes/seed.toml").string();
+
+std::string preload() {
+  const char* p = std::getenv("LD_PRELOAD");
+  return (p && *p ? std::string(p) + ":" : std::string()) + MARCH_SLOW_TEMP_SHIM;
+}
+
+// Runs marchstudio `args` in `dir` with each temporary held 30 s after it
+// is made, sends `sig` once `temp_prefix` appears, and expects 128 + sig
+// with nothing left in `dir` but `keep` and the logs.
+void expect_signal_leaves_no_temp(const TempDir& dir, const std::vector<std::string>& args,
+                                  const std::string& temp_prefix, int sig, std::vector<std::string> keep) {
+  std::vector<std::string> argv = {"env", "LD_PRELOAD=" + preload(), "SLOW_TEMP_MS=30000", MARCH_BIN};
+  argv.insert(argv.end(), args.begin(), args.end());
+  BackgroundProcess p(argv, dir / "out.txt", dir / "err.txt", dir.path());
+  const auto temp_exists = [&] {
+    for (const std::string& name : dir.entries())
+      if (name.rfind(temp_prefix, 0) == 0) return true;
+    return false;
+  };
+  ASSERT_TRUE(wait_until(temp_exists, 90)) << read_file(dir / "err.txt");
+  p.signal(sig);
+  EXPECT_EQ(p.wait_exit(20), 128 + sig) << read_file(dir / "err.txt");
+  std::vector<std::string> left = dir.entries();
+  keep.insert(keep.end(), {"err.txt", "out.txt"});
+  std::sort(left.begin(), left.end());
+  std::sort(keep.begin(), keep.end());
+  EXPECT_EQ(left, keep) << "no image, no temporary";
+}
+
+TEST(StillSignals, SigtermWhileAStillIsWrittenLeavesNoTemporary) {
+  TempDir dir;
+  expect_signal_leaves_no_temp(dir, {"render", kSeed, "--size", "64x36", "-o", "still.png"}, ".still.png.tmp", SIGTERM,
+                               {});
+}
+
+TEST(StillSignals, CtrlCWhileABatchWritesLeavesNoTemporary) {
+  TempDir dir;
+  write_file(dir / "jobs.jsonl", "{\"scene\": \"" + kSeed + "\", \"output\": \"a.png\"}\n{\"scene\": \"" + kSeed +
+                                     "\", \"output\": \"b.png\"}\n");
+  expect_signal_leaves_no_temp(dir, {"render", "--jobs", "jobs.jsonl", "--size", "48x27"}, ".a.png.tmp", SIGINT,
+                               {"jobs.jsonl"});
+}
+
+TEST(StillSignals, ARerunRemovesADeadRunsTemporaryButNotALiveOnes) {
+  TempDir dir;
+  const std::string dead = ".out.png.tmp999999999";  // above any pid_max: no such process
+  const std::string live = ".out.png.tmp" + std::to_string(::getpid());  // this test: alive
+  const std::string other = ".other.png.tmp999999999";  // not this run's output
+  for (const std::string& name : {dead, live, other}) write_file(dir / name, "half an image");
+  const RunResult r = run_marchstudio({"render", kSeed, "--size", "32x18", "-o", "out.png"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("marchstudio: removed " + dead + ", left by an interrupted run"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / dead));
+  EXPECT_TRUE(fs::exists(dir / live)) << "another process's write in progress";
+  EXPECT_TRUE(fs::exists(dir / other));
+  EXPECT_TRUE(fs::exists(dir / "out.png"));
+  // The same in a batch, for each job's output.
+  write_file(dir / dead, "half an image");
+  write_file(dir / "jobs.jsonl", "{\"scene\": \"" + kSeed + "\", \"output\": \"out.png\"}\n");
+  const RunResult b = run_marchstudio({"render", "--jobs", "jobs.jsonl", "--size", "32x18"}, dir.path());
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_FALSE(fs::exists(dir / dead)) << b.err;
+}
+
+}  // namespace
+}  // namespace ms::test
