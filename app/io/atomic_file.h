@@ -48,12 +48,12 @@ class AtomicFile {
   bool pwrite(const void* data, std::size_t n, std::uint64_t offset);
   // The bytes went to temp() by its name, from a writer that must reread
   // what it wrote (libtiff, through OpenImageIO): the size on disk becomes
-  // the size written. That writer must have checked its own writes.
+  // the size written. That writer must have checked its own writes. (A
+  // target written through has no temp(): such a writer cannot write it.)
   void written_by_name();
   bool failed() const { return error_ != 0; }
   std::uint64_t size() const { return size_; }
   const std::filesystem::path& temp() const { return temp_; }
-  bool through() const { return through_; }
   const std::filesystem::path& target() const { return target_; }
 
   // fsync, the size on disk against the bytes written, close, rename, and
