@@ -53,7 +53,7 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
   j["pass_ms"] = passes;
   if (!r.has_cost) {
     j["cost"] = nullptr;  // a Shadertoy shader has no step counters
-    return j.dump(2) + "\n";
+    return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
   }
   const BenchCost& c = r.cost;
   j["cost"] = {{"spp", 1},
@@ -65,7 +65,7 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
                {"step_cap_fraction", c.step_cap_fraction},
                {"hit_fraction", c.hit_fraction},
                {"nonfinite_pixels", c.nonfinite_pixels}};
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 std::string bench_table(const BenchSubject& subject, const BenchSettings& s, const BenchResult& r) {

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/utf8.h"
+
 namespace ms {
 
 namespace {
@@ -202,7 +204,7 @@ std::string suite_json(const Suite& suite, const SuiteResult& r) {
   Json cases = Json::array();
   for (const CaseResult& k : r.cases) cases.push_back(case_json(k));
   j["cases"] = std::move(cases);
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";  // bytes not UTF-8: U+FFFD
 }
 
 std::string suite_junit(const Suite& suite, const SuiteResult& r) {
@@ -243,7 +245,13 @@ std::string suite_junit(const Suite& suite, const SuiteResult& r) {
   return x;
 }
 
-std::string xml_escape(const std::string& text) {
+std::string xml_escape(const std::string& raw) {
+  // Bytes that are not UTF-8 (a driver log quoting a shader's bytes) would
+  // make the whole document ill-formed: U+FFFD instead. So would U+FFFE and
+  // U+FFFF, which are UTF-8 but not XML characters.
+  std::string text = valid_utf8(raw);
+  for (std::size_t at = 0; (at = text.find("\xef\xbf", at)) != std::string::npos; at += 3)
+    if (at + 2 < text.size() && (text[at + 2] == '\xbe' || text[at + 2] == '\xbf')) text[at + 2] = '\xbd';
   std::string out;
   out.reserve(text.size());
   for (char ch : text) {

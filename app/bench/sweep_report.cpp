@@ -146,7 +146,7 @@ std::string sweep_json(const SweepSubject& subject, const SweepSettings& s, cons
     rows.push_back(std::move(jr));
   }
   j["rows"] = std::move(rows);
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 std::string sweep_table(const SweepSubject& subject, const SweepSettings& s, const SweepResult& r) {

@@ -2,7 +2,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <iostream>
 #include <exception>
 
 #include "cli/render_cmd.h"
@@ -14,6 +17,7 @@
 #include "cli/sweep_cmd.h"
 #include "cli/test_cmd.h"
 #include "core/error.h"
+#include "core/utf8.h"
 
 namespace ms {
 
@@ -81,7 +85,7 @@ int run_cli(int argc, char** argv) {
     if (info->parsed()) return run_info(info_args);
   } catch (const Error& e) {
     std::fprintf(stderr, "marchstudio: %s\n", e.what());
-    if (!e.info().detail.empty() && verbose(app)) std::fprintf(stderr, "%s", e.info().detail.c_str());
+    if (!e.info().detail.empty() && verbose(app)) std::fputs(valid_utf8(e.info().detail).c_str(), stderr);
     return static_cast<int>(e.code());
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "marchstudio: out of memory\n");
@@ -91,6 +95,22 @@ int run_cli(int argc, char** argv) {
     return static_cast<int>(Exit::system);
   }
   return static_cast<int>(Exit::bad_input);
+}
+
+int finish_output(int code) {
+  std::cout.flush();
+  errno = 0;
+  const bool out_failed = std::fflush(stdout) != 0 || std::ferror(stdout) || std::cout.fail();
+  const int out_errno = errno;
+  const bool err_failed = std::fflush(stderr) != 0 || std::ferror(stderr);
+  if (code != static_cast<int>(Exit::ok) && code != static_cast<int>(Exit::threshold)) return code;
+  if (out_failed) {
+    // On stderr, when that still works; the exit code says it either way.
+    std::fprintf(stderr, "marchstudio: cannot write to standard output: %s\n",
+                 out_errno ? std::strerror(out_errno) : "a write failed, the output is incomplete");
+    std::fflush(stderr);
+  }
+  return out_failed || err_failed ? static_cast<int>(Exit::system) : code;
 }
 
 }  // namespace ms

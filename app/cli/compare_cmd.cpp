@@ -160,7 +160,7 @@ void print_json(const CompareArgs& a, const Image& ia, const CompareMetrics& m, 
   j["pass"] = v.pass;
   j["outcome"] = outcome_name(v.outcome);
   j["diff"] = a.diff.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(a.diff);
-  std::printf("%s\n", j.dump(2).c_str());
+  std::printf("%s\n", j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
 }
 
 // 8-bit levels alongside fractions: "0.5/255" reads at a glance.

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <utility>
 
+#include "core/utf8.h"
+
 namespace ms {
 
 std::string format_duration(double seconds) {
@@ -72,7 +74,7 @@ void Progress::draw_locked(int frame) {
 void Progress::line(const std::string& text) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (bar_shown_) std::fprintf(out_, "\r\x1b[K");
-  std::fprintf(out_, "marchstudio: %s\n", text.c_str());
+  std::fprintf(out_, "marchstudio: %s\n", valid_utf8(text).c_str());
   std::fflush(out_);
   bar_shown_ = false;
 }

@@ -23,6 +23,7 @@
 #include "cli/progress.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
+#include "core/utf8.h"
 #include "io/image_io.h"
 #include "io/sequence.h"
 #include "io/atomic_file.h"
@@ -126,15 +127,15 @@ class Terminal {
   void done(const CaseResult& r, int index, int total) {
     if (tty_) std::fprintf(stderr, "\r\x1b[K");
     std::fprintf(out_, "[%*d/%d] %s\n", static_cast<int>(std::to_string(total).size()), index, total,
-                 case_line(r).c_str());
+                 valid_utf8(case_line(r)).c_str());
     std::fflush(out_);
   }
-  void line(const std::string& text) { std::fprintf(out_, "%s\n", text.c_str()); }
+  void line(const std::string& text) { std::fprintf(out_, "%s\n", valid_utf8(text).c_str()); }
   // An error's whole log (-v), indented under its case line.
   void detail(const std::string& text) {
     for (size_t at = 0, end; at < text.size(); at = end + 1) {
       end = std::min(text.find('\n', at), text.size());
-      if (end > at) std::fprintf(out_, "  %s\n", text.substr(at, end - at).c_str());
+      if (end > at) std::fprintf(out_, "  %s\n", valid_utf8(text.substr(at, end - at)).c_str());
     }
   }
 
@@ -163,11 +164,9 @@ int run(const TestArgs& a, ExitCodes codes) {
     return 0;
   }
   // Output paths before any work, as render checks -o.
-  if (!a.junit.empty()) {
+  if (!a.junit.empty() && output_kind(a.junit, "--junit") == OutputKind::replace) {
     const fs::path dir = fs::path(a.junit).parent_path().empty() ? "." : fs::path(a.junit).parent_path();
     check_output_directory(dir, "--junit");
-    std::error_code ec;
-    if (fs::is_directory(a.junit, ec)) fail_input("is a directory", a.junit, 0, "--junit");
   }
   if (!a.report.empty()) {
     std::error_code ec;

@@ -2,15 +2,18 @@
 
 #include <sstream>
 
+#include "core/utf8.h"
+
 namespace ms {
 
 namespace {
 
 // An error is one line: a newline or another control character in a file
-// name (or echoed text) is shown escaped, as \n or \x1b.
+// name (or echoed text) is shown escaped, as \n or \x1b; bytes that are
+// not UTF-8 become U+FFFD (core/utf8.h).
 std::string one_line(const std::string& s) {
   std::string out;
-  for (unsigned char c : s) {
+  for (unsigned char c : valid_utf8(s)) {
     if (c == '\n') out += "\\n";
     else if (c == '\r') out += "\\r";
     else if (c == '\t') out += "\\t";

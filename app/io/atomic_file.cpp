@@ -83,8 +83,25 @@ void check_output_directory(const fs::path& dir, const std::string& key) {
                dir.string(), 0, key);
 }
 
-AtomicFile::AtomicFile(fs::path target, bool keep_extension)
-    : target_(std::move(target)), temp_(temp_path_for(target_, ::getpid(), keep_extension)) {
+OutputKind output_kind(const fs::path& target, const std::string& key) {
+  struct stat st {};
+  // Missing (or a link to nothing): made anew. Other stat errors show when it is opened.
+  if (::stat(target.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return OutputKind::replace;
+  if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) return OutputKind::through;
+  const char* what = S_ISDIR(st.st_mode)    ? "a directory"
+                     : S_ISSOCK(st.st_mode) ? "a socket"
+                     : S_ISBLK(st.st_mode)  ? "a block device"
+                                            : "not a regular file";
+  fail_input(std::string("output path is ") + what, target.string(), 0, key,
+             "a regular file is replaced; a FIFO or a character device is written to; nothing else");
+}
+
+AtomicFile::AtomicFile(fs::path target, bool keep_extension) : target_(std::move(target)) {
+  if (output_kind(target_) == OutputKind::through) {
+    open_through();
+    return;
+  }
+  temp_ = temp_path_for(target_, ::getpid(), keep_extension);
   std::error_code ec;
   if (!target_.parent_path().empty() && !fs::is_directory(target_.parent_path(), ec) &&
       !fs::create_directories(target_.parent_path(), ec) && ec)
@@ -98,19 +115,38 @@ AtomicFile::AtomicFile(fs::path target, bool keep_extension)
   if (fd_ < 0) fail_system("cannot create a temporary file: " + system_message(errno), target_.string());
 }
 
+void AtomicFile::open_through() {
+  through_ = true;
+  // O_NONBLOCK for the open alone: a FIFO that no process reads fails
+  // (ENXIO) rather than waiting for a reader that may never come.
+  fd_ = ::open(target_.c_str(), O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  if (fd_ < 0)
+    fail_system(errno == ENXIO ? "cannot write to the FIFO: no process is reading it"
+                               : "cannot open the file: " + system_message(errno),
+                target_.string());
+  struct stat st {};
+  const int flags = ::fcntl(fd_, F_GETFL);
+  if (::fstat(fd_, &st) != 0 || !(S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) || flags < 0 ||
+      ::fcntl(fd_, F_SETFL, flags & ~O_NONBLOCK) != 0) {
+    ::close(fd_);  // replaced by another kind of file since it was looked at
+    fd_ = -1;
+    fail_system("cannot write the file: it changed while it was opened", target_.string());
+  }
+}
+
 AtomicFile::~AtomicFile() { discard(); }
 
 void AtomicFile::discard() {
   if (fd_ >= 0) {
     ::close(fd_);
     fd_ = -1;
-    ::unlink(temp_.c_str());
+    if (!through_) ::unlink(temp_.c_str());
   }
 }
 
 void AtomicFile::written_by_name() {
   struct stat st {};
-  if (fd_ < 0 || error_) return;
+  if (fd_ < 0 || error_ || through_) return;
   if (::fstat(fd_, &st) != 0) error_ = errno;
   else size_ = static_cast<std::uint64_t>(st.st_size);
 }
@@ -120,12 +156,16 @@ bool AtomicFile::pwrite(const void* data, std::size_t n, std::uint64_t offset) {
   const char* p = static_cast<const char*>(data);
   std::size_t done = 0;
   while (done < n) {
-    const ssize_t w = ::pwrite(fd_, p + done, n - done, static_cast<off_t>(offset + done));
+    // Written through, a FIFO cannot seek: bytes that follow the last ones are appended.
+    const bool append = through_ && offset + done == stream_;
+    const ssize_t w = append ? ::write(fd_, p + done, n - done)
+                             : ::pwrite(fd_, p + done, n - done, static_cast<off_t>(offset + done));
     if (w < 0 && errno == EINTR) continue;
     if (w <= 0) {
       error_ = w < 0 ? errno : ENOSPC;  // a write of 0 bytes: the disk is full
       return false;
     }
+    if (append) stream_ += static_cast<std::uint64_t>(w);
     done += static_cast<std::size_t>(w);
   }
   if (offset + n > size_) size_ = offset + n;
@@ -140,6 +180,13 @@ bool AtomicFile::write(const void* data, std::size_t n) {
 
 void AtomicFile::commit() {
   if (fd_ < 0) fail_system("internal: commit of a closed file", target_.string());
+  if (through_) {  // a device or FIFO: no size to check, nothing to rename
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0 && !error_) error_ = errno;
+    if (error_) fail_system("cannot write the file: " + system_message(error_), target_.string());
+    return;
+  }
   // Delayed allocation: a full disk may only show at fsync or close.
   if (!error_ && ::fsync(fd_) != 0) error_ = errno;
   struct stat st {};
@@ -163,14 +210,14 @@ void AtomicFile::commit() {
 }
 
 void AtomicFile::set_mode(unsigned mode) {
-  if (fd_ >= 0 && ::fchmod(fd_, static_cast<mode_t>(mode)) != 0 && !error_) error_ = errno;
+  if (fd_ >= 0 && !through_ && ::fchmod(fd_, static_cast<mode_t>(mode)) != 0 && !error_) error_ = errno;
 }
 
 void write_text_file(const fs::path& path, std::string_view text, const std::string& key) {
   if (path.filename().empty()) fail_input("output path names no file", path.string(), 0, key);
-  check_output_directory(path.parent_path().empty() ? fs::path(".") : path.parent_path(), key);
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) fail_input("output path is a directory", path.string(), 0, key);
+  // A device or FIFO is written in place: its directory (/dev) need not be writable.
+  if (output_kind(path, key) == OutputKind::replace)
+    check_output_directory(path.parent_path().empty() ? fs::path(".") : path.parent_path(), key);
   write_file_atomic(path, text);
 }
 

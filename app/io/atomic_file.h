@@ -9,6 +9,12 @@
 //
 //   write_file_atomic("sweep.csv", text);   // the same for a whole buffer
 //
+// Only a regular file (or a missing one) is replaced so. A character
+// device or a FIFO (`--junit /dev/null`, a pipe to a reader) is written
+// through instead: opened and written in place, never renamed over, so that
+// /dev/null stays a device; a FIFO that no process reads is an error rather
+// than a wait. Anything else (a directory, a socket) is refused, bad_input.
+//
 // Codecs write through AtomicFile (image_io.cpp's IOProxy) rather than to
 // a path: OpenImageIO's PNG writer ignores failed writes, and libjpeg's
 // default error handler calls exit(1). A proxy that records a failure and
@@ -22,10 +28,16 @@
 
 namespace ms {
 
+// How `target` is written (see above). Throws bad_input naming `key` for
+// a target that is neither: call it before the work, as for the directory.
+enum class OutputKind { replace, through };
+OutputKind output_kind(const std::filesystem::path& target, const std::string& key = {});
+
 class AtomicFile {
  public:
   // Creates the temporary (temp_path_for(target, pid)), and the target's
   // directory first when missing; throws system when either cannot be made.
+  // A device or FIFO target is opened instead (no temporary; temp() empty).
   explicit AtomicFile(std::filesystem::path target, bool keep_extension = false);
   ~AtomicFile();  // without commit(): the temporary is removed
   AtomicFile(const AtomicFile&) = delete;
@@ -36,7 +48,8 @@ class AtomicFile {
   bool pwrite(const void* data, std::size_t n, std::uint64_t offset);
   // The bytes went to temp() by its name, from a writer that must reread
   // what it wrote (libtiff, through OpenImageIO): the size on disk becomes
-  // the size written. That writer must have checked its own writes.
+  // the size written. That writer must have checked its own writes. (A
+  // target written through has no temp(): such a writer cannot write it.)
   void written_by_name();
   bool failed() const { return error_ != 0; }
   std::uint64_t size() const { return size_; }
@@ -44,19 +57,26 @@ class AtomicFile {
   const std::filesystem::path& target() const { return target_; }
 
   // fsync, the size on disk against the bytes written, close, rename, and
-  // fsync of the directory. Throws system naming the target.
+  // fsync of the directory (written through: the close alone). Throws
+  // system naming the target.
   void commit();
-  // Closes and removes the temporary now (for a writer that gave up).
+  // Closes and removes the temporary now (for a writer that gave up); a
+  // target written through is closed, never removed.
   void discard();
-  // The permissions the file gets (else 0666 less the umask).
+  // The permissions the file gets (else 0666 less the umask); nothing for
+  // a target written through (a device's are not ours to change).
   void set_mode(unsigned mode);
 
  private:
+  void open_through();
+
   std::filesystem::path target_, temp_;
   int fd_ = -1;
   int error_ = 0;           // the first errno that failed, 0 while all is well
   std::uint64_t pos_ = 0;   // where write() appends
   std::uint64_t size_ = 0;  // the furthest byte written
+  bool through_ = false;    // a device or FIFO, written in place
+  std::uint64_t stream_ = 0;  // written through: where the next write() lands
 };
 
 // A whole buffer; `mode` >= 0: the file's permissions (else 0666 less the umask).

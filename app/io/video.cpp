@@ -49,7 +49,9 @@ fs::path find_on_path(const std::string& program) {
 void check_video_path(const fs::path& out) {
   if (out.filename().empty() || out.extension().empty())
     fail_video(Exit::bad_input, "the video file needs a name with an extension", out.string(), "e.g. out.mp4");
-  check_output_directory(out.parent_path().empty() ? fs::path(".") : out.parent_path(), "--video");
+  // A directory or a socket is refused; a FIFO or a device is written to (encode_video).
+  if (output_kind(out, "--video") == OutputKind::replace)
+    check_output_directory(out.parent_path().empty() ? fs::path(".") : out.parent_path(), "--video");
 }
 
 void end_child(pid_t pid) {
@@ -65,7 +67,10 @@ void end_child(pid_t pid) {
 }
 
 bool encode_video(const VideoJob& job) {
-  const fs::path tmp = temp_path_for(job.output, ::getpid(), true);  // ffmpeg picks the container by the extension
+  // A FIFO or a device is written in place, never renamed over (io/atomic_file.h).
+  const bool through = output_kind(job.output, "--video") == OutputKind::through;
+  // ffmpeg picks the container by the extension, which the temporary keeps.
+  const fs::path tmp = through ? job.output : temp_path_for(job.output, ::getpid(), true);
   std::error_code mk;
   if (!job.output.parent_path().empty()) fs::create_directories(job.output.parent_path(), mk);
   char fps[64];
@@ -98,20 +103,20 @@ bool encode_video(const VideoJob& job) {
     const bool stop = job.stop_signal && job.stop_signal() != 0;
     if (stop || job.deadline.expired()) {
       end_child(pid);
-      fs::remove(tmp, ec);
+      if (!through) fs::remove(tmp, ec);
       if (stop) return false;
       job.deadline.check("encoding the video");
     }
     ::usleep(10000);
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    fs::remove(tmp, ec);
+    if (!through) fs::remove(tmp, ec);
     const std::string how = WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
                                               : "signal " + std::to_string(WTERMSIG(status));
     fail_video(Exit::system, "ffmpeg failed (" + how + ") encoding the frames", job.output.string(),
                "its message is above; the frames are kept");
   }
-  fs::rename(tmp, job.output, ec);
+  if (!through) fs::rename(tmp, job.output, ec);
   if (ec) {
     fs::remove(tmp, ec);
     fail_video(Exit::system, "cannot rename the encoded video into place", job.output.string());

@@ -17,12 +17,15 @@ class OiioBackend final : public ImageBackend {
     return oiio::open_rows(path, format, width, height, channels, meta);
   }
   ImageInfo read_info(const std::string& bytes, const std::filesystem::path& name) const override {
+    const LibpngLines quiet;
     return oiio::read_info(bytes, name);
   }
   Image read(const std::string& bytes, const std::filesystem::path& name) const override {
+    const LibpngLines quiet;
     return oiio::read(bytes, name);
   }
   std::string decode_problem(const std::string& bytes, const std::filesystem::path& name) const override {
+    const LibpngLines quiet;
     return oiio::decode_problem(bytes, name);
   }
   Image quantize_8bit(const Image& image) const override { return oiio::quantize_8bit(image); }

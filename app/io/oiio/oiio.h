@@ -12,6 +12,18 @@
 
 namespace ms::oiio {
 
+// libpng's default error handler prints "libpng error: ..." on stderr
+// before OpenImageIO hands us the same text, which we print as our one
+// line. For the scope's life fd 2 is captured; at its end the rest of what
+// came (another thread's warning) goes on to stderr, libpng's lines not.
+class LibpngLines {
+ public:
+  LibpngLines();
+  ~LibpngLines();
+  LibpngLines(const LibpngLines&) = delete;
+  LibpngLines& operator=(const LibpngLines&) = delete;
+};
+
 // stream.cpp
 void write(const Image& image, const std::filesystem::path& path, ImageFormat format, const ImageMetadata& meta);
 std::unique_ptr<ImageRowWriter> open_rows(const std::filesystem::path& path, ImageFormat format, int width, int height,

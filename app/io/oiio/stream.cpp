@@ -81,6 +81,9 @@ class OiioRowWriter final : public ImageRowWriter {
     // temporary: through the proxy, which checks every write (PNG and JPEG
     // do not), or for TIFF by name, since libtiff rereads the directory it
     // wrote (to link the EXIF one) and checks its own writes.
+    if (by_name_ && file_.temp().empty())  // a FIFO or a device (io/atomic_file.h): nothing to reread
+      fail_input("a TIFF cannot be written to a FIFO or a device (libtiff rereads what it wrote)", path.string(),
+                 0, "-o", "write a .png, .jpg or .exr there, or a TIFF to a regular file");
     out_ = OIIO::ImageOutput::create(path.string(), by_name_ ? nullptr : &proxy_);
     if (!out_) fail_system("cannot create an image writer: " + OIIO::geterror(), path.string());
     spec_ = output_spec(format, width, height, channels, meta);
