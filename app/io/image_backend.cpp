@@ -75,7 +75,8 @@ const ImageBackend& image_backend() {
   if (!l.backend)
     throw Error({Exit::system, image_backend_path().string(), 0, {},
                  "cannot load the image I/O module (OpenImageIO): " + l.error,
-                 "keep it beside the marchstudio executable, or set MARCH_IMAGE_MODULE to its path", {}});
+                 "keep it beside the marchstudio executable or in ../lib/marchstudio/ from it, or set "
+                 "MARCH_IMAGE_MODULE to its path", {}});
   return *l.backend;
 }
 
