@@ -1,14 +1,16 @@
 // --help tells the defaults the binary really uses, the hidden tiling
-// flags' errors name the flag and print their limit readably, and view
-// --time takes the same times as render --time.
+// flags' errors name the flag and print their limit readably, view --time
+// takes the same times as render --time, and usage.md's -o directories.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "run.h"
 
 namespace ms::test {
 namespace {
+namespace fs = std::filesystem;
 
 const std::string kSeed = (source_dir() / "scenes" / "seed.toml").string();
 
@@ -76,6 +78,20 @@ TEST(HelpDefaults, ViewTimeTakesRenderTimes) {
       EXPECT_NE(r.err.find("--time"), std::string::npos) << r.err;
     }
   }
+}
+
+// docs/usage.md: a missing -o directory is made; one that cannot be made
+// (a file in the way) is one line naming -o, exit 2, nothing written.
+TEST(DocClaims, AMissingOutputDirectoryIsMade) {
+  TempDir dir;
+  const fs::path out = dir / "new" / "deeper" / "x.png";
+  const RunResult r = run_marchstudio({"render", kSeed, "--size", "16x9", "-o", out.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(out));
+  write_file(dir / "afile", "x");
+  const RunResult bad = run_marchstudio({"render", kSeed, "--size", "16x9", "-o", (dir / "afile" / "sub" / "x.png").string()});
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  EXPECT_NE(bad.err.find("afile/sub: -o: output directory cannot be made: "), std::string::npos) << bad.err;
 }
 
 }  // namespace
