@@ -39,7 +39,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                   "flag without its dashes; the command line's flags are the defaults")
       ->check(not_empty());
   cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
-  cmd->add_option("--time", a.time, "Scene time in seconds, any finite value (default: the scene's [render] time, else 0)")
+  cmd->add_option("--time", a.time,
+                  "Scene time in seconds, any finite value (default: the scene's [render] time, else 0)")
       ->check(seconds_value())
       ->each([&a](const std::string&) { a.time_set = true; });
   cmd->add_option("--spp", a.spp, "Samples per pixel, stratified, 1..1024 (default: the scene's)")
@@ -75,7 +76,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                   "(see docs/usage.md)")
       ->delimiter(',')
       ->check(one_of(kAovNames));
-  cmd->add_flag("-v,--verbose", a.verbose, "Print the backend, GL renderer, the shader dir and image module used, and timings");
+  cmd->add_flag("-v,--verbose", a.verbose,
+                "Print the backend, GL renderer, the shader dir and image module used, and timings");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Build the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   cmd->add_flag("--print-shader", a.print_shader,

@@ -36,8 +36,9 @@ TEST(HelpDefaults, RenderHelpShowsTheDefaultsItUses) {
 
 TEST(HelpDefaults, TileStillErrorsNameTheFlagAndNoHugeNumber) {
   TempDir dir;
-  for (const std::vector<std::string>& extra :
-       {std::vector<std::string>{"--tile-still"}, {"--tile-still", "-3"}, {"--tile-size", "-1"}, {"--tile-size", "x"}}) {
+  const std::vector<std::vector<std::string>> bad = {
+      {"--tile-still"}, {"--tile-still", "-3"}, {"--tile-size", "-1"}, {"--tile-size", "x"}};
+  for (const std::vector<std::string>& extra : bad) {
     std::vector<std::string> args = {"render", kSeed, "--size", "32x18", "-o", (dir / "t.png").string()};
     args.insert(args.end(), extra.begin(), extra.end());
     const RunResult r = run_marchstudio(args);
@@ -89,7 +90,8 @@ TEST(DocClaims, AMissingOutputDirectoryIsMade) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::is_regular_file(out));
   write_file(dir / "afile", "x");
-  const RunResult bad = run_marchstudio({"render", kSeed, "--size", "16x9", "-o", (dir / "afile" / "sub" / "x.png").string()});
+  const RunResult bad =
+      run_marchstudio({"render", kSeed, "--size", "16x9", "-o", (dir / "afile" / "sub" / "x.png").string()});
   EXPECT_EQ(bad.exit_code, 2) << bad.err;
   EXPECT_NE(bad.err.find("afile/sub: -o: output directory cannot be made: "), std::string::npos) << bad.err;
 }
