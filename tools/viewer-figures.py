@@ -1,13 +1,14 @@
 #!/usr/bin/python3
 """Measures docs/viewer.md's figures and writes them between its markers.
 
-- viewer-reload: the reload latency of the two kinds of save. A save of the
-  scene TOML that changes only a uniform value (a light's intensity) needs
-  no recompile: the shader text is the same, so the viewer's program cache
-  has it. A save of the map GLSL with a new constant is new shader text:
-  assembled, compiled and linked again, and llvmpipe's lazy code
-  generation lands in the first frame; Mesa's disk shader cache starts
-  empty (MESA_SHADER_CACHE_DIR), as for an edit never compiled before.
+- viewer-reload: the reload latency of three kinds of save. A save of the
+  scene TOML that changes only the camera (a per-frame uniform) needs no
+  recompile: the shader text is the same, so the viewer's program cache
+  has it. A light's intensity is folded into the shader as a constant
+  (docs/viewer.md#folding), so its save is new shader text, as is a save of
+  the map GLSL with a new constant: assembled, compiled and linked again on
+  the compile worker; Mesa's disk shader cache starts empty
+  (MESA_SHADER_CACHE_DIR), as for an edit never compiled before.
   For each window size and kind, SAVES saves by rename(); per save the
   in-viewer `ms` and `compile_ms` of its `reload ok` log line and the
   wall time from the rename until that line is in the log.
@@ -91,7 +92,7 @@ def measure(size, work):
                           '--size', size, '--log', log, '--exit-after', '300'], cwd=work,
                          env=dict(ENV, MESA_SHADER_CACHE_DIR=os.path.join(work, 'mesa-cache')),  # empty: a new edit misses
                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
-    rows = {'toml': [], 'glsl': []}
+    rows = {'camera': [], 'light': [], 'glsl': []}
     try:
         wait_line(log, 0)
         time.sleep(1.0)
@@ -99,10 +100,17 @@ def measure(size, work):
         toml = open(os.path.join(work, 'seed.toml')).read()
         glsl = open(os.path.join(work, 'seed.glsl')).read()
         for k in range(SAVES):
-            for kind in ('toml', 'glsl'):
+            for kind in ('camera', 'light', 'glsl'):
                 n += 1
-                if kind == 'toml':  # a uniform value only
-                    path, text = 'seed.toml', toml.replace('intensity   = 2.0', 'intensity   = %.2f' % (2.0 + 0.05 * (k + 1)))
+                # TOML edits build on the last one, so that each save changes one value
+                if kind == 'camera':  # a uniform value only
+                    path, text = 'seed.toml', re.sub(r'position = \[0\.0, 1\.6, [-\d.]+\]',
+                                                     'position = [0.0, 1.6, %.2f]' % (-5.0 - 0.05 * (k + 1)), toml)
+                    toml = text
+                elif kind == 'light':  # a folded value: new shader text
+                    path, text = 'seed.toml', re.sub(r'intensity   = [\d.]+', 'intensity   = %.2f' % (2.0 + 0.05 * (k + 1)),
+                                                     toml)
+                    toml = text
                 else:  # new shader text: a radius never compiled before in this session
                     path, text = 'seed.glsl', glsl.replace('1.0), MAT_BALL', '%.4f), MAT_BALL' % (1.0 - 0.001 * (k + 1)))
                 t0 = time.monotonic()
@@ -280,13 +288,15 @@ def main():
              'scene, spp 1, %d saves of each kind per window size, one second apart. *save to log line*: wall time from'
              % SAVES,
              'the `rename()` until the `reload ok` line is in the log file. Mesa\'s disk shader cache starts empty, so',
-             'each new radius is a real compile, as an edit never made before is.', '',
+             'each new radius or intensity is a real compile, as an edit never made before is.', '',
              '| window | frame time (median) | save | in-viewer `ms` (event to swap) | `compile_ms` | save to log line | frames |',
              '|---|---|---|---|---|---|---|']
     for size in SIZES:
         with tempfile.TemporaryDirectory() as work:
             rows, frame = measure(size, work)
-        for kind, label in (('toml', 'TOML, a light\'s intensity (no recompile)'), ('glsl', 'map GLSL, a new radius (recompile)')):
+        for kind, label in (('camera', 'TOML, the camera\'s position (no recompile)'),
+                            ('light', 'TOML, a light\'s intensity (folded: recompile)'),
+                            ('glsl', 'map GLSL, a new radius (recompile)')):
             r = rows[kind]
             table.append('| %s | %.0f ms | %s | %s ms | %s ms | %s ms | %s |' % (
                 size, frame, label, span([x[1] for x in r]), span([x[2] for x in r], '%.1f'), span([x[3] for x in r]),

@@ -6,7 +6,7 @@
 namespace ms {
 
 CLI::Option* add_backend_flag(CLI::App* cmd, std::string& backend) {
-  return cmd->add_option("--backend", backend, "GL context: auto, egl or osmesa")->check(one_of(kBackendNames));
+  return cmd->add_option("--backend", backend, "GL context: auto (default: EGL, else OSMesa), egl or osmesa")->check(one_of(kBackendNames));
 }
 
 CLI::Option* add_shader_dir_flag(CLI::App* cmd, std::string& dir) {

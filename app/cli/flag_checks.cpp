@@ -2,9 +2,13 @@
 
 #include <cfloat>
 #include <algorithm>
+#include <cerrno>
+#include <climits>
 #include <cmath>
+#include <cstdlib>
 #include <string_view>
 
+#include "core/error.h"
 #include "scene/suggest.h"
 
 namespace ms {
@@ -54,6 +58,37 @@ CLI::Validator seconds_value() {
         return {};
       },
       "SECONDS");
+}
+
+CLI::Validator non_negative() {
+  return CLI::Validator(
+      [](std::string& v) -> std::string {
+        char* end = nullptr;
+        const double x = std::strtod(v.c_str(), &end);
+        if (end == v.c_str() || *end != '\0' || !std::isfinite(x)) return "'" + v + "' is not a number";
+        return x < 0 ? "must be >= 0, got " + v : "";
+      },
+      "NUMBER >= 0");
+}
+
+CLI::Option* add_hidden_pixels(CLI::App* cmd, const std::string& name, int& value, const std::string& description) {
+  return cmd
+      ->add_option_function<std::string>(
+          name,
+          [name, &value](const std::string& v) {
+            char* end = nullptr;
+            errno = 0;
+            const long n = std::strtol(v.c_str(), &end, 10);
+            if (v.empty())
+              fail_input(name + " needs a number of pixels", {}, 0, name, "e.g. " + name + " 256");
+            if (end == v.c_str() || *end != '\0' || errno == ERANGE || n < 0 || n > INT_MAX)
+              fail_input(name + " must be a whole number of pixels >= 0, got '" + v + "'", {}, 0, name,
+                         "e.g. " + name + " 256");
+            value = static_cast<int>(n);
+          },
+          description)
+      ->expected(0, 1)  // a missing value reaches the check above, which names the flag
+      ->group("");
 }
 
 std::string unknown_subcommand(const CLI::App& app, int argc, char** argv) {

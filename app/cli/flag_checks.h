@@ -20,6 +20,14 @@ CLI::Validator one_of(std::vector<std::string> names);
 CLI::Validator not_empty();
 // A time in seconds: finite and within a 32-bit float, as the scene file's.
 CLI::Validator seconds_value();
+// A number >= 0, said in those words (CLI11's NonNegativeNumber prints
+// DBL_MAX in full as its upper limit).
+CLI::Validator non_negative();
+
+// A hidden option taking a whole number of pixels >= 0. CLI11 leaves a
+// hidden option's name out of its own errors ("marchstudio: : 1 required
+// ... missing"), so the value is read here and every error names `name`.
+CLI::Option* add_hidden_pixels(CLI::App* cmd, const std::string& name, int& value, const std::string& description);
 
 // "unknown subcommand 'rendr' (did you mean 'render'?)" for argv[1] when it
 // names no subcommand of `app`; empty when it does (or is a flag).

@@ -25,7 +25,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene (.toml) or a Shadertoy shader (.glsl) to an image");
   cmd->add_option("input", a.inputs,
                   "Scene .toml or Shadertoy .glsl/.frag/.json; several make a batch (see --output-dir)");
-  cmd->add_option("-o,--output", a.output, "Output image: .png .jpg .tif (8-bit sRGB) or .exr (linear float)")
+  cmd->add_option("-o,--output", a.output,
+                  "Output image: .png .jpg .tif (8-bit sRGB) or .exr (linear float) (default: <stem>.png, the "
+                  "input's file name stem, in the current directory)")
       ->check(not_empty());
   cmd->add_option("--output-dir", a.output_dir,
                   "Render every input, in one process, to DIR/<stem>.<format> (docs/usage.md#batches)")
@@ -37,12 +39,13 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                   "flag without its dashes; the command line's flags are the defaults")
       ->check(not_empty());
   cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
-  cmd->add_option("--time", a.time, "Scene time in seconds (default 0)")
+  cmd->add_option("--time", a.time,
+                  "Scene time in seconds, any finite value (default: the scene's [render] time, else 0)")
       ->check(seconds_value())
       ->each([&a](const std::string&) { a.time_set = true; });
   cmd->add_option("--spp", a.spp, "Samples per pixel, stratified, 1..1024 (default: the scene's)")
       ->check(CLI::Range(1, 1024));
-  cmd->add_option("--frame", a.frame, "Frame number (uFrame / iFrame)");
+  cmd->add_option("--frame", a.frame, "Frame number, uFrame / iFrame (default 0)");
   add_backend_flag(cmd, a.backend);
   add_shader_dir_flag(cmd, a.shader_dir);
   add_preset_flag(cmd, a.preset);
@@ -73,7 +76,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                   "(see docs/usage.md)")
       ->delimiter(',')
       ->check(one_of(kAovNames));
-  cmd->add_flag("-v,--verbose", a.verbose, "Print the backend, GL renderer and timings");
+  cmd->add_flag("-v,--verbose", a.verbose,
+                "Print the backend, GL renderer, the shader dir and image module used, and timings");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Build the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   cmd->add_flag("--print-shader", a.print_shader,
@@ -85,13 +89,11 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   add_allow_include_flag(cmd, a.allow_include);
   cmd->add_option("--timeout", a.timeout,
                   "Give up after SECONDS per image (each frame of --frames): exit 3, no file written");
-  cmd->add_option("--tile-size", a.tile_size, "Largest square one draw covers, pixels (0: the whole frame)")
-      ->check(CLI::NonNegativeNumber)
-      ->group("");  // tests and experiments: the image is the same for any value
-  cmd->add_option("--tile-still", a.tile_still,
-                  "Draw the still in tiles of at most SIDE pixels, streamed to the file (0: only past the limits)")
-      ->check(CLI::NonNegativeNumber)
-      ->group("");  // tests: a tiled still is bit-identical to a whole one (docs/usage.md#huge-stills)
+  // Hidden: tests and experiments, the image is the same for any value
+  // (a tiled still is bit-identical to a whole one, docs/usage.md#huge-stills).
+  add_hidden_pixels(cmd, "--tile-size", a.tile_size, "Largest square one draw covers, pixels (0: the whole frame)");
+  add_hidden_pixels(cmd, "--tile-still", a.tile_still,
+                    "Draw the still in tiles of at most SIDE pixels, streamed to the file (0: only past the limits)");
   return cmd;
 }
 

@@ -143,6 +143,10 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
     if (fresh_context)
       std::fprintf(stderr, "marchstudio: backend %s, GL_RENDERER %s, GL_VERSION %s\n", ctx.backend().c_str(),
                    ctx.info().renderer.c_str(), ctx.info().version.c_str());
+    // Which copies an installed or moved tree runs with (docs/scale-out.md#installing).
+    std::fprintf(stderr, "marchstudio: shader dir %s\n", job.shader_dir.c_str());
+    if (!writes_directly(image_format_for(output)))
+      std::fprintf(stderr, "marchstudio: image module %s\n", image_backend_path().c_str());
     if (!in.shadertoy)
       std::fprintf(stderr, "marchstudio: shader %s (%s)\n", specialization_name(p.opts.specialize),
                    describe(scene_features(scene, p.opts)).c_str());

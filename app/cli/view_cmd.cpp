@@ -36,7 +36,10 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_option("--debug-view", a.debug_view,
                   "Start in a debug view: 0 lit, 1 steps, 2 normals, 3 depth, 4 AO, 5 shadow, 6 material id")
       ->check(CLI::Range(0, 6));
-  cmd->add_option("--time", a.time, "Start time in seconds (default: the scene's)")->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--time", a.time,
+                  "Start time in seconds, any finite value as for render (default: the scene's [render] time)")
+      ->check(seconds_value())
+      ->each([&a](const std::string&) { a.time_set = true; });
   cmd->add_option("--preset", a.preset, "Quality preset to start with, as render --preset (default: the scene's)")
       ->check(one_of(quality_preset_names()));
   cmd->add_option_function<std::string>(
@@ -76,8 +79,8 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
                   "Drag TARGET (an animation target, e.g. materials[0].color) to V (x or x,y,z) over frames A..B, "
                   "as the panel would (scripts)")
       ->check(not_empty());
-  cmd->add_option("--exit-after", a.exit_after, "Quit after this many seconds")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--max-frames", a.max_frames, "Quit after this many frames")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--exit-after", a.exit_after, "Quit after this many seconds")->check(non_negative());
+  cmd->add_option("--max-frames", a.max_frames, "Quit after this many frames")->check(non_negative());
   cmd->add_option("--debounce-ms", a.debounce_ms, "Quiet time that ends a save, ms (default 10)")
       ->check(CLI::Range(0, 1000));
   cmd->add_flag("--no-panel", a.no_panel, "Start with the panel hidden (Tab shows it)");
@@ -196,7 +199,7 @@ int run_view(const ViewArgs& a) {
     o.record.video = a.record_video;
   }
   o.preset = a.preset;
-  o.time = a.time;
+  if (a.time_set) o.time = a.time;
   o.paused = a.paused;
   o.log_file = a.log;
   o.capture_dir = a.capture_dir;

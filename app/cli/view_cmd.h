@@ -23,7 +23,8 @@ struct ViewArgs {
   double record_fps = 0.0;
   std::string audio_device = "default";  // --accumulate: -1 the scene's spp, 0 no limit (unlimited), N
   std::string preset;
-  double time = -1.0;        // < 0: the scene's
+  double time = 0.0;
+  bool time_set = false;     // false: the scene's [render] time
   bool paused = false;
   std::string log;           // --log FILE; empty: stderr
   std::string capture_dir;

@@ -93,14 +93,18 @@ std::shared_future<Loaded> g_loaded;
 
 }  // namespace
 
+// A build tree, or a copy made by hand, keeps the module beside the
+// executable; `cmake --install` puts it in lib/marchstudio/, beside bin/.
 fs::path image_backend_path() {
   if (const char* env = std::getenv("MARCH_IMAGE_MODULE"); env && *env) return env;
   char exe[PATH_MAX];
   const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
   if (n > 0) {
-    const fs::path beside = fs::path(std::string(exe, static_cast<size_t>(n))).parent_path() / kImageBackendFile;
-    std::error_code ec;
-    if (fs::exists(beside, ec)) return beside;
+    const fs::path dir = fs::path(std::string(exe, static_cast<size_t>(n))).parent_path();
+    for (const fs::path& p : {dir / kImageBackendFile, dir / "../lib/marchstudio" / kImageBackendFile}) {
+      std::error_code ec;
+      if (fs::exists(p, ec)) return p.lexically_normal();
+    }
   }
   return fs::path(MARCH_IMAGE_MODULE_DIR) / kImageBackendFile;
 }
@@ -121,7 +125,8 @@ const ImageBackend& image_backend() {
   if (!l.backend)
     throw Error({Exit::system, image_backend_path().string(), 0, {},
                  "cannot load the image I/O module (OpenImageIO): " + l.error,
-                 "keep it beside the marchstudio executable, or set MARCH_IMAGE_MODULE to its path", {}});
+                 "keep it beside the marchstudio executable or in ../lib/marchstudio/ from it, or set "
+                 "MARCH_IMAGE_MODULE to its path", {}});
   return *l.backend;
 }
 

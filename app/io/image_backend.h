@@ -79,7 +79,8 @@ void preload_image_backend();
 // naming the module when it cannot be loaded.
 const ImageBackend& image_backend();
 // Where the module is looked for, in order: $MARCH_IMAGE_MODULE, beside the
-// executable, the build tree it was built in.
+// executable, ../lib/marchstudio/ from it (an installed tree), the build
+// tree it was built in.
 std::filesystem::path image_backend_path();
 
 // What the module exports: a pointer to its one ImageBackend.

@@ -51,7 +51,7 @@ void on_key(GLFWwindow* w, int key, int, int action, int mods) {
     case GLFW_KEY_LEFT:
     case GLFW_KEY_RIGHT: {
       const double step = (shift ? 1.0 : kTimeStep) * (key == GLFW_KEY_LEFT ? -1.0 : 1.0);
-      s.time = std::max(0.0, s.time + step);
+      s.time = std::max(std::min(0.0, s.start_time), s.time + step);  // a negative start stays reachable
       return;
     }
     default: break;

@@ -33,7 +33,8 @@ void frame_times(ViewState& s) {
 void time_and_view(ViewState& s, Session& session) {
   ImGui::Checkbox("paused (Space)", &s.paused);
   float t = static_cast<float>(s.time);
-  if (ImGui::DragFloat("time (s)", &t, 0.01f, 0.0f, 1e6f, "%.3f")) s.time = std::max(0.0f, t);
+  const float earliest = static_cast<float>(std::min(0.0, s.start_time));  // a negative start stays reachable
+  if (ImGui::DragFloat("time (s)", &t, 0.01f, earliest, 1e6f, "%.3f")) s.time = std::max(earliest, t);
   ImGui::SliderFloat("speed", &s.speed, 0.0f, 4.0f, "%.2fx");
   ImGui::SliderFloat("render scale", &s.render_scale, 0.25f, 1.0f, "%.2f");
   ImGui::SliderFloat("exposure", &session.scene().render.exposure, 0.05f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic);

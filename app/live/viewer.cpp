@@ -248,7 +248,7 @@ int Viewer::run() {
   session_.set_accumulate(s_.accumulate);  // the first build is already the one-pass frame where it can be
   reload(true, seconds_now(), 0, 1, true);  // the initial build is number 0 (frame_0.png)
   s_.shadertoy = session_.shadertoy();
-  s_.start_time = o_.time >= 0.0 ? o_.time : session_.scene().render.time;
+  s_.start_time = o_.time.value_or(session_.scene().render.time);
   s_.time = s_.start_time;
 
   const double t_start = seconds_now();

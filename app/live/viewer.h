@@ -6,6 +6,7 @@
 #pragma once
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "live/compute_trace.h"
@@ -25,7 +26,7 @@ struct ViewerOptions {
   int accumulate = -1;               // samples to accumulate while nothing changes: -1 the scene's spp, 0 no limit, N
   std::string preset;                // a quality preset at start (scene/quality.h); empty: the file's
   bool paused = false;
-  double time = -1.0;                // start time; < 0: the scene's [render] time
+  std::optional<double> time;        // start time; none: the scene's [render] time
   std::filesystem::path log_file;    // empty: log lines go to stderr
   std::filesystem::path capture_dir; // empty: no captures
   std::filesystem::path shot_dir = ".";
