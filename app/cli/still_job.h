@@ -11,6 +11,7 @@
 #pragma once
 #include <memory>
 
+#include "cli/bounds_report.h"
 #include "cli/render_job.h"
 #include "gl/context.h"
 #include "render/program_cache.h"
@@ -22,6 +23,7 @@ struct RenderSession {
   Backend backend = Backend::automatic;
   // Declared after the context: its programs die first, while it is current.
   ProgramCache cache{64};
+  BoundsReport bounds;  // the [bounds] warning, once per scene of the batch
 };
 
 // Loads, assembles, draws and writes job.output (atomically, verified);
