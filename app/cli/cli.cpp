@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "cli/render_cmd.h"
 #include "cli/view_cmd.h"
@@ -11,6 +12,7 @@
 #include "cli/compare_cmd.h"
 #include "cli/info_cmd.h"
 #include "cli/flag_checks.h"
+#include "cli/glslviewer_flags.h"
 #include "cli/sweep_cmd.h"
 #include "cli/test_cmd.h"
 #include "core/error.h"
@@ -49,6 +51,10 @@ int run_cli(int argc, char** argv) {
 
   if (const std::string bad = unknown_subcommand(app, argc, argv); !bad.empty()) {
     std::fprintf(stderr, "marchstudio: %s (see 'marchstudio --help')\n", bad.c_str());
+    return static_cast<int>(Exit::bad_input);
+  }
+  if (const std::string habit = glslviewer_habit(argc, argv); !habit.empty()) {
+    std::fprintf(stderr, "marchstudio: %s\n", habit.c_str());
     return static_cast<int>(Exit::bad_input);
   }
   try {
