@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <vector>
 
 #include "cli/render_cmd.h"
 #include "cli/view_cmd.h"
@@ -31,6 +32,17 @@ bool verbose(const CLI::App& app) {
 }  // namespace
 
 int run_cli(int argc, char** argv) {
+  // `marchstudio help [SUBCOMMAND]` is `marchstudio [SUBCOMMAND] --help`.
+  std::vector<std::string> words;
+  std::vector<char*> help_argv;
+  if (argc >= 2 && std::string(argv[1]) == "help") {
+    words = {argv[0]};
+    for (int i = 2; i < argc; ++i) words.emplace_back(argv[i]);
+    words.emplace_back("--help");
+    for (std::string& w : words) help_argv.push_back(w.data());
+    argc = static_cast<int>(help_argv.size());
+    argv = help_argv.data();
+  }
   CLI::App app{"marchstudio: a GLSL raymarching studio for SDF scenes", "marchstudio"};
   app.set_version_flag("--version", "marchstudio 0.1.0");
   app.require_subcommand(1);
