@@ -77,7 +77,8 @@ std::string glslviewer_habit(int argc, char** argv) {
     use.push_back("-o " + (file.empty() ? std::string("FILE") : file) + " for the image file");
   std::string hint;
   for (std::size_t i = 0; i < use.size(); ++i) hint += (i == 0 ? "use " : " and ") + use[i];
-  if (headless) hint += std::string(hint.empty() ? "" : "; ") + "drop --headless: render never opens a window";
+  if (headless)
+    hint += std::string(hint.empty() ? "" : "; ") + "drop --headless: marchstudio render draws without a window";
   const bool one = seen.size() == 1;
   return format_error({Exit::bad_input, {}, 0, {},
                        flags + (one ? " is a glslViewer flag" : " are glslViewer flags") +
