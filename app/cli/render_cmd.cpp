@@ -29,7 +29,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   cmd->add_option("-o,--output", a.output, "Output image: .png .jpg .tif (8-bit sRGB) or .exr (linear float)")
       ->check(not_empty());
   cmd->add_option("--output-dir", a.output_dir,
-                  "Render every input, in one process, to DIR/<stem>.<format> (docs/usage.md#batches)")
+                  "Render every input, in one process, to DIR/<stem>.<format>; a --jobs line's relative \"output\" "
+                  "is under DIR too (docs/usage.md#batches)")
       ->check(not_empty());
   cmd->add_option("--format", a.format, "Extension of outputs named from the input: png (default), exr, tif, jpg")
       ->check(one_of({"png", "exr", "tif", "jpg"}));
