@@ -18,12 +18,13 @@ float normalEpsilon(vec3 p, float footprint) {
 // Tetrahedron-technique gradient (4 taps instead of 6; Quilez) of the whole
 // scene's field (sceneMap: map() and any declared planes), normalized.
 // A zero gradient (medial points, flat-topped fields) gives `fallback`, never NaN.
-// The loop is not unrolled on purpose (the bound depends on uFrame, always 0
-// or more, so min() is 0): map() is inlined once, not four times, which keeps
-// compile times down for large scenes.
+// The loop is not unrolled on purpose (the bound depends on uResolution, at
+// least 1, so min() is 0): map() is inlined once, not four times, which keeps
+// compile times down for large scenes. Not uFrame: a program that reads it
+// changes every frame, and the viewer would never accumulate a still scene.
 vec3 calcNormal(vec3 p, float eps, vec3 fallback) {
   vec3 n = vec3(0.0);
-  for (int i = min(uFrame, 0); i < 4; ++i) {
+  for (int i = min(int(uResolution.x), 0); i < 4; ++i) {
     // (+,-,-), (-,-,+), (-,+,-), (+,+,+): the tetrahedron's vertices
     vec3 e = 2.0 * vec3(((i + 3) >> 1) & 1, (i >> 1) & 1, i & 1) - 1.0;
     n += e * sceneMap(p + e * eps).x;

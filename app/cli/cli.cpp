@@ -7,6 +7,8 @@
 #include <cstring>
 #include <iostream>
 #include <exception>
+#include <string>
+#include <vector>
 
 #include "cli/render_cmd.h"
 #include "cli/view_cmd.h"
@@ -14,6 +16,7 @@
 #include "cli/compare_cmd.h"
 #include "cli/info_cmd.h"
 #include "cli/flag_checks.h"
+#include "cli/glslviewer_flags.h"
 #include "cli/sweep_cmd.h"
 #include "cli/test_cmd.h"
 #include "core/error.h"
@@ -33,6 +36,17 @@ bool verbose(const CLI::App& app) {
 }  // namespace
 
 int run_cli(int argc, char** argv) {
+  // `marchstudio help [SUBCOMMAND]` is `marchstudio [SUBCOMMAND] --help`.
+  std::vector<std::string> words;
+  std::vector<char*> help_argv;
+  if (argc >= 2 && std::string(argv[1]) == "help") {
+    words = {argv[0]};
+    for (int i = 2; i < argc; ++i) words.emplace_back(argv[i]);
+    words.emplace_back("--help");
+    for (std::string& w : words) help_argv.push_back(w.data());
+    argc = static_cast<int>(help_argv.size());
+    argv = help_argv.data();
+  }
   CLI::App app{"marchstudio: a GLSL raymarching studio for SDF scenes", "marchstudio"};
   app.set_version_flag("--version", "marchstudio 0.1.0");
   app.require_subcommand(1);
@@ -53,6 +67,10 @@ int run_cli(int argc, char** argv) {
 
   if (const std::string bad = unknown_subcommand(app, argc, argv); !bad.empty()) {
     std::fprintf(stderr, "marchstudio: %s (see 'marchstudio --help')\n", bad.c_str());
+    return static_cast<int>(Exit::bad_input);
+  }
+  if (const std::string habit = glslviewer_habit(argc, argv); !habit.empty()) {
+    std::fprintf(stderr, "marchstudio: %s\n", habit.c_str());
     return static_cast<int>(Exit::bad_input);
   }
   try {

@@ -187,7 +187,8 @@ void add_shadertoy_flags(CLI::App* cmd, ShadertoyFlags& f) {
       ->check(one_of({"error", "noise", "black"}));
   cmd->add_option_function<std::string>(
          "--mouse", [&f](const std::string& v) { f.mouse = parse_mouse_flag(v); },
-         "iMouse of a Shadertoy shader: X,Y,Z,W in pixels (default: the scene's, else 0,0,0,0)");
+         "iMouse of a Shadertoy shader: X,Y,Z,W in pixels, or u_mouse of a glslViewer shader: X,Y (default: the scene's, "
+         "else 0,0,0,0)");
   cmd->add_option_function<std::vector<std::string>>(
          "--texture",
          [&f](const std::vector<std::string>& v) {
@@ -221,17 +222,19 @@ std::vector<std::string> unbound_warnings(const PassGraph& graph) {
 std::vector<float> parse_mouse_flag(const std::string& text) {
   std::vector<float> v;
   size_t at = 0;
+  const char* hint = "X,Y (glslViewer's u_mouse) or X,Y,Z,W (Shadertoy's iMouse), in pixels";
   while (at <= text.size() && v.size() < 5) {
     const size_t comma = std::min(text.find(',', at), text.size());
     const std::string part = text.substr(at, comma - at);
     char* end = nullptr;
     const double d = std::strtod(part.c_str(), &end);
     if (part.empty() || *end != '\0' || !std::isfinite(d) || std::abs(d) > 1e9)
-      fail_input("invalid --mouse '" + text + "'", {}, 0, "--mouse", "four numbers X,Y,Z,W in pixels, as iMouse");
+      fail_input("invalid --mouse '" + text + "'", {}, 0, "--mouse", hint);
     v.push_back(static_cast<float>(d));
     at = comma + 1;
   }
-  if (v.size() != 4) fail_input("invalid --mouse '" + text + "'", {}, 0, "--mouse", "four numbers X,Y,Z,W, as iMouse");
+  if (v.size() == 2) v.resize(4, 0.0f);  // a position alone: no click
+  if (v.size() != 4) fail_input("invalid --mouse '" + text + "'", {}, 0, "--mouse", hint);
   return v;
 }
 

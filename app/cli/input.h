@@ -54,7 +54,8 @@ void add_shadertoy_flags(CLI::App* cmd, ShadertoyFlags& f);
 void report_input_warnings(const std::vector<std::string>& warnings, const std::string& input, bool strict);
 // The warnings of a graph's channels sampled with nothing bound.
 std::vector<std::string> unbound_warnings(const PassGraph& graph);
-// "X,Y,Z,W" as iMouse. Throws bad_input naming --mouse.
+// "X,Y,Z,W" as iMouse, or "X,Y" (glslViewer's u_mouse; Z and W 0). Throws
+// bad_input naming --mouse.
 std::vector<float> parse_mouse_flag(const std::string& text);
 // One --texture: "NAME=FILE" binds NAME, "FILE" binds u_tex<unnamed_before>;
 // the file made absolute (it is checked when applied).

@@ -77,7 +77,7 @@ using Handler = std::function<void(const KeyValue&, RenderArgs&)>;
 const std::map<std::string, Handler>& handlers() {
   static const std::map<std::string, Handler> h = {
       {"scene", [](const KeyValue& kv, RenderArgs& a) { a.input = path(kv); }},
-      {"output", [](const KeyValue& kv, RenderArgs& a) { a.output = path(kv); }},
+      {"output", [](const KeyValue& kv, RenderArgs& a) { a.output = job_output(text(kv), kv.base, a.output_dir).string(); }},
       {"size", [](const KeyValue& kv, RenderArgs& a) { a.size = text(kv); }},
       {"spp", [](const KeyValue& kv, RenderArgs& a) { a.spp = integer(kv); }},
       {"time",
@@ -156,6 +156,12 @@ RenderJob job_from_line(const std::string& line, const RenderArgs& defaults, con
 }
 
 }  // namespace
+
+fs::path job_output(const fs::path& output, const fs::path& job_dir, const std::string& output_dir) {
+  if (output.is_absolute()) return output;
+  if (!output_dir.empty()) return fs::path(output_dir) / output;
+  return job_dir.empty() ? output : job_dir / output;
+}
 
 const std::vector<std::string>& job_keys() {
   static const std::vector<std::string> keys = [] {

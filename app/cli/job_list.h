@@ -7,9 +7,10 @@
 // spp, time, preset, ...) replaces the flag's value, a list key (set,
 // uniform, define, disable, aov, allow-include) adds to the flag's values,
 // after them (so a job's --set of a key the command line also sets wins).
-// Paths in a line (scene, output, shader-dir, media-dir, allow-include) are
+// Paths in a line (scene, shader-dir, media-dir, allow-include) are
 // relative to the job file's directory, so a list means the same from any
-// working directory. A line without "output" is named as the batch names
+// working directory; a relative "output" is under --output-dir when it is
+// given (job_output()). A line without "output" is named as the batch names
 // positional inputs (cli/batch.h). Blank lines are skipped.
 //
 // A bad line (not JSON, an unknown key, a value of the wrong type or out of
@@ -43,6 +44,12 @@ using DefaultOutput = std::function<std::filesystem::path(const std::filesystem:
 // when it cannot be read) only when the file itself cannot be read.
 std::vector<BatchEntry> read_job_list(const std::filesystem::path& file, const RenderArgs& defaults,
                                       const DefaultOutput& default_output);
+
+// Where a job's "output" goes: an absolute path as it is; a relative one
+// under `output_dir` (--output-dir) when that is given, else under the job
+// file's directory `job_dir`.
+std::filesystem::path job_output(const std::filesystem::path& output, const std::filesystem::path& job_dir,
+                                 const std::string& output_dir);
 
 // The keys a line may have, for docs and did-you-mean.
 const std::vector<std::string>& job_keys();

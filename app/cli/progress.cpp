@@ -16,6 +16,15 @@ std::string format_duration(double seconds) {
   return buf;
 }
 
+std::string format_frame_time(double seconds) {
+  char buf[32];
+  // About three significant digits: a small frame on a fast device takes well under a millisecond.
+  const double ms = seconds * 1e3;
+  if (seconds >= 1.0) std::snprintf(buf, sizeof buf, "%.2f s", seconds);
+  else std::snprintf(buf, sizeof buf, "%.*f ms", ms >= 100.0 ? 0 : ms >= 10.0 ? 1 : ms >= 1.0 ? 2 : 3, ms);
+  return buf;
+}
+
 Progress::Progress(int total, bool tty, std::FILE* out, std::string unit)
     : total_(total), tty_(tty), unit_(std::move(unit)), out_(out) {}
 
@@ -47,8 +56,9 @@ void Progress::rendered(int frame, double seconds) {
   if (unit_ != "frames") return;
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double fps = elapsed > 0 ? done_ / elapsed : 0.0;
-  std::fprintf(out_, "marchstudio: frame %d rendered in %.3f s (%d/%d, %.2f frames/s, ETA %s)\n", frame, seconds,
-               done_, total_, fps, format_duration(fps > 0 ? (total_ - done_) / fps : -1).c_str());
+  std::fprintf(out_, "marchstudio: frame %d rendered in %s (%d/%d, %.2f frames/s, ETA %s)\n", frame,
+               format_frame_time(seconds).c_str(), done_, total_, fps,
+               format_duration(fps > 0 ? (total_ - done_) / fps : -1).c_str());
   std::fflush(out_);
 }
 

@@ -13,6 +13,8 @@ namespace ms {
 
 // "1:02:03" or "2:03"; "-" when unknown.
 std::string format_duration(double seconds);
+// A frame's render time: "1.25 s", "71.2 ms", "0.412 ms".
+std::string format_frame_time(double seconds);
 
 class Progress {
  public:

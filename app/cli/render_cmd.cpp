@@ -9,6 +9,7 @@
 #include "cli/batch.h"
 #include "cli/common_flags.h"
 #include "cli/flag_checks.h"
+#include "cli/glslviewer_flags.h"
 #include "cli/input.h"
 #include "cli/render_job.h"
 #include "cli/sequence_cmd.h"
@@ -30,7 +31,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                   "input's file name stem, in the current directory)")
       ->check(not_empty());
   cmd->add_option("--output-dir", a.output_dir,
-                  "Render every input, in one process, to DIR/<stem>.<format> (docs/usage.md#batches)")
+                  "Render every input, in one process, to DIR/<stem>.<format>; a --jobs line's relative \"output\" "
+                  "is under DIR too (docs/usage.md#batches)")
       ->check(not_empty());
   cmd->add_option("--format", a.format, "Extension of outputs named from the input: png (default), exr, tif, jpg")
       ->check(one_of({"png", "exr", "tif", "jpg"}));
@@ -83,8 +85,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   cmd->add_flag("--print-shader", a.print_shader,
                 "Print the assembled main-pass shader to stdout and exit; nothing is rendered");
   cmd->add_flag("--strict", a.strict,
-                "Fail (exit 1, no file written) when any pixel has a NaN or Inf in its colour or AOVs; "
-                "without it they are counted on stderr");
+                "Fail (exit 1, no file written) when any pixel has a NaN or Inf in its colour or AOVs, or map() "
+                "crosses [bounds]; without it they are warnings on stderr");
   cmd->add_flag("--watch", a.watch, "Render again on every save of the scene or a file it includes, until Ctrl+C");
   add_allow_include_flag(cmd, a.allow_include);
   cmd->add_option("--timeout", a.timeout,
@@ -118,6 +120,7 @@ static int run_render_watch(const RenderArgs& a) {
 }
 
 int run_render(const RenderArgs& args) {
+  refuse_image_inputs(args.inputs);  // glslViewer's positional images (cli/glslviewer_flags.h)
   if (wants_batch(args)) return run_batch(args);
   if (args.inputs.empty())
     fail_input("no input: give a scene .toml or a shader, or --jobs FILE", {}, 0, "input",

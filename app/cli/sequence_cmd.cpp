@@ -13,6 +13,7 @@
 
 #include "bench/bench.h"
 #include "cli/bloom_setup.h"
+#include "cli/bounds_report.h"
 #include "cli/dispatch_flag.h"
 #include "cli/dispatch_probe.h"
 #include "cli/input.h"
@@ -255,6 +256,7 @@ int run_sequence(const RenderArgs& a) {
     ProgramCache bloom_programs;
     const std::unique_ptr<BloomStage> bloom = make_bloom_stage(in, display, opts, bloom_programs);
     fp.bloom = bloom.get();
+    BoundsReport bounds;  // after the context: its probe program dies first
     const auto inputs_at = [&](int f, const Scene& posed) {
       FrameInputs fi;
       fi.scene = &posed;
@@ -301,14 +303,24 @@ int run_sequence(const RenderArgs& a) {
     deadline.check("loading and compiling");
     for (int f : todo) {
       if ((stop_signal = signals.signal()) != 0) break;
+      const float time = frame_time(f);
+      const Scene posed = animated(scene, time);
+      if (!in.shadertoy) {  // [bounds] at this frame's pose: warned once; --strict stops here (cli/bounds_report.h)
+        try {
+          bounds.check(a.input, posed, opts, [&](const Program& prog) {
+            set_scene_uniforms(prog, posed, fp.width, fp.height, time, f);
+          }, a.strict);
+        } catch (const Error&) {
+          writer.finish();  // the frames before it are good: written, so a rerun resumes after them
+          throw;
+        }
+      }
       const auto t0 = std::chrono::steady_clock::now();
       // A frame that never finishes ends the run, but the frames already
       // handed to the writers are written first (also by the watchdog).
       deadline = Deadline::after(a.timeout);
       if (watchdog) watchdog->arm(deadline, "frame " + std::to_string(f), [&writer] { writer.finish(); });
       fp.deadline = deadline.limited() ? &deadline : nullptr;
-      const float time = frame_time(f);
-      const Scene posed = animated(scene, time);
       fp.exposure = posed.render.exposure;
       Image img;
       long long nonfinite = 0;  // the NaN/Inf guard, as in render_cmd.cpp

@@ -18,7 +18,6 @@
 #include "io/image_io.h"
 #include "io/temp_cleanup.h"
 #include "render/aov.h"
-#include "render/bounds_check.h"
 #include "render/compute_frame.h"
 #include "render/frame.h"
 #include "render/graph.h"
@@ -169,12 +168,10 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
     std::fprintf(stderr, "marchstudio: programs: %ld compiled, %ld from the cache\n",
                  session.cache.misses() - compiled_before, session.cache.hits() - reused_before);
   report_input_warnings(unbound_warnings(graph), input.string(), job.strict);
-  if (job.verbose && !in.shadertoy) {  // does [bounds] hold what map() draws? (render/bounds_check.h)
-    const std::string w = bounds_warning(input.string(), check_bounds(posed, p.opts, [&](const Program& prog) {
+  if (!in.shadertoy)  // does [bounds] hold what map() draws? Before anything is written (cli/bounds_report.h)
+    session.bounds.check(input.string(), posed, p.opts, [&](const Program& prog) {
       set_scene_uniforms(prog, posed, fp.width, fp.height, time, job.frame);
-    }));
-    if (!w.empty()) std::fprintf(stderr, "marchstudio: %s\n", w.c_str());
-  }
+    }, job.strict);
   const std::unique_ptr<BloomStage> bloom = make_bloom_stage(in, p.display, p.opts, session.cache);
   fp.bloom = bloom.get();
   FrameRenderer renderer(ctx);

@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "cli/bounds_report.h"
 #include "cli/render_job.h"
 #include "gl/context.h"
 #include "render/program_cache.h"
@@ -24,6 +25,7 @@ struct RenderSession {
   Backend backend = Backend::automatic;
   // Declared after the context: its programs die first, while it is current.
   ProgramCache cache{64};
+  BoundsReport bounds;  // the [bounds] warning, once per scene of the batch
 };
 
 // Loads, assembles, draws and writes job.output (atomically, verified);

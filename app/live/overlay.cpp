@@ -112,8 +112,23 @@ std::vector<float> depth_legend_ticks(float max_dist) {
   return out;
 }
 
+OverlayRect help_rect(float width, float height, const OverlayRect& status, float help_w, float help_h) {
+  constexpr float kGap = 10.0f;
+  const OverlayRect centred{0.5f * (width - help_w), 0.5f * (height - help_h), help_w, help_h};
+  if (!centred.overlaps(status)) return centred;
+  OverlayRect below = centred;
+  below.y = status.y + status.h + kGap;
+  if (below.y + help_h <= height - kGap) return below;
+  OverlayRect left = centred;
+  left.x = status.x - kGap - help_w;
+  if (left.x >= kGap) return left;
+  below.x = kGap;  // fits nowhere whole: below the box, cut off at the bottom rather than over it
+  return below;
+}
+
 void draw_overlay(const ViewState& s, const Session& session) {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
+  OverlayRect status;  // the status box, which the help must not cover
   const int view = session.compiled_debug_view();
   const bool accumulating = s.samples_target != 1 && s.samples > 0;
   if (view > 0 || s.paused || accumulating || s.recording_frame >= 0) {
@@ -127,6 +142,7 @@ void draw_overlay(const ViewState& s, const Session& session) {
     else if (accumulating) ImGui::Text("samples %d / %d%s", s.samples, s.samples_target, s.samples >= s.samples_target ? " (converged)" : "");
     if (view == 1) draw_steps_legend(session.scene());
     if (view == 3) draw_depth_legend(session.scene());
+    status = {ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowSize().x, ImGui::GetWindowSize().y};
     ImGui::End();
   }
   const float above_error = session.error().empty() ? 0.0f : 90.0f;
@@ -149,10 +165,14 @@ void draw_overlay(const ViewState& s, const Session& session) {
     ImGui::End();
   }
   if (s.show_help) {
-    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    // Its size is last frame's (an auto-resized window's first frame is not shown).
+    static ImVec2 help_size(0.0f, 0.0f);
+    const OverlayRect r = help_rect(size.x, size.y, status, help_size.x, help_size.y);
+    ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("##help", nullptr, kOverlayFlags);
     for (const char* const* line = key_help(); *line; ++line) ImGui::TextUnformatted(*line);
+    help_size = ImGui::GetWindowSize();
     ImGui::End();
   }
 }

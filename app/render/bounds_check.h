@@ -5,7 +5,8 @@
 // (sdf_shaders/bounds_probe.glsl: a 64 x 64 grid per box face, or as many
 // points spiralled over a sphere) and reports where the field is negative
 // there, ignoring points inside a declared plane's solid side. Called by
-// `render -v`, `bench` and the viewer; needs a current GL context.
+// `render` (cli/bounds_report.h), `bench` and the viewer; needs a current GL
+// context.
 //
 //   const BoundsCheck c = check_bounds(posed_scene, assemble_opts, set_uniforms);
 //   if (!c.ok()) std::fprintf(stderr, "%s\n", bounds_warning(scene_file, c).c_str());

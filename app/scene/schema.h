@@ -101,8 +101,12 @@ struct Schema {
     return {};
   }
   void check(const Reader& r, const toml::table& t, std::string_view section_name, std::string_view path) const {
-    r.check_keys(t, path, section(section_name).keys,
-                 [&](std::string_view key) { return elsewhere(section_name, key); });
+    r.check_keys(t, path, section(section_name).keys, [&](std::string_view key) -> std::string {
+      // A [render] size is the image's, not a light's (which the generic hint would name).
+      if (section_name == "render" && (key == "size" || key == "resolution"))
+        return "the image size is width and height, or --size WxH on the command line";
+      return elsewhere(section_name, key);
+    });
   }
 };
 

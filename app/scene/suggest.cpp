@@ -30,7 +30,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 }
 
 std::string_view closest(std::string_view word, std::span<const std::string_view> candidates) {
-  const std::size_t limit = word.size() <= 3 ? 1 : 2;
+  // Two edits in a word of four letters change half of it: "size" is not "time".
+  const std::size_t limit = word.size() <= 4 ? 1 : 2;
   std::string_view best;
   std::size_t best_d = limit + 1;
   for (std::string_view c : candidates) {

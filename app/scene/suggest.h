@@ -14,7 +14,7 @@ namespace ms {
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
 // The first candidate nearest to `word`, or "" when none is close enough:
-// at most 1 edit for words of up to 3 letters, 2 for longer ones.
+// at most 1 edit for words of up to 4 letters, 2 for longer ones.
 std::string_view closest(std::string_view word, std::span<const std::string_view> candidates);
 
 // "did you mean 'fov'?", or "" when nothing is close.

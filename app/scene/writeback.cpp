@@ -100,6 +100,44 @@ bool before(const toml::source_position& a, const toml::source_position& b) {
   return a.line != b.line ? a.line < b.line : a.column < b.column;
 }
 
+// Whether `a` and `b` hold the same value as the scene reads it: numbers
+// as 32-bit floats (`fov = 50` is the 50.0 a camera edit writes), arrays
+// element by element, anything else by type and value.
+bool same_value(const toml::node& a, const toml::node& b) {
+  if ((a.is_integer() || a.is_floating_point()) && (b.is_integer() || b.is_floating_point())) {
+    if (a.is_integer() && b.is_integer()) return a.as_integer()->get() == b.as_integer()->get();
+    return static_cast<float>(a.value<double>().value_or(0.0)) == static_cast<float>(b.value<double>().value_or(0.0));
+  }
+  if (const toml::array* x = a.as_array()) {
+    const toml::array* y = b.as_array();
+    if (!y || x->size() != y->size()) return false;
+    for (std::size_t i = 0; i < x->size(); ++i)
+      if (!same_value(*x->get(i), *y->get(i))) return false;
+    return true;
+  }
+  if (a.type() != b.type() || a.is_table()) return false;
+  if (a.is_string()) return a.as_string()->get() == b.as_string()->get();
+  if (a.is_boolean()) return a.as_boolean()->get() == b.as_boolean()->get();
+  return false;
+}
+
+// An edit's value text as a node (its owner keeps it alive); null when it
+// does not parse alone.
+const toml::node* edit_value(const std::string& value, toml::table& owner) {
+#if TOML_EXCEPTIONS
+  try {
+    owner = toml::parse("v = " + value);
+  } catch (const toml::parse_error&) {
+    return nullptr;
+  }
+#else
+  toml::parse_result r = toml::parse("v = " + value);
+  if (!r) return nullptr;
+  owner = std::move(r).table();
+#endif
+  return owner.get("v");
+}
+
 std::string apply_one(const std::string& text, const TomlEdit& e, const std::string& name) {
   toml::table root = parse(text, name);
   const Offsets off(text);
@@ -123,6 +161,9 @@ std::string apply_one(const std::string& text, const TomlEdit& e, const std::str
   }
 
   if (toml::node* v = t->get(e.key)) {
+    toml::table parsed;
+    const toml::node* now = edit_value(e.value, parsed);
+    if (now && same_value(*v, *now)) return out;  // unchanged: the file's own text stays
     const size_t b = off.at(v->source().begin), en = off.at(v->source().end);
     return out.replace(b, en - b, e.value);
   }

@@ -35,7 +35,8 @@ std::string toml_vec3(glm::vec3 v);
 std::string toml_string(const std::string& s);
 
 // Apply `edits` in order to the TOML `text`. An existing key keeps its place
-// and any comment after it; an absent key goes on a new line after the
+// and any comment after it, and its text when the value is the same (`fov =
+// 50` stays, though the edit says 50.0); an absent key goes on a new line after the
 // table's last key (or inside the braces of an inline table); an absent
 // plain table is appended. Throws bad_input, located in `display_name`, when
 // the text is not TOML, an array entry does not exist, or the result would

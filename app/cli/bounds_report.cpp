@@ -1,0 +1,23 @@
+#include "cli/bounds_report.h"
+
+#include <cstdio>
+
+#include "core/error.h"
+
+namespace ms {
+
+void BoundsReport::check(const std::string& scene_file, const Scene& posed, const AssembleOptions& opts,
+                         const UniformFn& set_uniforms, bool strict) {
+  if (!strict && warned_.count(scene_file) > 0) return;  // once per scene: the rest would say the same
+  const std::string w = bounds_warning(scene_file, check_bounds(posed, opts, set_uniforms, &probes_));
+  if (w.empty()) return;
+  if (strict) {
+    const std::string prefix = scene_file + ": warning: ";
+    const std::string what = w.rfind(prefix, 0) == 0 ? w.substr(prefix.size()) : w;
+    throw Error({Exit::threshold, scene_file, 0, "--strict", what + "; the image is not written", {}, {}});
+  }
+  warned_.insert(scene_file);
+  std::fprintf(stderr, "marchstudio: %s (--strict makes this an error)\n", w.c_str());
+}
+
+}  // namespace ms
