@@ -51,9 +51,11 @@ bool jpeg_cut_short(const std::string& b) {
     return false;  // not a JPEG: its reader says so
   size_t i = 2;
   while (i + 4 <= b.size()) {
-    if (static_cast<unsigned char>(b[i]) != 0xFF) return true;  // no marker where one belongs: cut or corrupt
     const unsigned char m = static_cast<unsigned char>(b[i + 1]);
-    if (m == 0xFF) { ++i; continue; }  // fill byte
+    if (static_cast<unsigned char>(b[i]) != 0xFF || m == 0xFF) {  // stray bytes (libjpeg skips them too), fill
+      ++i;
+      continue;
+    }
     if (m == 0xD9) return false;       // an image with no scan: its reader decides
     const size_t len = (static_cast<size_t>(static_cast<unsigned char>(b[i + 2])) << 8) |
                        static_cast<unsigned char>(b[i + 3]);
