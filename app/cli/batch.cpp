@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <map>
 #include <new>
+#include <optional>
+#include <unordered_map>
 
 #include "cli/job_list.h"
 #include "cli/progress.h"
@@ -40,7 +42,8 @@ std::string job_error_line(const std::string& label, const Error& e) {
   return "marchstudio: " + label + ": " + what;
 }
 
-std::vector<BatchEntry> batch_entries(const RenderArgs& a) {
+// The positional inputs' entries; the job file's come one at a time (JobFile).
+std::vector<BatchEntry> input_entries(const RenderArgs& a) {
   std::vector<BatchEntry> entries;
   for (const std::string& input : a.inputs) {
     BatchEntry e;
@@ -52,27 +55,43 @@ std::vector<BatchEntry> batch_entries(const RenderArgs& a) {
     }
     entries.push_back(std::move(e));
   }
-  if (!a.jobs.empty())
-    for (BatchEntry& e : read_job_list(a.jobs, a, [&a](const fs::path& in) { return batch_output(a, in); }))
-      entries.push_back(std::move(e));
   return entries;
 }
 
-// Two jobs writing one file would leave whichever finished last: refused.
+fs::path output_key(const fs::path& output) {
+  std::error_code ec;
+  fs::path key = fs::weakly_canonical(fs::absolute(output, ec), ec);
+  return ec ? output.lexically_normal() : key;
+}
+
+// Two inputs writing one file would leave whichever finished last: refused
+// before anything renders.
 void refuse_shared_outputs(const std::vector<BatchEntry>& entries) {
   std::map<fs::path, const BatchEntry*> by_output;
   for (const BatchEntry& e : entries) {
     if (!e.job) continue;
-    std::error_code ec;
-    fs::path key = fs::weakly_canonical(fs::absolute(e.job->output, ec), ec);
-    if (ec) key = e.job->output.lexically_normal();
-    const auto [it, fresh] = by_output.emplace(key, &e);
+    const auto [it, fresh] = by_output.emplace(output_key(e.job->output), &e);
     if (!fresh)
       fail_input("'" + e.label + "' and '" + it->second->label + "' would both write " + e.job->output.string(), {},
                  0, "--output-dir",
                  "inputs of a batch need different stems; rename one, or list them in --jobs with an \"output\" each");
   }
 }
+
+// The outputs written so far, each with the job that wrote it: a later
+// job (a job file's lines are read as they render) writing one fails alone.
+class Outputs {
+ public:
+  void claim(const BatchEntry& e) {
+    const auto [it, fresh] = by_output_.emplace(output_key(e.job->output).string(), e.label);
+    if (!fresh)
+      fail_input("'" + it->second + "' already writes " + e.job->output.string(), {}, 0, {},
+                 "give each line of --jobs its own \"output\"");
+  }
+
+ private:
+  std::unordered_map<std::string, std::string> by_output_;
+};
 
 }  // namespace
 
@@ -89,31 +108,32 @@ int run_batch(const RenderArgs& a) {
   // A missing directory is made with the first file, as -o makes one.
   if (!a.output_dir.empty() && fs::exists(a.output_dir, ec) && !fs::is_directory(a.output_dir, ec))
     fail_input("not a directory", a.output_dir, 0, "--output-dir");
-  const std::vector<BatchEntry> entries = batch_entries(a);
-  if (entries.empty()) fail_input("the batch has no jobs", a.jobs, 0, "--jobs", "one JSON object per line");
-  refuse_shared_outputs(entries);
-  std::vector<fs::path> outputs;
-  for (const BatchEntry& e : entries)
-    if (e.job) outputs.push_back(e.job->output);
-  say_removed_temps(outputs);
+  const std::vector<BatchEntry> inputs = input_entries(a);
+  refuse_shared_outputs(inputs);
+  std::optional<JobFile> jobs;
+  if (!a.jobs.empty()) jobs.emplace(a.jobs, a, [&a](const fs::path& in) { return batch_output(a, in); });
 
-  const int total = static_cast<int>(entries.size());
-  const bool tty = total > 1 && ::isatty(2) == 1;
+  // Only a terminal's bar needs the total before the end: the job file is
+  // counted in a pass that keeps nothing.
+  const bool terminal = ::isatty(2) == 1;
+  const int expected = static_cast<int>(inputs.size()) + (terminal && jobs ? JobFile::count_jobs(a.jobs) : 0);
+  const bool tty = expected > 1 && terminal;
   const bool paths_on_bar = tty && ::isatty(1) == 1;  // one terminal: a path is printed over the bar
-  Progress progress(total, tty, stderr, "images");
+  Progress progress(expected, tty, stderr, "images");
   const auto say = [&](const std::string& line) {
     if (tty) progress.line(line.substr(std::string("marchstudio: ").size()));
     else std::fprintf(stderr, "%s\n", line.c_str());
   };
   RenderSession session;
-  int failed = 0, worst = 0;
-  progress.start();
-  for (int i = 0; i < total; ++i) {
-    const BatchEntry& e = entries[static_cast<std::size_t>(i)];
+  Outputs outputs;
+  int total = 0, failed = 0, worst = 0;
+  const auto render = [&](const BatchEntry& e) {
     const auto t0 = std::chrono::steady_clock::now();
     int code = 0;
     try {
       if (e.error) throw *e.error;
+      outputs.claim(e);
+      say_removed_temps({e.job->output});  // per job: a job file's outputs are known only as it is read
       render_still_job(*e.job, session);
       if (paths_on_bar) std::fprintf(stderr, "\r\x1b[K");  // the bar redraws below the path
       std::printf("%s\n", e.job->output.string().c_str());
@@ -130,9 +150,14 @@ int run_batch(const RenderArgs& a) {
       ++failed;
       worst = std::max(worst, code);
     }
-    progress.rendered(i, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  }
+    progress.rendered(total++, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  };
+  progress.start();
+  for (const BatchEntry& e : inputs) render(e);
+  if (jobs)
+    while (std::optional<BatchEntry> e = jobs->next()) render(*e);
   progress.finish();
+  if (total == 0) fail_input("the batch has no jobs", a.jobs, 0, "--jobs", "one JSON object per line");
   if (a.verbose)
     std::fprintf(stderr, "marchstudio: batch: %d images, %ld programs compiled, %ld from the cache\n", total - failed,
                  session.cache.misses(), session.cache.hits());

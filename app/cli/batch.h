@@ -4,11 +4,12 @@
 // would write (docs/usage.md#batches).
 //
 // Positional inputs go to DIR/<stem>.<format> (DIR: the current directory
-// when not given; format: --format, default png). Two jobs that would write
-// the same file (two inputs with one stem, or two lines with one output)
-// are refused before anything is rendered. Every other failure is one
-// job's: its one-line error, prefixed with the job's name (the input, or
-// FILE:LINE), the other jobs still rendered, and at the end
+// when not given; format: --format, default png). Two inputs that would
+// write the same file (one stem) are refused before anything is rendered.
+// The job file is streamed (cli/job_list.h): each line renders as it is
+// read, and one whose output an earlier job writes fails alone, as every
+// other failure is one job's: its one-line error, prefixed with the job's
+// name (the input, or FILE:LINE), the other jobs still rendered, and at the end
 // "N of M jobs failed" and the worst exit code seen (3 over 2 over 1).
 // On a terminal with more than one job, a progress bar with an ETA.
 //

@@ -1,9 +1,14 @@
 #include "cli/job_list.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
 #include <cmath>
-#include <fstream>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <string_view>
@@ -172,35 +177,101 @@ const std::vector<std::string>& job_keys() {
   return keys;
 }
 
-std::vector<BatchEntry> read_job_list(const fs::path& file, const RenderArgs& defaults,
-                                      const DefaultOutput& default_output) {
+JobFile::JobFile(const fs::path& file, const RenderArgs& defaults, DefaultOutput default_output)
+    : file_(file), defaults_(defaults), default_output_(std::move(default_output)), buf_(std::size_t{1} << 16) {
+  // Non-blocking, so that a FIFO named here is refused rather than waited on.
+  fd_ = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  struct stat st{};
+  if (fd_ >= 0 && ::fstat(fd_, &st) == 0 && S_ISREG(st.st_mode)) return;
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
   std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) fail_input("no such job file (or not a regular file)", file.string(), 0, "--jobs");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) fail_system("cannot read the job file", file.string());
-  std::vector<BatchEntry> entries;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+  if (fs::is_regular_file(file, ec)) fail_system("cannot read the job file", file.string());  // unreadable
+  fail_input("no such job file (or not a regular file)", file.string(), 0, "--jobs");
+}
+
+JobFile::~JobFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+bool JobFile::read_line(bool& too_long) {
+  line_.clear();
+  too_long = false;
+  bool any = false;
+  for (;;) {
+    if (pos_ == end_) {
+      const ssize_t n = ::read(fd_, buf_.data(), buf_.size());
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) fail_system("cannot read the job file", file_.string());
+      if (n == 0) return any;
+      pos_ = 0;
+      end_ = static_cast<std::size_t>(n);
+    }
+    any = true;
+    const char* from = buf_.data() + pos_;
+    const char* nl = static_cast<const char*>(std::memchr(from, '\n', end_ - pos_));
+    const std::size_t take = nl ? static_cast<std::size_t>(nl - from) : end_ - pos_;
+    // Past the limit the rest of the line is read past, never kept.
+    if (!too_long && line_.size() + take > kMaxLineBytes + 1) {
+      too_long = true;
+      std::string().swap(line_);
+    }
+    if (!too_long) line_.append(from, take);
+    pos_ += take;
+    if (nl) {
+      ++pos_;
+      return true;
+    }
+  }
+}
+
+std::optional<BatchEntry> JobFile::next() {
+  for (;;) {
+    bool too_long = false;
+    if (!read_line(too_long)) return std::nullopt;
+    ++number_;
+    if (!line_.empty() && line_.back() == '\r') line_.pop_back();
+    if (!too_long && line_.find_first_not_of(" \t") == std::string::npos) continue;
     BatchEntry e;
-    e.label = file.string() + ":" + std::to_string(number);
+    e.label = file_.string() + ":" + std::to_string(number_);
     try {
-      if (line.size() > kMaxLineBytes) fail_input("the line is over 1 MiB: no job is that long");
-      e.job = job_from_line(line, defaults, file.parent_path(), default_output);
+      if (too_long || line_.size() > kMaxLineBytes) fail_input("the line is over 1 MiB: no job is that long");
+      e.job = job_from_line(line_, defaults_, file_.parent_path(), default_output_);
       e.job->label = e.label;
     } catch (const Error& err) {
       ErrorInfo info = err.info();  // blamed on FILE:LINE unless it names a file of its own
       if (info.file.empty()) {
-        info.file = file.string();
-        info.line = number;
+        info.file = file_.string();
+        info.line = number_;
       }
       e.error.emplace(info);
     }
-    entries.push_back(std::move(e));
+    return e;
   }
-  if (in.bad()) fail_system("cannot read the job file", file.string());
-  return entries;
+}
+
+int JobFile::count_jobs(const fs::path& file) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return 0;
+  std::vector<char> buf(std::size_t{1} << 16);
+  int count = 0;
+  bool blank = true;
+  for (;;) {
+    const ssize_t n = ::read(fd, buf.data(), buf.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    for (ssize_t i = 0; i < n; ++i) {
+      const char c = buf[static_cast<std::size_t>(i)];
+      if (c == '\n') {
+        count += blank ? 0 : 1;
+        blank = true;
+      } else if (c != ' ' && c != '\t' && c != '\r') {
+        blank = false;
+      }
+    }
+  }
+  ::close(fd);
+  return count + (blank ? 0 : 1);
 }
 
 }  // namespace ms

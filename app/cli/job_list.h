@@ -14,8 +14,13 @@
 // positional inputs (cli/batch.h). Blank lines are skipped.
 //
 // A bad line (not JSON, an unknown key, a value of the wrong type or out of
-// range) is not fatal: its entry carries the one-line error, blamed on
-// FILE:LINE and the key, and the batch renders the others.
+// range, over 1 MiB) is not fatal: its entry carries the one-line error,
+// blamed on FILE:LINE and the key, and the batch renders the others.
+//
+// The file is read a line at a time and each job made as it is read, so a
+// batch renders its first job before it reads the second line, and holds
+// one line (at most 1 MiB: a longer one is skipped, not kept) whatever the
+// file's length.
 #pragma once
 #include <filesystem>
 #include <functional>
@@ -40,10 +45,37 @@ struct BatchEntry {
 // The output a job without "output" gets, from its input.
 using DefaultOutput = std::function<std::filesystem::path(const std::filesystem::path& input)>;
 
-// Every non-blank line of `file` as an entry. Throws (bad input, or system
-// when it cannot be read) only when the file itself cannot be read.
-std::vector<BatchEntry> read_job_list(const std::filesystem::path& file, const RenderArgs& defaults,
-                                      const DefaultOutput& default_output);
+class JobFile {
+ public:
+  // Opens `file`: bad_input when it is not a regular file, system when it
+  // cannot be opened.
+  JobFile(const std::filesystem::path& file, const RenderArgs& defaults, DefaultOutput default_output);
+  ~JobFile();
+  JobFile(const JobFile&) = delete;
+  JobFile& operator=(const JobFile&) = delete;
+
+  // The next non-blank line's entry; empty at the end of the file. Throws
+  // system when a read fails.
+  std::optional<BatchEntry> next();
+
+  // The non-blank lines of `file`, counted in a pass that keeps none (for
+  // a progress bar's total); 0 when it cannot be read.
+  static int count_jobs(const std::filesystem::path& file);
+
+ private:
+  // The next line into line_ (at most kMaxLineBytes + 1 bytes of it):
+  // false at the end of the file.
+  bool read_line(bool& too_long);
+
+  std::filesystem::path file_;
+  const RenderArgs& defaults_;
+  DefaultOutput default_output_;
+  int fd_ = -1;
+  int number_ = 0;
+  std::string line_;
+  std::vector<char> buf_;
+  std::size_t pos_ = 0, end_ = 0;
+};
 
 // Where a job's "output" goes: an absolute path as it is; a relative one
 // under `output_dir` (--output-dir) when that is given, else under the job

@@ -4,9 +4,11 @@
 #include <sndfile.h>  // types only: the functions come through dlopen
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "core/error.h"
+#include "core/memory_budget.h"
 #include "io/input_file.h"
 
 namespace ms {
@@ -56,24 +58,30 @@ AudioClip read_audio(const fs::path& file) {
   SF_INFO info{};
   SNDFILE* h = sf.open(file.c_str(), SFM_READ, &info);
   if (!h) fail_input(std::string("cannot decode the audio file: ") + sf.strerror(nullptr), file.string());
+  const std::unique_ptr<SNDFILE, int (*)(SNDFILE*)> closer(h, sf.close);
   AudioClip clip;
   clip.sample_rate = info.samplerate;
   const int ch = info.channels;
-  if (ch <= 0 || info.samplerate <= 0 || info.frames <= 0) {
-    sf.close(h);
-    fail_input("the audio file holds no samples", file.string());
-  }
+  if (ch <= 0 || info.samplerate <= 0 || info.frames <= 0) fail_input("the audio file holds no samples", file.string());
+  // The header's frame count, checked before the samples are allocated (a
+  // FLAC can claim 2^36); a stream that decodes past its claim stops at
+  // the budget too.
+  const auto mono_bytes = [](double frames) { return static_cast<double>(sizeof(float)) * frames; };
+  check_input_memory(mono_bytes(static_cast<double>(info.frames)),
+                     "a clip of " + std::to_string(info.frames) + " frames", file.string(), "a shorter clip");
   std::vector<float> block(static_cast<size_t>(4096) * ch);
   clip.mono.reserve(static_cast<size_t>(info.frames));
   for (;;) {
     const sf_count_t n = sf.readf_float(h, block.data(), 4096);
     if (n <= 0) break;
+    check_input_memory(mono_bytes(static_cast<double>(clip.mono.size() + static_cast<size_t>(n))),
+                       "a clip of more than " + std::to_string(clip.mono.size()) + " frames", file.string(),
+                       "a shorter clip");
     for (sf_count_t i = 0; i < n; ++i) {
       const float v = downmix_to_mono(block.data() + i * ch, ch);
       clip.mono.push_back(std::isfinite(v) ? v : 0.0f);
     }
   }
-  sf.close(h);
   if (clip.mono.empty()) fail_input("the audio file holds no samples", file.string());
   return clip;
 }

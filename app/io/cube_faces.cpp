@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/memory_budget.h"
 #include "io/image_io.h"
 #include "io/input_file.h"
 
@@ -38,6 +39,13 @@ Image to_rgba(const Image& img) {
   return out;
 }
 
+// Six RGBA float faces of `size`, checked before any is made.
+void check_cube_memory(int size, const std::string& file) {
+  check_input_memory(6.0 * 16.0 * size * size, "a cubemap of six " + std::to_string(size) + "x" + std::to_string(size) +
+                                                    " float faces",
+                     file, "scale the image down");
+}
+
 }  // namespace
 
 std::array<fs::path, 6> cube_face_files(const fs::path& first) {
@@ -62,6 +70,7 @@ CubeFaces read_cube_faces(const std::array<fs::path, 6>& files) {
       fail_input(face + " is " + std::to_string(img.width) + "x" + std::to_string(img.height) + ", but face 0 (" +
                      files[0].string() + ") is " + std::to_string(c.size) + "x" + std::to_string(c.size),
                  files[i].string(), 0, {}, "all six faces of a cubemap have one size");
+    if (i == 0) check_cube_memory(img.width, files[0].string());
     c.size = img.width;
     c.faces[i] = to_rgba(img);
   }
@@ -87,13 +96,14 @@ void cube_face_direction(int face, float s, float t, float dir[3]) {
   dir[2] = z / n;
 }
 
-CubeFaces equirect_to_cube(const Image& equirect, int size) {
-  const Image src = to_rgba(equirect);
-  const int w = src.width, h = src.height;
-  if (w < 1 || h < 1) fail_input("an empty equirectangular image");
+CubeFaces equirect_to_cube(const Image& equirect, int size, const std::string& file) {
+  const int w = equirect.width, h = equirect.height;
+  if (w < 1 || h < 1) fail_input("an empty equirectangular image", file);
   CubeFaces c;
   c.eight_bit = false;
   c.size = size > 0 ? size : std::max(1, w / 4);
+  check_cube_memory(c.size, file);  // a 60000x1 strip would be six 15000^2 faces
+  const Image src = to_rgba(equirect);
   const double pi = 3.14159265358979323846;
   const auto texel = [&](int x, int y, int k) {
     x = ((x % w) + w) % w;             // longitude wraps

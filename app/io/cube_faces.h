@@ -10,6 +10,7 @@
 #pragma once
 #include <array>
 #include <filesystem>
+#include <string>
 
 #include "io/image.h"
 
@@ -26,7 +27,8 @@ struct CubeFaces {
 std::array<std::filesystem::path, 6> cube_face_files(const std::filesystem::path& first);
 
 // The six files as faces. Throws bad_input naming the file for one that
-// cannot be read, is not square, or differs in size from face 0.
+// cannot be read, is not square, or differs in size from face 0, and
+// naming face 0 when six of its size are over the memory budget.
 CubeFaces read_cube_faces(const std::array<std::filesystem::path, 6>& files);
 
 // The unit direction through point (s, t) in [0, 1]^2 of `face` (0..5):
@@ -40,7 +42,9 @@ void cube_face_direction(int face, float s, float t, float dir[3]);
 // (-cos(lat) sin(lon), sin(lat), cos(lat) cos(lon)) with lon = 2 pi u and
 // lat = pi (1/2 - v): the middle of the image is -Z, its left edge +Z, a
 // quarter in -X, its top row +Y (the longitude of Shadertoy's own Cube A
-// to equirectangular export, with the picture's top row up).
-CubeFaces equirect_to_cube(const Image& equirect, int size = 0);
+// to equirectangular export, with the picture's top row up). Six faces
+// over the memory budget (core/memory_budget.h) are bad_input naming
+// `file`, before any is made.
+CubeFaces equirect_to_cube(const Image& equirect, int size = 0, const std::string& file = {});
 
 }  // namespace ms

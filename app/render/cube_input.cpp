@@ -73,7 +73,9 @@ std::shared_ptr<const CubeFaces> load_cube_input(const ProjectInput& in, const S
     return std::make_shared<const CubeFaces>(cube_standin(s.missing_media));
   }
   auto& c = cache[first];
-  if (!c) c = std::make_shared<const CubeFaces>(equirect ? equirect_to_cube(read_image(first)) : read_cube_faces(files));
+  if (!c)
+    c = std::make_shared<const CubeFaces>(equirect ? equirect_to_cube(read_image(first), 0, first.string())
+                                                   : read_cube_faces(files));
   return c;
 }
 

@@ -180,6 +180,7 @@ void attach_environment(Scene& scene, PassSource& pass, bool* from_cache) {
   GraphInput& g = pass.inputs[0];
   g.kind = InputKind::texture;
   g.image = std::move(img);
+  g.file = file.string();
   g.eight_bit = false;
   g.uniform = "uEnvMap";
   g.sampler = {TexFilter::linear, TexWrap::repeat, false, false};  // row 0 (up) at v = 0, as sky.glsl reads it

@@ -24,9 +24,22 @@ GLint min_filter(TexFilter f) {
   return f == TexFilter::nearest ? GL_NEAREST : f == TexFilter::linear ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR;
 }
 
+// Past the GL's limit the upload fails with a bare GL_INVALID_VALUE: say
+// which file and what the limit is instead.
+void check_texture_size(const GraphInput& in) {
+  GLint max = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+  const Image& img = *in.image;
+  if (max <= 0 || (img.width <= max && img.height <= max)) return;
+  fail_input("the texture is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
+                 ", larger than this GL's GL_MAX_TEXTURE_SIZE of " + std::to_string(max),
+             in.file, 0, {}, "scale it to at most " + std::to_string(max) + " pixels a side");
+}
+
 // An image as a texture: rows bottom first when vflip (Shadertoy's upright
 // picture, uv (0,0) at its lower left), as stored otherwise.
 GLuint upload(const GraphInput& in) {
+  check_texture_size(in);
   const Image& img = *in.image;
   const int w = img.width, h = img.height, nc = img.nchannels();
   const bool mips = in.sampler.filter == TexFilter::mipmap;

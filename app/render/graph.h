@@ -47,6 +47,7 @@ struct GraphInput {
   InputKind kind = InputKind::none;  // none, buffer, texture, keyboard, cubemap, volume, music, video here
   int buffer = -1;                    // buffer: 0..3 (A..D)
   std::shared_ptr<const Image> image; // texture: decoded (top row first)
+  std::string file;                   // texture: the file it was read from, for errors; empty: made here
   std::shared_ptr<const Volume> volume;  // volume: its voxels
   std::shared_ptr<const CubeFaces> cube; // cubemap: its six faces (null: the Cube A pass, buffer kCubeA)
   std::shared_ptr<const AudioClip> audio;  // music, musicstream: the decoded clip (render/audio_texture.h per frame)

@@ -144,6 +144,7 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
           auto& img = decoded[f];
           if (!img) img = std::make_shared<const Image>(read_image(f));
           g.image = img;
+          g.file = f.string();
           g.eight_bit = !is_hdr(f);
           break;
         }

@@ -1,11 +1,9 @@
 #include "render/tiles.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdio>
 
 #include "core/error.h"
+#include "core/memory_budget.h"
 #include "render/aov.h"
 
 namespace ms {
@@ -43,12 +41,7 @@ FrameMemory frame_memory(int width, int height, int gpu_targets, bool aovs, int 
   return m;
 }
 
-double frame_memory_budget() {
-  double budget = 4.0 * 1024 * 1024 * 1024;
-  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
-  if (pages > 0 && page > 0) budget = std::min(budget, 0.5 * static_cast<double>(pages) * static_cast<double>(page));
-  return budget;
-}
+double frame_memory_budget() { return memory_budget(); }
 
 void check_frame_memory(const FrameMemory& m, int width, int height, const std::string& also) {
   const double budget = frame_memory_budget();
@@ -91,13 +84,6 @@ StillTiling plan_still_tiling(int width, int height, int max_w, int max_h, int g
   t.band_height = even_at_most(std::min({rows, kMaxBandRows, max_h, forced_side > 0 ? forced_side : kMaxBandRows}));
   check_frame_memory(tiled_memory(width, t, gpu_targets, aovs), width, height);
   return t;
-}
-
-std::string format_bytes(double bytes) {
-  char buf[32];
-  if (bytes >= 1024.0 * 1024 * 1024) std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / (1024.0 * 1024 * 1024));
-  else std::snprintf(buf, sizeof buf, "%.0f MiB", bytes / (1024.0 * 1024));
-  return buf;
 }
 
 }  // namespace ms

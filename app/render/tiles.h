@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_budget.h"
+
 namespace ms {
 
 inline constexpr int kTileSize = 512;
@@ -35,8 +37,8 @@ struct FrameMemory {
 };
 FrameMemory frame_memory(int width, int height, int gpu_targets, bool aovs, int host_frames = 1);
 
-// The budget: 4 GiB, or half the machine's physical memory when that is
-// less (a small CI box must refuse, not swap or get OOM-killed).
+// core/memory_budget.h's: 4 GiB, or half the machine's physical memory
+// when that is less (a small CI box must refuse, not swap or get OOM-killed).
 double frame_memory_budget();
 
 // Throws bad_input (key "--size") with the figures when m is over budget:
@@ -75,7 +77,5 @@ StillTiling plan_still_tiling(int width, int height, int max_w, int max_h, int g
 // counted as if one band-wide framebuffer, an upper bound) and its copies.
 FrameMemory tiled_memory(int width, const StillTiling& t, int gpu_targets, bool aovs);
 
-// "1.5 GiB" / "320 MiB".
-std::string format_bytes(double bytes);
 
 }  // namespace ms

@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <unordered_map>
 
 #include "core/error.h"
 
@@ -17,7 +18,11 @@ using json = nlohmann::json;
 
 // The line each value of a JSON text starts on, by its key path
 // ("Shader.renderpass[1].inputs[0].ctype"): nlohmann keeps no positions,
-// and an error should name a line.
+// and an error should name a line. Paths are kept as hashes, each made
+// from its parent's in the time of its own last part, so memory and time
+// are linear in the text even for 40,000 nested arrays (full path
+// strings would be quadratic in depth). A collision could only misplace
+// an error's line number.
 class JsonLines {
  public:
   explicit JsonLines(std::string_view t) {
@@ -25,15 +30,16 @@ class JsonLines {
       bool array = false;
       int index = 0;
       bool want_key = true;
-      std::string key, path;
+      std::string key;
+      PathHash path;
     };
     std::vector<Frame> stack;
     int line = 1;
-    auto path_here = [&]() -> std::string {
+    auto path_here = [&]() -> PathHash {
       if (stack.empty()) return {};
       const Frame& f = stack.back();
-      if (f.array) return f.path + "[" + std::to_string(f.index) + "]";
-      return f.path.empty() ? f.key : f.path + "." + f.key;
+      if (f.array) return f.path.add("[" + std::to_string(f.index) + "]");
+      return (f.path.empty ? f.path : f.path.add(".")).add(f.key);
     };
     for (size_t i = 0; i < t.size(); ++i) {
       const char c = t[i];
@@ -64,8 +70,8 @@ class JsonLines {
         stack.back().want_key = false;
         continue;
       }
-      const std::string here = path_here();
-      lines_.emplace(here, line);
+      const PathHash here = path_here();
+      lines_.emplace(here.h, line);
       if (c == '{' || c == '[') {
         Frame f;
         f.array = c == '[';
@@ -77,12 +83,28 @@ class JsonLines {
     }
   }
   int line(const std::string& path) const {
-    const auto it = lines_.find(path);
+    const auto it = lines_.find(PathHash{}.add(path).h);
     return it == lines_.end() ? 0 : it->second;
   }
 
  private:
-  std::map<std::string, int> lines_;
+  // A polynomial hash of the path's bytes modulo 2^61 - 1, extended a part
+  // at a time; `empty` while no byte is in it.
+  struct PathHash {
+    std::uint64_t h = 0;
+    bool empty = true;
+    PathHash add(std::string_view part) const {
+      constexpr std::uint64_t kMod = (std::uint64_t{1} << 61) - 1, kBase = 1000003;
+      PathHash r = *this;
+      for (const char ch : part) {
+        const unsigned __int128 v = static_cast<unsigned __int128>(r.h) * kBase + static_cast<unsigned char>(ch) + 1;
+        r.h = static_cast<std::uint64_t>(v % kMod);
+        r.empty = false;
+      }
+      return r;
+    }
+  };
+  std::unordered_map<std::uint64_t, int> lines_;
 };
 
 class Loader {

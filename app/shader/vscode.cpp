@@ -20,6 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kDoc = "docs/vscode.md lists what runs";
+constexpr std::size_t kMaxBuffers = 4;  // Shadertoy's Buffer A..D
 
 
 // The directive a (comment-free) line starts with: "iChannel2", "iKeyboard"...;
@@ -228,6 +229,12 @@ struct Loader {
       const bool seen = std::find(visiting.begin(), visiting.end(), c.path) != visiting.end();
       if (seen) continue;  // read once, as the extension does; a cycle reads the other's last frame
       const std::string key = "#iChannel" + std::to_string(n);
+      // The main file and four buffers read: a fifth is refused here,
+      // before it (or any file it names) is read.
+      if (visiting.size() > kMaxBuffers)
+        fail("'" + display_path(c.path) + "' would be a " + std::to_string(kMaxBuffers + 1) +
+                 "th buffer: marchstudio runs at most " + std::to_string(kMaxBuffers),
+             f.where, c.line, key, "Shadertoy's Buffer A..D; merge two buffer files");
       const std::string problem = input_file_problem(c.path);
       if (!problem.empty()) fail(key + ": '" + display_path(c.path) + "' " + problem, f.where, c.line, key, kDoc);
       visit(c.path, read_input_file(c.path, "shader", key), f.where, c.line);

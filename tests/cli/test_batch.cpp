@@ -2,7 +2,7 @@
 // several inputs with --output-dir, and --jobs FILE, render in one process
 // the same files, byte for byte, as one `render` per image; one bad job
 // fails alone (its one-line error, the others written, exit 2 and a count);
-// two jobs writing one file are refused before anything renders; the
+// two inputs writing one file are refused before anything renders; the
 // shared program cache compiles an identical shader once (counted from
 // -v's "programs: N compiled, M from the cache" lines, never timed); a
 // terminal gets a progress bar with an ETA, a log none.
