@@ -10,6 +10,7 @@
 #pragma once
 #include <array>
 #include <filesystem>
+#include <string>
 
 #include "io/image.h"
 
@@ -24,6 +25,11 @@ struct CubeFaces {
 // Shadertoy's naming: face 0 is the file itself, face i (1..5) the same
 // name with "_i" before the extension ("/media/a/<hash>.jpg", "<hash>_1.jpg").
 std::array<std::filesystem::path, 6> cube_face_files(const std::filesystem::path& first);
+
+// The VS Code extension's wildcard: "sky_{}.png" names sky_px.png,
+// sky_nx.png .. sky_nz.png (its first "{}" replaced). Empty paths when
+// `pattern` has none.
+std::array<std::filesystem::path, 6> cube_wildcard_files(const std::string& pattern);
 
 // The six files as faces. Throws bad_input naming the file for one that
 // cannot be read, is not square, or differs in size from face 0.
