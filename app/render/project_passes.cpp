@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <system_error>
 #include <tuple>
 
 #include "core/error.h"
@@ -108,10 +109,14 @@ Volume volume_standin(const ShadertoyMedia& m, MissingMedia kind) {
   return v;
 }
 
-std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const ShadertoySettings& s,
+std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const ShadertoySettings& settings,
                                          const AssembleOptions& opts, const fs::path& scene_file,
                                          std::vector<std::string>& warnings) {
   ShaderProject p = project;
+  ShadertoySettings s = settings;
+  std::error_code ec;
+  if (s.media_dir.empty())  // the scene's folder, as render's loader defaults it (the viewer's too)
+    s.media_dir = fs::absolute(scene_file.empty() ? p.origin : scene_file, ec).parent_path();
   bind_glslviewer_textures(p, s.textures, warnings);  // --texture: glslViewer's u_tex0..
   const std::string origin = display_path(scene_file.empty() ? p.origin : scene_file);
   warnings.insert(warnings.end(), p.warnings.begin(), p.warnings.end());
