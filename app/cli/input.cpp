@@ -150,6 +150,7 @@ void apply_shadertoy_flags(LoadedInput& in, const ShadertoyFlags& f) {
       fail_input("'" + f.media_dir + "' is not a directory", {}, 0, "--media-dir",
                  "the directory that holds Shadertoy's media files by name");
     s.media_dir = f.media_dir;
+    s.media_dir_flag = f.media_dir;  // the user's own choice: media may be read from it
   }
   if (f.missing_media == "error") s.missing_media = MissingMedia::error;
   if (f.missing_media == "noise") s.missing_media = MissingMedia::noise;

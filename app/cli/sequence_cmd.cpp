@@ -394,7 +394,7 @@ int run_sequence(const RenderArgs& a) {
       std::fprintf(stderr, "marchstudio: removed %s, left by an interrupted encode\n", p.string().c_str());
     // The encoding gets one --timeout of its own, as each frame does.
     VideoJob job{ffmpeg, plan.pattern, plan.range.first, plan.fps, a.video, Deadline::after(a.timeout),
-                 [&signals] { return signals.signal(); }};
+                 [&signals] { return signals.signal(); }, plan.range.count()};
     if (!encode_video(job)) return stopped(signals.signal());
     std::printf("%s\n", a.video.c_str());
   }

@@ -56,6 +56,15 @@ std::array<fs::path, 6> cube_face_files(const fs::path& first) {
   return out;
 }
 
+std::array<fs::path, 6> cube_wildcard_files(const std::string& pattern) {
+  static const char* names[] = {"px", "nx", "py", "ny", "pz", "nz"};
+  std::array<fs::path, 6> out;
+  const size_t at = pattern.find("{}");
+  if (at == std::string::npos) return out;
+  for (int i = 0; i < 6; ++i) out[i] = std::string(pattern).replace(at, 2, names[i]);
+  return out;
+}
+
 CubeFaces read_cube_faces(const std::array<fs::path, 6>& files) {
   static const char* names[] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
   CubeFaces c;

@@ -26,6 +26,11 @@ struct CubeFaces {
 // name with "_i" before the extension ("/media/a/<hash>.jpg", "<hash>_1.jpg").
 std::array<std::filesystem::path, 6> cube_face_files(const std::filesystem::path& first);
 
+// The VS Code extension's wildcard: "sky_{}.png" names sky_px.png,
+// sky_nx.png .. sky_nz.png (its first "{}" replaced). Empty paths when
+// `pattern` has none.
+std::array<std::filesystem::path, 6> cube_wildcard_files(const std::string& pattern);
+
 // The six files as faces. Throws bad_input naming the file for one that
 // cannot be read, is not square, or differs in size from face 0, and
 // naming face 0 when six of its size are over the memory budget.

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <algorithm>
 #include <cctype>
 
 #include <cerrno>
@@ -46,6 +47,14 @@ fs::path find_on_path(const std::string& program) {
   return {};
 }
 
+std::string ffmpeg_file_url(const fs::path& p) {
+  std::error_code ec;
+  const fs::path abs = fs::absolute(p, ec);
+  return "file:" + (ec ? p : abs).string();
+}
+
+double encode_seconds(int frames) { return 60.0 + 10.0 * std::max(frames, 0); }
+
 void check_video_path(const fs::path& out) {
   if (out.filename().empty() || out.extension().empty())
     fail_video(Exit::bad_input, "the video file needs a name with an extension", out.string(), "e.g. out.mp4");
@@ -77,9 +86,11 @@ bool encode_video(const VideoJob& job) {
   std::snprintf(fps, sizeof fps, "%.17g", job.fps);
   // yuv420p: what players accept; it needs even sizes, hence the pad.
   std::vector<std::string> args = {job.ffmpeg.string(), "-hide_banner", "-loglevel", "error", "-nostdin", "-y",
-                                   "-framerate", fps, "-start_number", std::to_string(job.first_frame),
-                                   "-i", job.pattern, "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2",
-                                   "-pix_fmt", "yuv420p", tmp.string()};
+                                   "-protocol_whitelist", "file", "-framerate", fps, "-start_number",
+                                   std::to_string(job.first_frame), "-i", ffmpeg_file_url(job.pattern),
+                                   "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p",
+                                   "-protocol_whitelist", "file", ffmpeg_file_url(tmp)};
+  const Deadline own = Deadline::after(encode_seconds(job.frames));
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -101,11 +112,15 @@ bool encode_video(const VideoJob& job) {
     if (r == pid) break;
     if (r < 0 && errno != EINTR) fail_video(Exit::system, "lost track of ffmpeg", job.ffmpeg.string());
     const bool stop = job.stop_signal && job.stop_signal() != 0;
-    if (stop || job.deadline.expired()) {
+    if (stop || job.deadline.expired() || own.expired()) {
       end_child(pid);
       if (!through) fs::remove(tmp, ec);
       if (stop) return false;
       job.deadline.check("encoding the video");
+      char bound[32];
+      std::snprintf(bound, sizeof bound, "%.0f", own.seconds());
+      fail_video(Exit::system, std::string("ffmpeg did not finish encoding within ") + bound + " s", job.output.string(),
+                 "60 s and 10 s a frame; the frames are kept");
     }
     ::usleep(10000);
   }

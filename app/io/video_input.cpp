@@ -61,13 +61,31 @@ pid_t spawn(std::vector<std::string> args, bool capture_stderr, int& fd, const s
   return pid;
 }
 
-// The whole output of a short child, and its exit status.
-std::string run_capture(const std::vector<std::string>& args, int& status, const std::string& file) {
+[[noreturn]] void fail_video(const fs::path& file, const std::string& why) {
+  fail_input("cannot decode the video file: " + why, file.string(), 0, {},
+             "marchstudio reads video inputs through ffmpeg; this file is not one it can decode");
+}
+
+// The whole output of a short child (a probe), and its exit status. It has
+// kVideoProbeSeconds, whatever --timeout says: a file that makes it wait (a
+// concat script naming a FIFO) is ended and refused, not waited for.
+std::string run_capture(const std::vector<std::string>& args, int& status, const fs::path& file) {
   int fd = -1;
-  const pid_t pid = spawn(args, true, fd, file);
+  const pid_t pid = spawn(args, true, fd, file.string());
+  const Deadline bound = Deadline::after(kVideoProbeSeconds);
   std::string out;
   char buf[4096];
   for (;;) {
+    pollfd p{fd, POLLIN, 0};
+    const int r = ::poll(&p, 1, 100);
+    if (bound.expired()) {
+      ::close(fd);
+      end_child(pid);
+      fail_video(file, fs::path(args[0]).filename().string() + " did not finish probing it within " +
+                           std::to_string(static_cast<int>(kVideoProbeSeconds)) + " s");
+    }
+    if (r < 0 && errno != EINTR) break;
+    if (r <= 0) continue;
     const ssize_t n = ::read(fd, buf, sizeof buf);
     if (n > 0) out.append(buf, static_cast<size_t>(n));
     else if (n == 0 || errno != EINTR) break;
@@ -78,18 +96,13 @@ std::string run_capture(const std::vector<std::string>& args, int& status, const
   return out;
 }
 
-[[noreturn]] void fail_video(const fs::path& file, const std::string& why) {
-  fail_input("cannot decode the video file: " + why, file.string(), 0, {},
-             "marchstudio reads video inputs through ffmpeg; this file is not one it can decode");
-}
-
-// ffmpeg's reason, one line: its last line, without the file's name.
+// ffmpeg's reason, one line: its last line, without the file's URL.
 std::string last_line(const std::string& out, const fs::path& file) {
   std::istringstream in(out);
   std::string line, last;
   while (std::getline(in, line))
     if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-  const std::string prefix = file.string() + ": ";
+  const std::string prefix = ffmpeg_file_url(file) + ": ";
   if (last.compare(0, prefix.size(), prefix) == 0) last = last.substr(prefix.size());
   return last.empty() ? "ffmpeg found no video in it" : last;
 }
@@ -105,9 +118,10 @@ double rate(const std::string& s) {  // "30000/1001", "25", "0/0"
 VideoInfo probe_with_ffprobe(const fs::path& ffprobe, const fs::path& file) {
   int status = 0;
   const std::string out = run_capture(
-      {ffprobe.string(), "-v", "error", "-select_streams", "v:0", "-show_entries",
-       "stream=width,height,avg_frame_rate,r_frame_rate,duration:format=duration", "-of", "flat", file.string()},
-      status, file.string());
+      {ffprobe.string(), "-v", "error", "-protocol_whitelist", "file", "-select_streams", "v:0", "-show_entries",
+       "stream=width,height,avg_frame_rate,r_frame_rate,duration:format=duration", "-of", "flat", "-i",
+       ffmpeg_file_url(file)},
+      status, file);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail_video(file, last_line(out, file));
   VideoInfo v;
   double stream_duration = 0.0, format_duration = 0.0, avg = 0.0, r = 0.0;
@@ -136,7 +150,9 @@ VideoInfo probe_with_ffprobe(const fs::path& ffprobe, const fs::path& file) {
 VideoInfo probe_with_ffmpeg(const fs::path& ffmpeg, const fs::path& file) {
   int status = 0;
   const std::string out =
-      run_capture({ffmpeg.string(), "-hide_banner", "-nostdin", "-i", file.string()}, status, file.string());
+      run_capture({ffmpeg.string(), "-hide_banner", "-nostdin", "-protocol_whitelist", "file", "-i",
+                   ffmpeg_file_url(file)},
+                  status, file);
   VideoInfo v;
   std::smatch m;
   static const std::regex duration(R"(Duration: (\d+):(\d+):(\d+(?:\.\d+)?))");
@@ -186,14 +202,14 @@ void VideoStream::stop() {
 void VideoStream::start(long n) {
   stop();
   std::vector<std::string> args = {ffmpeg_.string(), "-hide_banner", "-loglevel", "error", "-nostdin",
-                                   "-noautorotate"};
+                                   "-noautorotate", "-protocol_whitelist", "file"};
   if (n > 0) {  // accurate seek: decoding starts at the keyframe before, frames before this time are dropped
     char at[64];
     std::snprintf(at, sizeof at, "%.9f", (static_cast<double>(n) - 0.5) / info_.fps);
     args.insert(args.end(), {"-ss", at});
   }
-  args.insert(args.end(), {"-i", file_.string(), "-map", "0:v:0", "-an", "-sn", "-dn", "-vsync", "passthrough",
-                           "-f", "rawvideo", "-pix_fmt", "rgba", "-"});
+  args.insert(args.end(), {"-i", ffmpeg_file_url(file_), "-map", "0:v:0", "-an", "-sn", "-dn", "-vsync",
+                           "passthrough", "-f", "rawvideo", "-pix_fmt", "rgba", "-"});
   pid_ = spawn(std::move(args), false, fd_, file_.string());
   next_ = n;
 }
@@ -202,6 +218,7 @@ bool VideoStream::read_next(const Deadline* deadline) {
   const size_t size = static_cast<size_t>(info_.width) * info_.height * 4;
   next_pixels_.resize(size);
   size_t got = 0;
+  Deadline stall = Deadline::after(kVideoStallSeconds);  // renewed by every byte that comes
   while (got < size) {
     pollfd p{fd_, POLLIN, 0};
     const int r = ::poll(&p, 1, 100);
@@ -210,11 +227,16 @@ bool VideoStream::read_next(const Deadline* deadline) {
       stop();
       deadline->check("decoding the video " + file_.string());
     }
+    if (stall.expired()) {
+      stop();
+      fail_video(file_, "ffmpeg gave no frame data for " + std::to_string(static_cast<int>(kVideoStallSeconds)) + " s");
+    }
     if (r <= 0) continue;
     const ssize_t k = ::read(fd_, next_pixels_.data() + got, size - got);
     if (k < 0 && errno == EINTR) continue;
     if (k <= 0) return false;
     got += static_cast<size_t>(k);
+    stall = Deadline::after(kVideoStallSeconds);
   }
   return true;
 }

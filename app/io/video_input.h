@@ -65,6 +65,14 @@ class VideoStream {
   std::vector<std::uint8_t> pixels_, next_pixels_;
 };
 
+// Bounds of their own on each ffmpeg child, whatever --timeout says, so a
+// file that makes one wait (a concat script naming a FIFO) is refused, not
+// waited for: a probe (ffprobe, or ffmpeg -i) has kVideoProbeSeconds; a
+// decoder that sends no byte for kVideoStallSeconds is ended. Either is
+// one line naming the file, exit 2.
+inline constexpr double kVideoProbeSeconds = 10.0;
+inline constexpr double kVideoStallSeconds = 30.0;
+
 // ffmpeg from PATH, probed: the stream for `file`. ffmpeg not on PATH, a
 // file it cannot decode or one with no video: bad_input, one line. `where`
 // names the channel in the error ("Image iChannel0").

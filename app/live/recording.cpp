@@ -75,6 +75,7 @@ std::string Recorder::stop(LiveLog& log) {
     job.first_frame = first_;
     job.fps = fps_;
     job.output = o_.video;
+    job.frames = n;
     encode_video(job);
     log.line("record video " + o_.video.string());
     return msg + " and " + o_.video.string();

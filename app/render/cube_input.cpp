@@ -38,7 +38,8 @@ CubeFaces cube_standin(MissingMedia kind) {
 }
 
 std::shared_ptr<const CubeFaces> load_cube_input(const ProjectInput& in, const ShadertoySettings& s,
-                                                 const std::string& where, const std::string& origin,
+                                                 const std::vector<fs::path>& roots, const std::string& where,
+                                                 const std::string& origin,
                                                  std::vector<std::string>& warnings,
                                                  std::map<fs::path, std::shared_ptr<const CubeFaces>>& cache) {
   // Face 0: the scene's path, else the src's file name in the media directory.
@@ -47,11 +48,15 @@ std::shared_ptr<const CubeFaces> load_cube_input(const ProjectInput& in, const S
     first = s.media_dir / fs::path(in.src).filename();
   // The VS Code extension's "sky_{}.png": the faces sky_px.png .. sky_nz.png.
   std::array<fs::path, 6> files = cube_face_files(first);
-  if (const size_t at = in.src.find("{}"); at != std::string::npos) {  // a path the loader resolved
-    static const char* names[] = {"px", "nx", "py", "ny", "pz", "nz"};
-    for (int i = 0; i < 6; ++i) files[i] = std::string(in.src).replace(at, 2, names[i]);
+  if (in.src.find("{}") != std::string::npos) {  // a path the loader resolved
+    files = cube_wildcard_files(in.src);
     first = files[0];
   }
+  // Every candidate is judged before any is looked at: a face is a file read like any other medium.
+  if (!first.empty())
+    for (int i = 0; i < 6; ++i)
+      confine_media(files[i], roots, where + ": cubemap '" + in.src + "' face '" + files[i].filename().string() + "'",
+                    origin, where);
   // One file of EXR or HDR with no "_1" beside it: an equirectangular image.
   const bool wildcard = in.src.find("{}") != std::string::npos;
   const bool equirect = !wildcard && !first.empty() && is_hdr(first) && input_file_problem(first).empty() &&

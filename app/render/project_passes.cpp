@@ -1,7 +1,9 @@
 #include "render/project_passes.h"
 
+#include <algorithm>
 #include <map>
 #include <memory>
+#include <system_error>
 #include <tuple>
 
 #include "core/error.h"
@@ -10,6 +12,7 @@
 #include "io/input_file.h"
 #include "io/video_input.h"
 #include "render/cube_input.h"
+#include "shader/confine.h"
 #include "shader/glslviewer.h"
 #include "shader/shadertoy.h"
 #include "shader/shadertoy_media.h"
@@ -19,13 +22,28 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The file for a texture: a path a scene file gave (already resolved), or
-// the src's file name in the media directory.
-fs::path find_media(const ProjectInput& in, const ShadertoySettings& s) {
-  if (!in.file.empty()) return in.file;
-  const fs::path name = fs::path(in.src).filename();
-  if (name.empty() || s.media_dir.empty()) return {};
-  const fs::path f = s.media_dir / name;
+// Where media may come from, and how errors name the input.
+struct MediaPlace {
+  const ShadertoySettings& s;
+  std::vector<fs::path> roots;  // shader/confine.h's media_roots
+  std::string origin;           // the file errors name
+};
+
+// The file for a medium: a path the project gave (already resolved), or
+// the src's file name in the media directory; empty when it is not there.
+// Either must lie inside the media roots (a --texture file, named on the
+// command line, is the user's own): a symlink to elsewhere is refused
+// whether or not its target exists. `what`: "texture '<src>'".
+fs::path find_media(const ProjectInput& in, const MediaPlace& m, const std::string& where, const std::string& what) {
+  fs::path f = in.file;
+  if (f.empty()) {
+    const fs::path name = fs::path(in.src).filename();
+    if (name.empty() || m.s.media_dir.empty()) return {};
+    f = m.s.media_dir / name;
+  }
+  const bool named_by_user = std::any_of(m.s.textures.begin(), m.s.textures.end(),
+                                         [&](const NamedTexture& t) { return t.file == in.file && !in.file.empty(); });
+  if (!named_by_user) confine_media(f, m.roots, where + ": " + what, m.origin, where);
   return input_file_problem(f).empty() ? f : fs::path{};
 }
 
@@ -91,10 +109,14 @@ Volume volume_standin(const ShadertoyMedia& m, MissingMedia kind) {
   return v;
 }
 
-std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const ShadertoySettings& s,
+std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const ShadertoySettings& settings,
                                          const AssembleOptions& opts, const fs::path& scene_file,
                                          std::vector<std::string>& warnings) {
   ShaderProject p = project;
+  ShadertoySettings s = settings;
+  std::error_code ec;
+  if (s.media_dir.empty())  // the scene's folder, as render's loader defaults it (the viewer's too)
+    s.media_dir = fs::absolute(scene_file.empty() ? p.origin : scene_file, ec).parent_path();
   bind_glslviewer_textures(p, s.textures, warnings);  // --texture: glslViewer's u_tex0..
   const std::string origin = display_path(scene_file.empty() ? p.origin : scene_file);
   warnings.insert(warnings.end(), p.warnings.begin(), p.warnings.end());
@@ -103,6 +125,8 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
   std::map<fs::path, std::shared_ptr<const AudioClip>> clips;  // a file used twice is decoded once
   std::map<std::tuple<fs::path, bool, bool>, std::shared_ptr<VideoStream>> videos;  // one decoder per file, vflip, sRGB
   std::map<fs::path, std::shared_ptr<const CubeFaces>> cubes;  // a cubemap used twice is read once
+  const fs::path scene = scene_file.empty() ? p.origin : scene_file;
+  const MediaPlace media{s, media_roots(scene, s.media_dir_flag, opts.allow_include), origin};
   std::vector<PassSource> out;
   for (size_t i = 0; i < p.passes.size(); ++i) {
     const ProjectPass& pass = p.passes[i];
@@ -124,12 +148,12 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
         case InputKind::keyboard:
           break;
         case InputKind::cubemap:  // Cube A, six face files or one equirectangular image (render/cube_input.h)
-          if (in.buffer != kCubeA) g.cube = load_cube_input(in, s, where, origin, warnings, cubes);
+          if (in.buffer != kCubeA) g.cube = load_cube_input(in, s, media.roots, where, origin, warnings, cubes);
           break;
         case InputKind::texture: {
           const ShadertoyMedia* known = find_shadertoy_media(in.src);
           g.single_channel = known && known->single_channel;
-          const fs::path f = find_media(in, s);
+          const fs::path f = find_media(in, media, where, "texture '" + in.src + "'");
           if (f.empty()) {
             if (s.missing_media == MissingMedia::error)
               fail_input(where + ": texture '" + in.src + "' is not in the media directory", origin, 0, where,
@@ -168,7 +192,7 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
         case InputKind::music:
         case InputKind::musicstream: {
           // Found like a texture; missing: an error, or silence with a warning.
-          const fs::path f = find_media(in, s);
+          const fs::path f = find_media(in, media, where, "audio '" + in.src + "'");
           if (f.empty()) {
             if (s.missing_media == MissingMedia::error)
               fail_input(where + ": audio '" + in.src + "' is not in the media directory", origin, 0, where,
@@ -185,7 +209,7 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
         }
         case InputKind::video: {
           // Found like a texture; missing: an error, or the texture's stand-in with a warning.
-          const fs::path f = find_media(in, s);
+          const fs::path f = find_media(in, media, where, "video '" + in.src + "'");
           if (f.empty()) {
             if (s.missing_media == MissingMedia::error)
               fail_input(where + ": video '" + in.src + "' is not in the media directory", origin, 0, where,

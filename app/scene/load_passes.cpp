@@ -27,6 +27,11 @@ fs::path relative_to(const fs::path& scene_file, const std::string& p) {
   return (scene_file.parent_path() / fs::path(p)).lexically_normal();
 }
 
+// Shadertoy's own media name ("/media/a/<hash>.png"): not a path here, but
+// a file name looked up in the media directory when the passes are built
+// (render/project_passes.h), as a JSON's src is.
+bool shadertoy_media_name(const std::string& src) { return src.rfind("/media/a/", 0) == 0; }
+
 // A file a key names: relative to the scene, a readable regular file.
 fs::path existing_file(const Reader& r, const toml::table& t, std::string_view path, std::string_view key,
                        const fs::path& scene_file) {
@@ -58,9 +63,12 @@ ProjectInput read_channel(const Reader& r, const toml::table& ch, const std::str
     r.read(ch, path, "texture", in.src);
     in.sampler = Sampler{TexFilter::mipmap, TexWrap::repeat, true, false};  // Shadertoy's texture defaults
     const fs::path f = relative_to(scene_file, in.src);
-    const std::string why = input_file_problem(f);
-    if (why.empty()) in.file = f;
-    else if (settings.missing_media == MissingMedia::error || why != "not found")
+    const std::string why = shadertoy_media_name(in.src) ? "" : input_file_problem(f);
+    if (shadertoy_media_name(in.src)) {
+      // found by name when the passes are built
+    } else if (why.empty()) {
+      in.file = f;
+    } else if (settings.missing_media == MissingMedia::error || why != "not found")
       r.fail(Reader::line_of(ch, "texture"), join_key(path, "texture"), "texture " + quote(f.string()) + " " + why,
              why == "not found" ? "relative to the scene file; --missing-media noise|black stands in for it" : "");
     ++kinds;
@@ -69,7 +77,9 @@ ProjectInput read_channel(const Reader& r, const toml::table& ch, const std::str
     in.kind = InputKind::cubemap;
     r.read(ch, path, "cubemap", in.src);
     if (in.src == "A") in.buffer = kCubeA;
-    else if (const fs::path f = relative_to(scene_file, in.src); input_file_problem(f).empty()) in.file = f;
+    else if (shadertoy_media_name(in.src)) {
+      // found by name when the passes are built
+    } else if (const fs::path f = relative_to(scene_file, in.src); input_file_problem(f).empty()) in.file = f;
     else if (settings.missing_media == MissingMedia::error || input_file_problem(f) != "not found")
       r.fail(Reader::line_of(ch, "cubemap"), join_key(path, "cubemap"),
              "cubemap " + quote(f.string()) + " " + input_file_problem(f),

@@ -161,6 +161,11 @@ ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts, con
     fail_input("a scene needs at least one material", display_path(scene.file), 0, "materials");
   const PreprocessOptions popts = scene_options(scene, opts);
   const std::string map_path = map_include_path(scene, popts.roots);
+  // [sky] environment is read later (render/environment.h): a medium, confined as one.
+  if (!scene.sky.environment.empty())
+    confine_media(scene.sky.environment, media_roots(scene.file, {}, opts.allow_include),
+                  "environment '" + scene.sky.environment.generic_string() + "'", display_path(scene.file),
+                  "sky.environment");
   // Generic: the scene's own quality, nothing else. Otherwise only the
   // features the scene uses, and folded values (docs/specialization.md).
   const Specialized sp =

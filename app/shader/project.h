@@ -99,6 +99,7 @@ struct NamedTexture {
 // Shadertoy settings of a scene file's [shadertoy] table or the flags.
 struct ShadertoySettings {
   std::filesystem::path media_dir;        // where "/media/a/<hash>.png" is looked up by file name
+  std::filesystem::path media_dir_flag;   // --media-dir: also a directory media may be read from (shader/confine.h)
   MissingMedia missing_media = MissingMedia::error;
   float mouse[4] = {0, 0, 0, 0};          // iMouse, Shadertoy's semantics
   double fps = 60.0;                      // a still of a stateful shader runs round(time * fps) + 1 frames

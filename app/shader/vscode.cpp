@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "shader/directive.h"
+#include "io/cube_faces.h"
 #include "io/input_file.h"
 #include "shader/confine.h"
 #include "shader/glsl_scan.h"
@@ -109,9 +110,19 @@ struct Loader {
     if (p.is_relative()) p = f.path.parent_path() / p;
     std::error_code ec;
     p = fs::absolute(p, ec).lexically_normal();
-    if (!within_roots(p, roots))
-      fail("'" + display_path(p) + "' is outside the directories includes may read", f.where, line, key,
-           "allowed: " + describe_roots(roots) + "; widen with --allow-include DIR");
+    // "sky_{}.png" is not a file: the six it names are, each judged where it leads.
+    std::vector<fs::path> named = {p};
+    for (const fs::path& face : cube_wildcard_files(p.string()))
+      if (!face.empty()) named.push_back(face);
+    for (const fs::path& one : named) {
+      if (within_roots(one, roots)) continue;
+      // A symlink is named as written, then where it leads.
+      const std::string as_named = (fs::path(display_path(one.parent_path())) / one.filename()).generic_string();
+      const std::string leads = display_path(one);
+      fail("'" + as_named + "'" + (leads == as_named ? "" : " (" + leads + ")") +
+               " is outside the directories includes may read",
+           f.where, line, key, "allowed: " + describe_roots(roots) + "; widen with --allow-include DIR");
+    }
     return p;
   }
 

@@ -86,7 +86,8 @@ TEST(FullDisk, ASequenceReportsOnlyTheFramesItWrote) {
 // and its pid, then sleeps.
 fs::path hanging_ffmpeg(const TempDir& dir) {
   const fs::path bin = dir / "bin";
-  write_file(bin / "ffmpeg", "#!/bin/sh\nfor last; do :; done\necho partial > \"$last\"\necho $$ > \"" +
+  // Paths come as file: URLs (io/video.h): the output is the last argument without "file:".
+  write_file(bin / "ffmpeg", "#!/bin/sh\nfor last; do :; done\necho partial > \"${last#file:}\"\necho $$ > \"" +
                                  (dir / "ffmpeg.pid").string() + "\"\nexec sleep 300\n");
   fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
   return bin;
