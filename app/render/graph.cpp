@@ -118,12 +118,12 @@ PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
     }
   for (const PassSource& p : passes_)
     for (const GraphInput& in : p.inputs)
-      if (in.kind == InputKind::texture && in.image && !g.textures.count(in.image.get()))
-        g.textures[in.image.get()] = upload(in);
-      else if (in.kind == InputKind::cubemap && in.cube && !g.cubes.count(in.cube.get()))
-        g.cubes[in.cube.get()] = upload_cube(*in.cube, in.sampler);
-      else if (in.kind == InputKind::volume && in.volume && !g.volumes.count(in.volume.get()))
-        g.volumes[in.volume.get()] = upload(*in.volume, in.sampler);
+      if (in.kind == InputKind::texture && in.image && !g.textures.count(upload_key(in)))
+        g.textures[upload_key(in)] = upload(in);
+      else if (in.kind == InputKind::cubemap && in.cube && !g.cubes.count(upload_key(in)))
+        g.cubes[upload_key(in)] = upload_cube(*in.cube, in.sampler);
+      else if (in.kind == InputKind::volume && in.volume && !g.volumes.count(upload_key(in)))
+        g.volumes[upload_key(in)] = upload(*in.volume, in.sampler);
       else if (in.audio && !g.audio.count(in.audio.get())) {
         GLuint tex = 0;
         glGenTextures(1, &tex);
@@ -142,9 +142,9 @@ PassGraph::~PassGraph() {
     glDeleteFramebuffers(2, b.fbo);
     glDeleteTextures(2, b.tex);
   }
-  for (auto& [img, tex] : g.textures) glDeleteTextures(1, &tex);
-  for (auto& [vol, tex] : g.volumes) glDeleteTextures(1, &tex);
-  for (auto& [cube, tex] : g.cubes) glDeleteTextures(1, &tex);
+  for (auto& [key, tex] : g.textures) glDeleteTextures(1, &tex);
+  for (auto& [key, tex] : g.volumes) glDeleteTextures(1, &tex);
+  for (auto& [key, tex] : g.cubes) glDeleteTextures(1, &tex);
   for (auto& [clip, tex] : g.audio) glDeleteTextures(1, &tex);
   for (auto& [key, s] : g.samplers) glDeleteSamplers(1, &s);
   glDeleteTextures(1, &g.black);
@@ -177,7 +177,7 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
         rh = static_cast<float>(h);
         break;
       case InputKind::texture:
-        tex = g.textures.at(in.image.get());
+        tex = g.textures.at(upload_key(in));
         rw = static_cast<float>(in.image->width);
         rh = static_cast<float>(in.image->height);
         break;
@@ -187,11 +187,11 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
         rh = 3;
         break;
       case InputKind::cubemap:
-        tex = in.cube ? g.cubes.at(in.cube.get()) : g.cube_a->texture();  // Cube A as it stands now
+        tex = in.cube ? g.cubes.at(upload_key(in)) : g.cube_a->texture();  // Cube A as it stands now
         rw = rh = static_cast<float>(in.cube ? in.cube->size : g.cube_a->size());
         break;
       case InputKind::volume:
-        tex = g.volumes.at(in.volume.get());
+        tex = g.volumes.at(upload_key(in));
         rw = rh = rd = static_cast<float>(in.volume->size);
         break;
       case InputKind::music:

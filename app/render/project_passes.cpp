@@ -142,7 +142,7 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
             break;
           }
           auto& img = decoded[f];
-          if (!img) img = std::make_shared<const Image>(read_image(f));
+          if (!img) img = std::make_shared<const Image>(read_image(f, AlphaMode::straight));
           g.image = img;
           g.eight_bit = !is_hdr(f);
           break;

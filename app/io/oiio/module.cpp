@@ -19,8 +19,8 @@ class OiioBackend final : public ImageBackend {
   ImageInfo read_info(const std::string& bytes, const std::filesystem::path& name) const override {
     return oiio::read_info(bytes, name);
   }
-  Image read(const std::string& bytes, const std::filesystem::path& name) const override {
-    return oiio::read(bytes, name);
+  Image read(const std::string& bytes, const std::filesystem::path& name, bool straight_alpha) const override {
+    return oiio::read(bytes, name, straight_alpha);
   }
   std::string decode_problem(const std::string& bytes, const std::filesystem::path& name) const override {
     return oiio::decode_problem(bytes, name);

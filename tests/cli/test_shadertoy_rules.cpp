@@ -1,0 +1,81 @@
+// Shadertoy's own rules for what a shader reads, through the real binary:
+// a texture's texels are its file's bytes (straight alpha, one upload per
+// input's settings).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "io/image_io.h"
+#include "run.h"
+#include "shadertoy_json.h"
+#include "test_texture.h"
+
+namespace ms::test {
+namespace {
+namespace fs = std::filesystem;
+
+// A 2x1 RGBA PNG, no gamma or sRGB chunk: (200, 100, 50, 128), (30, 60, 250, 0).
+void write_half_alpha_png(const fs::path& p) {
+  static const char bytes[] =
+      "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x00\x02\x00\x00\x00\x01\x08\x06\x00"
+      "\x00\x00\xf4\x22\x7f\x8a\x00\x00\x00\x11\x49\x44\x41\x54\x78\x9c\x63\x38\x91\x62\xd4\x20\x67\xf3\x8b\x01\x00"
+      "\x0f\xd1\x03\x33\x90\x13\xf5\x5f\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42\x60\x82";
+  write_file(p, std::string(bytes, sizeof bytes - 1));
+}
+
+std::string texture_input(int channel, const std::string& src, bool vflip, bool srgb = false) {
+  return "{\"id\": " + std::to_string(10 + channel) + ", \"ctype\": \"texture\", \"channel\": " +
+         std::to_string(channel) + ", \"src\": \"" + src + "\", \"sampler\": {\"filter\": \"nearest\", \"wrap\": " +
+         "\"clamp\", \"vflip\": \"" + (vflip ? "true" : "false") + "\", \"srgb\": \"" + (srgb ? "true" : "false") +
+         "\"}}";
+}
+
+// Renders `args` in `dir` to o.exr and reads it; a failed render fails the test.
+Image render_exr(const TempDir& dir, std::vector<std::string> args) {
+  args.insert(args.begin(), "render");
+  args.insert(args.end(), {"-o", "o.exr"});
+  const RunResult r = run_marchstudio(args, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return r.exit_code == 0 ? read_image(dir / "o.exr") : Image{};
+}
+
+TEST(ShadertoyRules, TextureTexelsAreTheFilesBytesWithStraightAlpha) {
+  TempDir dir;
+  write_half_alpha_png(dir / "a.png");
+  // Row 0: the texel's RGB; row 1: its alpha.
+  const std::string code =
+      "void mainImage(out vec4 o, in vec2 f) { vec4 t = texelFetch(iChannel0, ivec2(int(f.x), 0), 0);"
+      " o = vec4(f.y < 1.0 ? t.rgb : vec3(t.a), 1.0); }";
+  write_file(dir / "a.json", shader({pass("Image", "image", 0, code, texture_input(0, "/media/a/a.png", false))}));
+  const Image img = render_exr(dir, {"a.json", "--media-dir", ".", "--size", "2x2"});
+  ASSERT_EQ(img.width, 2);
+  const float want[2][4] = {{200, 100, 50, 128}, {30, 60, 250, 0}};
+  for (int x = 0; x < 2; ++x) {
+    for (int c = 0; c < 3; ++c)  // the image's bottom row is fragCoord.y 0.5
+      EXPECT_NEAR(img.at(x, 1, c) * 255.0f, want[x][c], 0.01f) << "x " << x << " channel " << c;
+    EXPECT_NEAR(img.at(x, 0, 0) * 255.0f, want[x][3], 0.01f) << "alpha of x " << x;
+  }
+}
+
+TEST(ShadertoyRules, OneFileBoundTwiceGetsEachInputsOwnSampler) {
+  TempDir dir;
+  write_texture(dir / "t.png");  // red of texel (0, y): 160 y / 255, y 0 the file's top row
+  // iChannel0 and iChannel1: vflip on and off; iChannel2: sRGB.
+  const std::string code =
+      "void mainImage(out vec4 o, in vec2 f) { o = vec4(texelFetch(iChannel0, ivec2(0), 0).r,"
+      " texelFetch(iChannel1, ivec2(0), 0).r, texelFetch(iChannel2, ivec2(0, 1), 0).r, 1.0); }";
+  const std::string inputs = texture_input(0, "/media/a/t.png", true) + ", " +
+                             texture_input(1, "/media/a/t.png", false) + ", " +
+                             texture_input(2, "/media/a/t.png", false, true);
+  write_file(dir / "v.json", shader({pass("Image", "image", 0, code, inputs)}));
+  const Image img = render_exr(dir, {"v.json", "--media-dir", ".", "--size", "1x1"});
+  ASSERT_EQ(img.width, 1);
+  EXPECT_NEAR(img.at(0, 0, 0), 160.0f / 255.0f, 1e-4f);  // vflip: texel row 0 is the file's bottom row
+  EXPECT_NEAR(img.at(0, 0, 1), 0.0f, 1e-4f);             // as stored: the top row
+  const float srgb = std::pow((160.0f / 255.0f + 0.055f) / 1.055f, 2.4f);
+  EXPECT_NEAR(img.at(0, 0, 2), srgb, 2e-3f);  // decoded from sRGB
+}
+
+}  // namespace
+}  // namespace ms::test
