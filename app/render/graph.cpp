@@ -196,6 +196,7 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
         break;
       case InputKind::music:
       case InputKind::musicstream:
+        if (!in.audio) break;  // missing (--missing-media): not loaded, so nothing bound, as on Shadertoy
         tex = g.audio.at(in.audio.get());
         rw = kAudioTexWidth;
         rh = 2;
@@ -211,25 +212,32 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
     glActiveTexture(GL_TEXTURE0 + c);
     glBindTexture(gl_target(channel_type(in.kind)), tex);
     int filter = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.filter);
-    if (in.audio && in.sampler.filter == TexFilter::mipmap) filter = 1;  // no mip chain: Shadertoy offers none for audio
+    const bool audio = in.kind == InputKind::music || in.kind == InputKind::musicstream;
+    if (audio && in.sampler.filter == TexFilter::mipmap) filter = 1;  // no mip chain: Shadertoy offers none for audio
     const int wrap = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.wrap);
     glBindSampler(c, in.kind == InputKind::none ? 0 : g.samplers.at(filter * 3 + wrap));
     res[c][0] = rw;
     res[c][1] = rh;
-    res[c][2] = in.kind == InputKind::none ? 0.0f : rd;
+    res[c][2] = in.kind == InputKind::none || (audio && !in.audio) ? 0.0f : rd;
   }
   glActiveTexture(GL_TEXTURE0);
 }
 
 namespace {
 
-ShadertoyInputs shadertoy_inputs(const FrameInputs& in, float res[4][3]) {
+ShadertoyInputs shadertoy_inputs(const FrameInputs& in, float res[4][3], const std::array<GraphInput, 4>& inputs) {
   ShadertoyInputs st;
   st.time = in.time;
   st.time_delta = in.time_delta;
   st.frame = in.frame;
   std::copy(std::begin(in.mouse), std::end(in.mouse), st.mouse);
   std::memcpy(st.channel_resolution, res, sizeof st.channel_resolution);
+  for (int c = 0; c < 4; ++c) {
+    // Audio that never loaded never plays: its iChannelTime stays 0.
+    const GraphInput& g = inputs[c];
+    const bool unloaded = (g.kind == InputKind::music || g.kind == InputKind::musicstream) && !g.audio;
+    st.channel_time[c] = unloaded ? 0.0f : in.time;
+  }
   return st;
 }
 
@@ -259,9 +267,10 @@ void PassGraph::draw_buffer_pass(size_t pass, const FrameInputs& in, const Frame
   glUseProgram(prog.id());
   float res[4][3];
   bind_inputs(pass, p.width, p.height, res);
-  set_shadertoy_uniforms(prog, p.width, p.height, shadertoy_inputs(in, res));
+  const ShadertoyInputs st = shadertoy_inputs(in, res, passes_[pass].inputs);
+  set_shadertoy_uniforms(prog, p.width, p.height, st);
   if (passes_[pass].uniforms == PassUniforms::glslviewer)
-    set_glslviewer_uniforms(prog, p.width, p.height, shadertoy_inputs(in, res), passes_[pass].inputs);
+    set_glslviewer_uniforms(prog, p.width, p.height, st, passes_[pass].inputs);
   if (in.extra) (*in.extra)(prog);
   prog.set("uJitter", glm::vec2(0.5f));
   // Tile by tile, as FrameRenderer draws: a bounded draw, a deadline check.
@@ -296,7 +305,8 @@ void PassGraph::draw_cube_pass(size_t pass, const FrameInputs& in, const FramePa
   gpu_->cube_a->draw(prog.id(), gpu_->vao, [&](int face) {
     float res[4][3];
     bind_inputs(pass, p.width, p.height, res);
-    set_shadertoy_uniforms(prog, n, n, shadertoy_inputs(in, res));  // iResolution: the face, as Shadertoy
+    // iResolution: the face, as Shadertoy
+    set_shadertoy_uniforms(prog, n, n, shadertoy_inputs(in, res, passes_[pass].inputs));
     prog.set("uCubeFace", face);
     if (in.extra) (*in.extra)(prog);
   }, p.deadline);
@@ -348,12 +358,12 @@ void PassGraph::draw(const DrawLast& draw_last, const FrameInputs& in, const Fra
   draw_last(*programs_[last], [&](const Program& prog) {
     float res[4][3];
     bind_inputs(last, p.width, p.height, res);
+    const ShadertoyInputs st = shadertoy_inputs(in, res, frame_pass.inputs);
     if (frame_pass.uniforms == PassUniforms::shadertoy) {
-      set_shadertoy_uniforms(prog, p.resolution_width(), p.resolution_height(), shadertoy_inputs(in, res));
+      set_shadertoy_uniforms(prog, p.resolution_width(), p.resolution_height(), st);
     } else if (frame_pass.uniforms == PassUniforms::glslviewer) {
-      set_shadertoy_uniforms(prog, p.resolution_width(), p.resolution_height(), shadertoy_inputs(in, res));
-      set_glslviewer_uniforms(prog, p.resolution_width(), p.resolution_height(), shadertoy_inputs(in, res),
-                              frame_pass.inputs);
+      set_shadertoy_uniforms(prog, p.resolution_width(), p.resolution_height(), st);
+      set_glslviewer_uniforms(prog, p.resolution_width(), p.resolution_height(), st, frame_pass.inputs);
     } else {
       if (!in.scene) fail_system("internal: a scene pass without its scene");
       set_scene_uniforms(prog, *in.scene, p.resolution_width(), p.resolution_height(), in.time, in.frame);

@@ -1,6 +1,6 @@
 // Shadertoy's own rules for what a shader reads, through the real binary:
 // a texture's texels are its file's bytes (straight alpha, one upload per
-// input's settings).
+// input's settings), and missing audio reads as audio that never loaded.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -75,6 +75,32 @@ TEST(ShadertoyRules, OneFileBoundTwiceGetsEachInputsOwnSampler) {
   EXPECT_NEAR(img.at(0, 0, 1), 0.0f, 1e-4f);             // as stored: the top row
   const float srgb = std::pow((160.0f / 255.0f + 0.055f) / 1.055f, 2.4f);
   EXPECT_NEAR(img.at(0, 0, 2), srgb, 2e-3f);  // decoded from sRGB
+}
+
+TEST(ShadertoyRules, MissingAudioReadsAsNeverLoaded) {
+  TempDir dir;
+  // Both rows of the channel, its iChannelTime and iChannelResolution.
+  const std::string code =
+      "void mainImage(out vec4 o, in vec2 f) { o = vec4(texelFetch(iChannel0, ivec2(f), 0).r, iChannelTime[0],"
+      " iChannelResolution[0].x + iChannelResolution[0].y + iChannelResolution[0].z, iChannelTime[1]); }";
+  const std::string input = "{\"id\": 1, \"ctype\": \"music\", \"channel\": 0, \"src\": \"/media/a/gone.mp3\", "
+                            "\"sampler\": {\"filter\": \"linear\", \"wrap\": \"clamp\", \"vflip\": \"true\", "
+                            "\"srgb\": \"false\"}}";
+  write_file(dir / "m.json", shader({pass("Image", "image", 0, code, input)}));
+  const RunResult r = run_marchstudio({"render", "m.json", "--media-dir", ".", "--missing-media", "black", "--size",
+                                       "4x2", "--time", "3", "-o", "o.exr"},
+                                      dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("audio '/media/a/gone.mp3' is missing; it reads as Shadertoy's audio before it loads"),
+            std::string::npos)
+      << r.err;
+  const Image img = read_image(dir / "o.exr");
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) {
+      EXPECT_EQ(img.at(x, y, 0), 0.0f) << x << "," << y;  // nothing bound: 0 in both rows
+      EXPECT_EQ(img.at(x, y, 1), 0.0f) << x << "," << y;  // iChannelTime stays 0
+      EXPECT_EQ(img.at(x, y, 2), 0.0f) << x << "," << y;  // no size, as an unloaded input
+    }
 }
 
 }  // namespace
