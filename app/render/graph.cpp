@@ -79,14 +79,20 @@ GLenum gl_target(ChannelType t) {
 PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
     : passes_(std::move(passes)), gpu_(std::make_unique<Gpu>()) {
   if (passes_.empty() || passes_.back().output != -1) fail_system("internal: a pass graph must end in the frame's pass");
+  bool reads_cube_a = false;
   for (const PassSource& p : passes_) {
     programs_.push_back(cache ? cache->get(fullscreen_vertex_source(), p.source)
                               : std::make_shared<const Program>(fullscreen_vertex_source(), p.source));
-    if (p.output >= 0 && p.output < 4) gpu_->used[p.output] = true;
+    if (p.output >= 0 && p.output < 4) gpu_->used[p.output] = gpu_->written[p.output] = true;
+    // A buffer or Cube A that no pass writes is still made, and stays 0 (as on Shadertoy).
+    for (const GraphInput& in : p.inputs) {
+      if (in.kind == InputKind::buffer && in.buffer >= 0 && in.buffer < 4) gpu_->used[in.buffer] = true;
+      reads_cube_a = reads_cube_a || (in.kind == InputKind::cubemap && !in.cube);
+    }
   }
   Gpu& g = *gpu_;
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // as WebGL2 filters cube maps
-  if (has_cube_pass()) {
+  if (has_cube_pass() || reads_cube_a) {
     int levels = 1;  // a chain when some pass samples Cube A mipmapped
     for (const PassSource& p : passes_)
       for (const GraphInput& in : p.inputs)
@@ -155,8 +161,8 @@ PassGraph::~PassGraph() {
 std::vector<int> PassGraph::buffers() const {
   std::vector<int> out;
   for (int b = 0; b < 4; ++b)
-    if (gpu_->used[b]) out.push_back(b);
-  if (gpu_->cube_a) out.push_back(kCubeA);
+    if (gpu_->written[b]) out.push_back(b);
+  if (has_cube_pass()) out.push_back(kCubeA);
   return out;
 }
 

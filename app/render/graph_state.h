@@ -47,7 +47,8 @@ struct PassGraph::Gpu {
   VideoTextures videos;  // RGBA8, the frame at iTime
   std::map<int, GLuint> samplers;  // by filter * 3 + wrap
   Buffer buffers[4];
-  bool used[4] = {false, false, false, false};
+  bool used[4] = {false, false, false, false};     // made: written or read
+  bool written[4] = {false, false, false, false};  // some pass draws it
   int width = 0, height = 0;
 };
 

@@ -1,6 +1,8 @@
 // Shadertoy's own rules for what a shader reads, through the real binary:
 // a texture's texels are its file's bytes (straight alpha, one upload per
-// input's settings), and missing audio reads as audio that never loaded.
+// input's settings), missing audio reads as audio that never loaded, and a
+// buffer or Cube A no pass writes is bound all zero (a warning; --strict:
+// exit 1).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -101,6 +103,56 @@ TEST(ShadertoyRules, MissingAudioReadsAsNeverLoaded) {
       EXPECT_EQ(img.at(x, y, 1), 0.0f) << x << "," << y;  // iChannelTime stays 0
       EXPECT_EQ(img.at(x, y, 2), 0.0f) << x << "," << y;  // no size, as an unloaded input
     }
+}
+
+const char* kZeroProbe =
+    "void mainImage(out vec4 o, in vec2 f) { vec4 t = texelFetch(iChannel0, ivec2(f), 0);"
+    " o = vec4(t.r + t.g + t.b + t.a + 0.25, iChannelResolution[0].x / 8.0,"
+    " iChannelResolution[0].y / 8.0 + iChannelResolution[0].z / 4.0, 1.0); }";
+
+TEST(ShadertoyRules, BufferNoPassWritesIsBoundZeroWithAWarning) {
+  TempDir dir;
+  write_file(dir / "b.json", shader({pass("Image", "image", 0, kZeroProbe, buffer_input(0, 258))}));
+  const RunResult r =
+      run_marchstudio({"render", "b.json", "--size", "4x2", "-o", "o.exr"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: Image iChannel0 reads Buffer B, which no pass writes: it reads 0"),
+            std::string::npos)
+      << r.err;
+  const Image img = read_image(dir / "o.exr");
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) {
+      EXPECT_EQ(img.at(x, y, 0), 0.25f);  // every channel 0, alpha too (an unbound channel's alpha is 1)
+      EXPECT_EQ(img.at(x, y, 1), 0.5f);   // iChannelResolution (4, 2, 1): the image's size
+      EXPECT_EQ(img.at(x, y, 2), 0.5f);
+    }
+  // --strict: the warning is an error, exit 1, no file.
+  const RunResult s =
+      run_marchstudio({"render", "b.json", "--size", "4x2", "--strict", "-o", "s.exr"}, dir.path());
+  EXPECT_EQ(s.exit_code, 1) << s.err;
+  EXPECT_NE(s.err.find("Image iChannel0 reads Buffer B, which no pass writes"), std::string::npos) << s.err;
+  EXPECT_FALSE(fs::exists(dir / "s.exr"));
+}
+
+TEST(ShadertoyRules, CubeANoPassWritesIsBoundZeroWithAWarning) {
+  TempDir dir;
+  const std::string code =
+      "void mainImage(out vec4 o, in vec2 f) { vec4 t = texture(iChannel0, vec3(1.0, 0.2, 0.3));"
+      " o = vec4(t.r + t.g + t.b + t.a + 0.25, iChannelResolution[0].x / 4096.0, iChannelResolution[0].z, 1.0); }";
+  const std::string cube_a = "{\"id\": \"4dX3Rr\", \"ctype\": \"cubemap\", \"channel\": 0, \"src\": "
+                             "\"/media/previz/cubemap00.png\"}";
+  write_file(dir / "c.json", shader({pass("Image", "image", 0, code, cube_a)}));
+  const RunResult r = run_marchstudio({"render", "c.json", "--size", "1x1", "-o", "o.exr"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: Image iChannel0 reads Cube A, which no pass writes: it reads 0"), std::string::npos)
+      << r.err;
+  const Image img = read_image(dir / "o.exr");
+  EXPECT_EQ(img.at(0, 0, 0), 0.25f);
+  EXPECT_EQ(img.at(0, 0, 1), 0.25f);  // (1024, 1024, 1), Shadertoy's Cube A
+  EXPECT_EQ(img.at(0, 0, 2), 1.0f);
+  const RunResult s = run_marchstudio({"render", "c.json", "--size", "1x1", "--strict", "-o", "s.exr"}, dir.path());
+  EXPECT_EQ(s.exit_code, 1) << s.err;
+  EXPECT_FALSE(fs::exists(dir / "s.exr"));
 }
 
 }  // namespace
