@@ -1,8 +1,8 @@
 // Shadertoy's own rules for what a shader reads, through the real binary:
 // a texture's texels are its file's bytes (straight alpha, one upload per
-// input's settings), missing audio reads as audio that never loaded, and a
+// input's settings), missing audio reads as audio that never loaded, a
 // buffer or Cube A no pass writes is bound all zero (a warning; --strict:
-// exit 1).
+// exit 1), and a still's iFrame is the frame a sequence draws at its time.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -153,6 +153,66 @@ TEST(ShadertoyRules, CubeANoPassWritesIsBoundZeroWithAWarning) {
   const RunResult s = run_marchstudio({"render", "c.json", "--size", "1x1", "--strict", "-o", "s.exr"}, dir.path());
   EXPECT_EQ(s.exit_code, 1) << s.err;
   EXPECT_FALSE(fs::exists(dir / "s.exr"));
+}
+
+const char* kFrameProbe = "void mainImage(out vec4 o, in vec2 f) { o = vec4(float(iFrame) / 255.0); }";
+
+float frame_of(const TempDir& dir, const std::string& input, const std::vector<std::string>& more) {
+  std::vector<std::string> args = {input, "--size", "1x1"};
+  args.insert(args.end(), more.begin(), more.end());
+  const Image img = render_exr(dir, args);
+  return img.pixels.empty() ? -1.0f : img.at(0, 0, 0) * 255.0f;
+}
+
+TEST(ShadertoyRules, AStillsIFrameCountsTheFramesBeforeIt) {
+  TempDir dir;
+  write_file(dir / "f.json", shader({pass("Image", "image", 0, kFrameProbe)}));
+  write_file(dir / "f.glsl", std::string(kFrameProbe) + "\n");
+  write_file(dir / "g.frag", "uniform int u_frame;\nvoid main() { gl_FragColor = vec4(float(u_frame) / 255.0); }\n");
+  for (const std::string input : {"f.json", "f.glsl"}) {
+    EXPECT_NEAR(frame_of(dir, input, {"--time", "1.0"}), 60.0f, 1e-3f) << input;
+    EXPECT_NEAR(frame_of(dir, input, {"--time", "1.0", "--frame", "5"}), 5.0f, 1e-3f) << input;
+    EXPECT_NEAR(frame_of(dir, input, {"--time", "0.5", "--fps", "30"}), 15.0f, 1e-3f) << input;
+  }
+  EXPECT_NEAR(frame_of(dir, "g.frag", {"--time", "1.0"}), 60.0f, 1e-3f);  // glslViewer's u_frame
+  EXPECT_NEAR(frame_of(dir, "g.frag", {"--time", "1.0", "--frame", "7"}), 7.0f, 1e-3f);
+}
+
+TEST(ShadertoyRules, ATestCasesStillHasRendersIFrame) {
+  TempDir dir;
+  write_file(dir / "f.glsl", std::string(kFrameProbe) + "\n");
+  // Frame 60, the frame Shadertoy draws at 1 s.
+  ASSERT_EQ(run_marchstudio({"render", "f.glsl", "--size", "2x2", "--time", "1.0", "--frame", "60", "-o", "ref.png"},
+                            dir.path())
+                .exit_code,
+            0);
+  // No `frame`: the case at time 1 is that frame; frame = 3 is not.
+  write_file(dir / "s.toml", "[[case]]\nname = \"f\"\nshader = \"f.glsl\"\ntime = 1.0\nreference = \"ref.png\"\n");
+  RunResult r = run_marchstudio({"test", "s.toml"}, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  write_file(dir / "s.toml",
+             "[[case]]\nname = \"f\"\nshader = \"f.glsl\"\ntime = 1.0\nframe = 3\nreference = \"ref.png\"\n");
+  r = run_marchstudio({"test", "s.toml"}, dir.path());
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+}
+
+TEST(ShadertoyRules, AMultipassStillsIFrameIsItsLastReplayedFrame) {
+  TempDir dir;
+  // Buffer A counts the frames drawn; the Image shows that count and iFrame.
+  const std::string count = "void mainImage(out vec4 o, in vec2 f) { o = texelFetch(iChannel0, ivec2(f), 0) + 1.0; }";
+  const std::string show = "void mainImage(out vec4 o, in vec2 f) {"
+                           " o = vec4(texelFetch(iChannel0, ivec2(f), 0).r / 255.0, float(iFrame) / 255.0, 0, 1); }";
+  write_file(dir / "m.json", shader({pass("Buffer A", "buffer", 257, count, buffer_input(0, 257)),
+                                     pass("Image", "image", 0, show, buffer_input(0, 257))}));
+  const Image img = render_exr(dir, {"m.json", "--size", "1x1", "--time", "0.5"});
+  ASSERT_EQ(img.width, 1);
+  EXPECT_NEAR(img.at(0, 0, 0) * 255.0f, 31.0f, 1e-3f);  // frames 0..30 drawn
+  EXPECT_NEAR(img.at(0, 0, 1) * 255.0f, 30.0f, 1e-3f);
+  // --frame that is not that frame contradicts the replay: refused.
+  RunResult r = run_marchstudio({"render", "m.json", "--time", "0.5", "--frame", "5", "-o", "x.exr"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--frame 5 conflicts with a shader that has buffers"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "x.exr"));
 }
 
 }  // namespace
