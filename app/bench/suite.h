@@ -59,7 +59,7 @@ struct SuiteCase {
   std::filesystem::path reference;    // empty: no image checks; with `frames`, a %d pattern
   int width = 0, height = 0;          // 0: the reference's size, else the input's
   std::optional<float> time;          // default: the input's [render] time
-  int frame = 0;                      // uFrame / iFrame of a still
+  std::optional<int> frame;           // uFrame / iFrame of a still; empty: round(time x fps), as render's
   // A frame range A..B: frame f renders at time f / fps with uFrame f, and
   // is compared with the reference pattern's file for f.
   std::optional<std::pair<int, int>> frames;

@@ -195,7 +195,8 @@ void read_case(const Reader& r, const toml::table& own, const toml::table* defau
   c.height = size.second;
   float time = 0;
   if (get("time", Range::any(), time)) c.time = time;
-  get("frame", Range::at_least(0), c.frame);
+  int frame = 0;
+  if (get("frame", Range::at_least(0), frame)) c.frame = frame;
   if (const auto [t, p] = ct.at("frames"); t) {
     std::pair<int, int> f;
     if (t->get("frames")->is_string()) {

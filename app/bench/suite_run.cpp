@@ -32,7 +32,7 @@ namespace suite_detail {
 
 std::vector<FrameSpec> frames_of(const PreparedCase& pc) {
   const SuiteCase& c = *pc.spec;
-  if (!c.frames) return {{c.frame, pc.time, 1.0f / 60.0f}};
+  if (!c.frames) return {{c.frame.value_or(still_frame_number(pc.time, pc.fps)), pc.time, 1.0f / 60.0f}};
   std::vector<FrameSpec> out;
   // As `render --frames`: frame f at f / fps, exactly as the shader gets it.
   for (int f = c.frames->first; f <= c.frames->second; ++f)

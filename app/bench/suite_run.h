@@ -30,7 +30,7 @@ struct PreparedCase {
   Scene scene;                // as loaded; posed per frame
   std::vector<PassSource> passes;  // as render builds them for the reference's format
   ShaderSource post;
-  double fps = 60.0;          // a stateful (multi-pass) shader's frame rate
+  double fps = 60.0;          // a still's frame rate: a shader's own (60), a scene's render --fps default
   ShaderSource counting;      // the AOV build, when spec->cost
   FrameParams params;         // size, spp, exposure, fused_post
   std::vector<ShaderSource> bloom;  // [extract, blur] when the case blooms (render/bloom.h), else empty

@@ -90,7 +90,11 @@ const std::map<std::string, Handler>& handlers() {
          a.time = number(kv);
          a.time_set = true;
        }},
-      {"frame", [](const KeyValue& kv, RenderArgs& a) { a.frame = integer(kv); }},
+      {"frame",
+       [](const KeyValue& kv, RenderArgs& a) {
+         a.frame = integer(kv);
+         a.frame_set = true;
+       }},
       {"fps",
        [](const KeyValue& kv, RenderArgs& a) {
          a.fps = number(kv);

@@ -47,7 +47,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
       ->each([&a](const std::string&) { a.time_set = true; });
   cmd->add_option("--spp", a.spp, "Samples per pixel, stratified, 1..1024 (default: the scene's)")
       ->check(CLI::Range(1, 1024));
-  cmd->add_option("--frame", a.frame, "Frame number, uFrame / iFrame (default 0)");
+  cmd->add_option("--frame", a.frame, "Frame number (uFrame / iFrame; default round(time x fps), 0 at time 0)")
+      ->each([&a](const std::string&) { a.frame_set = true; });
   add_backend_flag(cmd, a.backend);
   add_shader_dir_flag(cmd, a.shader_dir);
   add_preset_flag(cmd, a.preset);

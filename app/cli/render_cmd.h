@@ -16,6 +16,9 @@ namespace ms {
 
 // The flags as given; cli/render_job.h turns them into RenderJobs, which is
 // all the still pipeline reads.
+// --fps's default for an SDF scene; a Shadertoy shader's is its [shadertoy] fps (60).
+inline constexpr double kSceneFps = 24.0;
+
 struct RenderArgs {
   std::vector<std::string> inputs;  // positional: one, or a batch of several (cli/batch.h)
   std::string input;      // the one input of a still, a sequence or --watch (inputs[0])
@@ -28,6 +31,7 @@ struct RenderArgs {
   bool time_set = false;
   int spp = 0;            // 0: the scene's
   int frame = 0;
+  bool frame_set = false;  // else a still's frame is round(time x fps)
   std::string backend = "auto";
   std::string shader_dir; // empty: MARCH_SHADER_DIR or the built-in location
   std::vector<std::string> disable;  // effects switched off: shadows, reflections, ao, checker-filter
@@ -35,7 +39,7 @@ struct RenderArgs {
   std::vector<std::string> defines;  // -D NAME[=VALUE], injected into the scene shader
   // Sequences (cli/sequence_cmd.h): --frames turns `render` into one.
   std::string frames;      // "A..B", both included
-  double fps = 24.0;       // time of frame f is f / fps
+  double fps = kSceneFps;  // time of frame f is f / fps
   bool fps_set = false;
   std::string shard;       // "I/N"
   std::string shard_mode;  // "stride" (when empty) or "chunk"

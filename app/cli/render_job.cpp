@@ -43,7 +43,7 @@ RenderJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::
   if (a.spp < 0 || a.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
   job.spp = a.spp;
   if (a.frame < 0) fail_input("--frame must be >= 0", {}, 0, "--frame");
-  job.frame = a.frame;
+  if (a.frame_set) job.frame = a.frame;
   if (a.fps_set) {
     if (!std::isfinite(a.fps) || a.fps <= 0) fail_input("--fps must be a positive number", {}, 0, "--fps");
     job.fps = a.fps;

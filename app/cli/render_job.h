@@ -32,7 +32,7 @@ struct RenderJob {
   ImageSize size;                    // 0x0: the scene's
   int spp = 0;                       // 1..1024; 0: the scene's
   std::optional<float> time;         // seconds; empty: the scene's
-  int frame = 0;                     // uFrame / iFrame, >= 0
+  std::optional<int> frame;          // uFrame / iFrame, >= 0; empty: the still's frame (still_frame_of)
   std::optional<double> fps;         // > 0; empty: the scene's (a Shadertoy shader's 60)
   Backend backend = Backend::automatic;
   std::filesystem::path shader_dir;  // resolved: holds main.frag

@@ -46,7 +46,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kDefaultFps = 24.0;
+constexpr double kDefaultFps = kSceneFps;
 // Frames waiting for the writer: enough to ride out a slow write, small
 // enough that 4 float frames stay modest (640x360: 15 MB; 4K: 530 MB).
 constexpr std::size_t kQueuedFrames = 4;

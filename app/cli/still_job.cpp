@@ -10,6 +10,7 @@
 #include "cli/dispatch_probe.h"
 #include "cli/fingerprint.h"
 #include "cli/input.h"
+#include "cli/render_cmd.h"
 #include "cli/tiled_render.h"
 #include "core/deadline.h"
 #include "core/error.h"
@@ -113,8 +114,14 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
   LoadedInput& in = p.in;
   FrameParams& fp = p.fp;
   const Scene& scene = in.scene;
-  if (in.stateful() && job.frame != 0)
-    fail_input("--frame conflicts with a shader that has buffers: its still replays frames 0..N, N = round(time x fps)",
+  const float time = job.time ? *job.time : scene.render.time;
+  // The frame a sequence at this fps draws at `time`, as Shadertoy at 1 s
+  // has drawn 60: a scene's fps is --fps's default, a shader's its own.
+  const double fps = in.shadertoy || job.fps ? scene.shadertoy.fps : kSceneFps;
+  const int frame = job.frame.value_or(still_frame_number(time, fps));
+  if (in.stateful() && frame != still_frame_number(time, fps))
+    fail_input("--frame " + std::to_string(frame) + " conflicts with a shader that has buffers: its still replays "
+                   "frames 0..N, N = round(time x fps) = " + std::to_string(still_frame_number(time, fps)),
                {}, 0, "--frame", "give --time (and --fps) instead");
   report_input_warnings(in.warnings, input.string(), job.strict);
   fp.exposure = scene.render.exposure;
@@ -126,7 +133,6 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
   const int buffer_targets = 2 * (static_cast<int>(in.passes.size()) - 1);  // each buffer's two textures
   const int gpu_targets = (aovs ? 6 : 2) + buffer_targets;
   plan_render_tiling(in, fp, gpu_targets, job.tile_still, INT_MAX, INT_MAX);
-  const float time = job.time ? *job.time : scene.render.time;
   const Scene posed = animated(scene, time);  // [[animation]] keyframes at this time
   fp.exposure = posed.render.exposure;
 
@@ -170,7 +176,7 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
   report_input_warnings(unbound_warnings(graph), input.string(), job.strict);
   if (!in.shadertoy)  // does [bounds] hold what map() draws? Before anything is written (cli/bounds_report.h)
     session.bounds.check(input.string(), posed, p.opts, [&](const Program& prog) {
-      set_scene_uniforms(prog, posed, fp.width, fp.height, time, job.frame);
+      set_scene_uniforms(prog, posed, fp.width, fp.height, time, frame);
     }, job.strict);
   const std::unique_ptr<BloomStage> bloom = make_bloom_stage(in, p.display, p.opts, session.cache);
   fp.bloom = bloom.get();
@@ -178,9 +184,9 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
   StillFrame still;
   still.in.scene = &posed;
   still.in.time = time;
-  still.in.frame = job.frame;
+  still.in.frame = frame;
   std::copy(std::begin(scene.shadertoy.mouse), std::end(scene.shadertoy.mouse), still.in.mouse);
-  still.fps = scene.shadertoy.fps;
+  still.fps = fps;
   still.params = fp;
   // The NaN/Inf guard: pixels with NaN/Inf in any channel read back
   // (colour, AOVs), and those a Shadertoy Image pass flagged, counted over
@@ -198,7 +204,7 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
                      {"ImageDescription", input.filename().string() + " t=" + std::to_string(time) +
                                               " spp=" + std::to_string(fp.spp)}};
   add_fingerprint(meta, frame_fingerprint(job_fingerprint(in, fp, p.post_src, job.aov_channels, scene.shadertoy.fps),
-                                          job.frame, time));
+                                          frame, time));
   // auto: the probe's or the cache's choice for this device (cli/dispatch_probe.h), made with the bloom stage in place.
   if (job.dispatch == Dispatch::automatic)
     if (const DispatchChoice c = choose_dispatch(job.dispatch, graph, *post_prog, still, ctx, job.compute_group, job.verbose);

@@ -21,6 +21,7 @@
 #include "cli/exit_codes.h"
 #include "cli/input.h"
 #include "cli/progress.h"
+#include "cli/render_cmd.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
 #include "core/utf8.h"
@@ -104,7 +105,7 @@ PreparedCase prepare(const Suite& suite, const SuiteCase& c, const fs::path& sha
     pc.post = assemble_still(in, opts, fp.spp, false, display, fp.fused_post);
     if (in.scene.bloom.enabled) pc.bloom = {assemble_bloom(false, opts), assemble_bloom(true, opts)};  // docs/post.md
     pc.passes = in.passes;
-    pc.fps = in.scene.shadertoy.fps;
+    pc.fps = in.shadertoy ? in.scene.shadertoy.fps : kSceneFps;  // as render's still
     if (c.cost) pc.counting = assemble_scene(in.scene, count_opts);
     pc.time = c.time ? *c.time : in.scene.render.time;
     check_frame_memory(frame_memory(fp.width, fp.height, c.cost ? 6 : 2, c.cost.has_value()), fp.width, fp.height);

@@ -70,7 +70,7 @@ CubeFaces read_cube_faces(const std::array<fs::path, 6>& files) {
   CubeFaces c;
   c.eight_bit = !is_float_file(files[0]);
   for (int i = 0; i < 6; ++i) {
-    const Image img = read_image(files[i]);  // a missing or unreadable file: bad_input naming it
+    const Image img = read_image(files[i], AlphaMode::straight);  // the file's bytes; missing or unreadable: bad_input
     const std::string face = std::string("cubemap face ") + std::to_string(i) + " (" + names[i] + ")";
     if (img.width != img.height)
       fail_input(face + " is " + std::to_string(img.width) + "x" + std::to_string(img.height) + ", not square",

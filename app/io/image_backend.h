@@ -59,7 +59,8 @@ class ImageBackend {
   // From a file's bytes (`name` picks the codec and names errors). Throw
   // bad_input naming `name`. The info's fingerprint is left empty.
   virtual ImageInfo read_info(const std::string& bytes, const std::filesystem::path& name) const = 0;
-  virtual Image read(const std::string& bytes, const std::filesystem::path& name) const = 0;
+  // `straight_alpha`: RGB as stored, not multiplied by alpha (AlphaMode).
+  virtual Image read(const std::string& bytes, const std::filesystem::path& name, bool straight_alpha) const = 0;
   // Empty when every pixel decodes, else why not (the codec's message).
   virtual std::string decode_problem(const std::string& bytes, const std::filesystem::path& name) const = 0;
   // stored_pixels() for an 8-bit format: the codec's own float conversion.

@@ -91,6 +91,8 @@ std::string fingerprint_of(const ImageInfo& info) {
   return fingerprint_from(attribute(info, kFingerprintKey), attribute(info, "ImageDescription"));
 }
 
-Image read_image(const fs::path& path) { return image_backend().read(read_image_bytes(path), path); }
+Image read_image(const fs::path& path, AlphaMode alpha) {
+  return image_backend().read(read_image_bytes(path), path, alpha == AlphaMode::straight);
+}
 
 }  // namespace ms

@@ -57,8 +57,15 @@ ImageInfo read_image_info(const std::filesystem::path& path);
 // fingerprint_from() over an info's attributes.
 std::string fingerprint_of(const ImageInfo& info);
 
+// How the RGB of a file with an alpha channel is read: `associated`
+// multiplied by alpha (OpenImageIO's default for PNG and TIFF; what
+// `compare` and `test` read), `straight` as stored (a Shadertoy texture's
+// texels are the file's bytes). EXR is associated in the file: the same
+// either way.
+enum class AlphaMode { associated, straight };
+
 // Read any format OpenImageIO knows, as float, from a regular file (io/
 // input_file.h). Throws bad_input naming the file.
-Image read_image(const std::filesystem::path& path);
+Image read_image(const std::filesystem::path& path, AlphaMode alpha = AlphaMode::associated);
 
 }  // namespace ms

@@ -182,7 +182,8 @@ namespace {
 // binds the keyboard and audio without one).
 bool has_mipmapped_input(const PassSource& pass) {
   for (const GraphInput& in : pass.inputs)
-    if (in.kind != InputKind::none && in.kind != InputKind::keyboard && !in.audio &&
+    if (in.kind != InputKind::none && in.kind != InputKind::keyboard && in.kind != InputKind::music &&
+        in.kind != InputKind::musicstream &&
         in.sampler.filter == TexFilter::mipmap)
       return true;
   return false;

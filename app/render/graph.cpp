@@ -92,14 +92,20 @@ GLenum gl_target(ChannelType t) {
 PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
     : passes_(std::move(passes)), gpu_(std::make_unique<Gpu>()) {
   if (passes_.empty() || passes_.back().output != -1) fail_system("internal: a pass graph must end in the frame's pass");
+  bool reads_cube_a = false;
   for (const PassSource& p : passes_) {
     programs_.push_back(cache ? cache->get(fullscreen_vertex_source(), p.source)
                               : std::make_shared<const Program>(fullscreen_vertex_source(), p.source));
-    if (p.output >= 0 && p.output < 4) gpu_->used[p.output] = true;
+    if (p.output >= 0 && p.output < 4) gpu_->used[p.output] = gpu_->written[p.output] = true;
+    // A buffer or Cube A that no pass writes is still made, and stays 0 (as on Shadertoy).
+    for (const GraphInput& in : p.inputs) {
+      if (in.kind == InputKind::buffer && in.buffer >= 0 && in.buffer < 4) gpu_->used[in.buffer] = true;
+      reads_cube_a = reads_cube_a || (in.kind == InputKind::cubemap && !in.cube);
+    }
   }
   Gpu& g = *gpu_;
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // as WebGL2 filters cube maps
-  if (has_cube_pass()) {
+  if (has_cube_pass() || reads_cube_a) {
     int levels = 1;  // a chain when some pass samples Cube A mipmapped
     for (const PassSource& p : passes_)
       for (const GraphInput& in : p.inputs)
@@ -131,12 +137,12 @@ PassGraph::PassGraph(std::vector<PassSource> passes, ProgramCache* cache)
     }
   for (const PassSource& p : passes_)
     for (const GraphInput& in : p.inputs)
-      if (in.kind == InputKind::texture && in.image && !g.textures.count(in.image.get()))
-        g.textures[in.image.get()] = upload(in);
-      else if (in.kind == InputKind::cubemap && in.cube && !g.cubes.count(in.cube.get()))
-        g.cubes[in.cube.get()] = upload_cube(*in.cube, in.sampler);
-      else if (in.kind == InputKind::volume && in.volume && !g.volumes.count(in.volume.get()))
-        g.volumes[in.volume.get()] = upload(*in.volume, in.sampler);
+      if (in.kind == InputKind::texture && in.image && !g.textures.count(upload_key(in)))
+        g.textures[upload_key(in)] = upload(in);
+      else if (in.kind == InputKind::cubemap && in.cube && !g.cubes.count(upload_key(in)))
+        g.cubes[upload_key(in)] = upload_cube(*in.cube, in.sampler);
+      else if (in.kind == InputKind::volume && in.volume && !g.volumes.count(upload_key(in)))
+        g.volumes[upload_key(in)] = upload(*in.volume, in.sampler);
       else if (in.audio && !g.audio.count(in.audio.get())) {
         GLuint tex = 0;
         glGenTextures(1, &tex);
@@ -155,9 +161,9 @@ PassGraph::~PassGraph() {
     glDeleteFramebuffers(2, b.fbo);
     glDeleteTextures(2, b.tex);
   }
-  for (auto& [img, tex] : g.textures) glDeleteTextures(1, &tex);
-  for (auto& [vol, tex] : g.volumes) glDeleteTextures(1, &tex);
-  for (auto& [cube, tex] : g.cubes) glDeleteTextures(1, &tex);
+  for (auto& [key, tex] : g.textures) glDeleteTextures(1, &tex);
+  for (auto& [key, tex] : g.volumes) glDeleteTextures(1, &tex);
+  for (auto& [key, tex] : g.cubes) glDeleteTextures(1, &tex);
   for (auto& [clip, tex] : g.audio) glDeleteTextures(1, &tex);
   for (auto& [key, s] : g.samplers) glDeleteSamplers(1, &s);
   glDeleteTextures(1, &g.black);
@@ -168,8 +174,8 @@ PassGraph::~PassGraph() {
 std::vector<int> PassGraph::buffers() const {
   std::vector<int> out;
   for (int b = 0; b < 4; ++b)
-    if (gpu_->used[b]) out.push_back(b);
-  if (gpu_->cube_a) out.push_back(kCubeA);
+    if (gpu_->written[b]) out.push_back(b);
+  if (has_cube_pass()) out.push_back(kCubeA);
   return out;
 }
 
@@ -190,7 +196,7 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
         rh = static_cast<float>(h);
         break;
       case InputKind::texture:
-        tex = g.textures.at(in.image.get());
+        tex = g.textures.at(upload_key(in));
         rw = static_cast<float>(in.image->width);
         rh = static_cast<float>(in.image->height);
         break;
@@ -200,15 +206,16 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
         rh = 3;
         break;
       case InputKind::cubemap:
-        tex = in.cube ? g.cubes.at(in.cube.get()) : g.cube_a->texture();  // Cube A as it stands now
+        tex = in.cube ? g.cubes.at(upload_key(in)) : g.cube_a->texture();  // Cube A as it stands now
         rw = rh = static_cast<float>(in.cube ? in.cube->size : g.cube_a->size());
         break;
       case InputKind::volume:
-        tex = g.volumes.at(in.volume.get());
+        tex = g.volumes.at(upload_key(in));
         rw = rh = rd = static_cast<float>(in.volume->size);
         break;
       case InputKind::music:
       case InputKind::musicstream:
+        if (!in.audio) break;  // missing (--missing-media): not loaded, so nothing bound, as on Shadertoy
         tex = g.audio.at(in.audio.get());
         rw = kAudioTexWidth;
         rh = 2;
@@ -224,25 +231,32 @@ void PassGraph::bind_inputs(size_t pass, int w, int h, float res[4][3]) {
     glActiveTexture(GL_TEXTURE0 + c);
     glBindTexture(gl_target(channel_type(in.kind)), tex);
     int filter = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.filter);
-    if (in.audio && in.sampler.filter == TexFilter::mipmap) filter = 1;  // no mip chain: Shadertoy offers none for audio
+    const bool audio = in.kind == InputKind::music || in.kind == InputKind::musicstream;
+    if (audio && in.sampler.filter == TexFilter::mipmap) filter = 1;  // no mip chain: Shadertoy offers none for audio
     const int wrap = in.kind == InputKind::keyboard ? 0 : static_cast<int>(in.sampler.wrap);
     glBindSampler(c, in.kind == InputKind::none ? 0 : g.samplers.at(filter * 3 + wrap));
     res[c][0] = rw;
     res[c][1] = rh;
-    res[c][2] = in.kind == InputKind::none ? 0.0f : rd;
+    res[c][2] = in.kind == InputKind::none || (audio && !in.audio) ? 0.0f : rd;
   }
   glActiveTexture(GL_TEXTURE0);
 }
 
 namespace {
 
-ShadertoyInputs shadertoy_inputs(const FrameInputs& in, float res[4][3]) {
+ShadertoyInputs shadertoy_inputs(const FrameInputs& in, float res[4][3], const std::array<GraphInput, 4>& inputs) {
   ShadertoyInputs st;
   st.time = in.time;
   st.time_delta = in.time_delta;
   st.frame = in.frame;
   std::copy(std::begin(in.mouse), std::end(in.mouse), st.mouse);
   std::memcpy(st.channel_resolution, res, sizeof st.channel_resolution);
+  for (int c = 0; c < 4; ++c) {
+    // Audio that never loaded never plays: its iChannelTime stays 0.
+    const GraphInput& g = inputs[c];
+    const bool unloaded = (g.kind == InputKind::music || g.kind == InputKind::musicstream) && !g.audio;
+    st.channel_time[c] = unloaded ? 0.0f : in.time;
+  }
   return st;
 }
 
@@ -272,9 +286,10 @@ void PassGraph::draw_buffer_pass(size_t pass, const FrameInputs& in, const Frame
   glUseProgram(prog.id());
   float res[4][3];
   bind_inputs(pass, p.width, p.height, res);
-  set_shadertoy_uniforms(prog, p.width, p.height, shadertoy_inputs(in, res));
+  const ShadertoyInputs st = shadertoy_inputs(in, res, passes_[pass].inputs);
+  set_shadertoy_uniforms(prog, p.width, p.height, st);
   if (passes_[pass].uniforms == PassUniforms::glslviewer)
-    set_glslviewer_uniforms(prog, p.width, p.height, shadertoy_inputs(in, res), passes_[pass].inputs);
+    set_glslviewer_uniforms(prog, p.width, p.height, st, passes_[pass].inputs);
   if (in.extra) (*in.extra)(prog);
   prog.set("uJitter", glm::vec2(0.5f));
   // Tile by tile, as FrameRenderer draws: a bounded draw, a deadline check.
@@ -309,7 +324,8 @@ void PassGraph::draw_cube_pass(size_t pass, const FrameInputs& in, const FramePa
   gpu_->cube_a->draw(prog.id(), gpu_->vao, [&](int face) {
     float res[4][3];
     bind_inputs(pass, p.width, p.height, res);
-    set_shadertoy_uniforms(prog, n, n, shadertoy_inputs(in, res));  // iResolution: the face, as Shadertoy
+    // iResolution: the face, as Shadertoy
+    set_shadertoy_uniforms(prog, n, n, shadertoy_inputs(in, res, passes_[pass].inputs));
     prog.set("uCubeFace", face);
     if (in.extra) (*in.extra)(prog);
   }, p.deadline);
@@ -361,12 +377,12 @@ void PassGraph::draw(const DrawLast& draw_last, const FrameInputs& in, const Fra
   draw_last(*programs_[last], [&](const Program& prog) {
     float res[4][3];
     bind_inputs(last, p.width, p.height, res);
+    const ShadertoyInputs st = shadertoy_inputs(in, res, frame_pass.inputs);
     if (frame_pass.uniforms == PassUniforms::shadertoy) {
-      set_shadertoy_uniforms(prog, p.resolution_width(), p.resolution_height(), shadertoy_inputs(in, res));
+      set_shadertoy_uniforms(prog, p.resolution_width(), p.resolution_height(), st);
     } else if (frame_pass.uniforms == PassUniforms::glslviewer) {
-      set_shadertoy_uniforms(prog, p.resolution_width(), p.resolution_height(), shadertoy_inputs(in, res));
-      set_glslviewer_uniforms(prog, p.resolution_width(), p.resolution_height(), shadertoy_inputs(in, res),
-                              frame_pass.inputs);
+      set_shadertoy_uniforms(prog, p.resolution_width(), p.resolution_height(), st);
+      set_glslviewer_uniforms(prog, p.resolution_width(), p.resolution_height(), st, frame_pass.inputs);
     } else {
       if (!in.scene) fail_system("internal: a scene pass without its scene");
       set_scene_uniforms(prog, *in.scene, p.resolution_width(), p.resolution_height(), in.time, in.frame);

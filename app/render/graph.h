@@ -8,7 +8,9 @@
 // when the pass runs: a pass reading its own buffer, or one later in the
 // order, sees the previous frame's contents; one reading an earlier
 // buffer sees this frame's. Buffers are cleared to 0 before frame 0 and
-// made once per size: nothing is reallocated or read back per frame.
+// made once per size: nothing is reallocated or read back per frame. A
+// buffer (or Cube A) some pass reads and none writes is made too, and
+// stays 0, as on Shadertoy.
 //
 //   std::vector<PassSource> specs = ...;       // cli/input.h: no GL yet
 //   PassGraph g(specs);                        // compiles, uploads textures

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <tuple>
 
 #include "render/audio_texture.h"
 #include "render/cubemap.h"
@@ -22,18 +23,32 @@ struct PassGraph::Buffer {
   int levels = 1;  // > 1 when a pass samples it mipmapped
 };
 
+// A file input's upload (texture, cubemap, volume): Shadertoy makes one
+// texture per input, so two inputs of one file share an upload only when
+// nothing that shapes its texels differs (row order, sRGB, channels,
+// storage, mip chain); filter and wrap are sampler objects.
+using UploadKey = std::tuple<const void*, bool, bool, bool, bool, bool>;
+inline UploadKey upload_key(const GraphInput& in) {
+  const void* data = in.kind == InputKind::cubemap  ? static_cast<const void*>(in.cube.get())
+                     : in.kind == InputKind::volume ? static_cast<const void*>(in.volume.get())
+                                                    : static_cast<const void*>(in.image.get());
+  return {data, in.sampler.vflip, in.sampler.srgb, in.single_channel, in.eight_bit,
+          in.sampler.filter == TexFilter::mipmap};
+}
+
 struct PassGraph::Gpu {
   GLuint vao = 0;
   GLuint black = 0, keyboard = 0;
-  std::map<const Image*, GLuint> textures;
-  std::map<const Volume*, GLuint> volumes;
-  std::map<const CubeFaces*, GLuint> cubes;  // cubemap inputs' faces
+  std::map<UploadKey, GLuint> textures;
+  std::map<UploadKey, GLuint> volumes;
+  std::map<UploadKey, GLuint> cubes;  // cubemap inputs' faces
   std::unique_ptr<CubeBuffer> cube_a;        // the Cube A pass's target, when there is one
   std::map<const AudioClip*, GLuint> audio;  // 512x2 R8, rewritten each frame
   VideoTextures videos;  // RGBA8, the frame at iTime
   std::map<int, GLuint> samplers;  // by filter * 3 + wrap
   Buffer buffers[4];
-  bool used[4] = {false, false, false, false};
+  bool used[4] = {false, false, false, false};     // made: written or read
+  bool written[4] = {false, false, false, false};  // some pass draws it
   int width = 0, height = 0;
 };
 

@@ -166,7 +166,7 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
             break;
           }
           auto& img = decoded[f];
-          if (!img) img = std::make_shared<const Image>(read_image(f));
+          if (!img) img = std::make_shared<const Image>(read_image(f, AlphaMode::straight));
           g.image = img;
           g.file = f.string();
           g.eight_bit = !is_hdr(f);
@@ -191,15 +191,16 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
         }
         case InputKind::music:
         case InputKind::musicstream: {
-          // Found like a texture; missing: an error, or silence with a warning.
+          // Found like a texture; missing: an error, or (a warning) the channel as
+          // Shadertoy has it before the audio loads: no clip, nothing bound.
           const fs::path f = find_media(in, media, where, "audio '" + in.src + "'");
           if (f.empty()) {
             if (s.missing_media == MissingMedia::error)
               fail_input(where + ": audio '" + in.src + "' is not in the media directory", origin, 0, where,
                          (s.media_dir.empty() ? std::string("no media directory") : "looked in " + s.media_dir.string()) +
-                             "; give --media-dir DIR, or --missing-media noise|black for silence");
-            warnings.push_back(where + ": audio '" + in.src + "' is missing; silence stands in");
-            g.audio = std::make_shared<const AudioClip>(AudioClip{44100, {0.0f}});
+                             "; give --media-dir DIR, or --missing-media noise|black to read it as not loaded");
+            warnings.push_back(where + ": audio '" + in.src +
+                               "' is missing; it reads as Shadertoy's audio before it loads: 0 in both rows");
             break;
           }
           auto& clip = clips[f];

@@ -188,7 +188,7 @@ void set_shadertoy_uniforms(const Program& p, int width, int height, const Shade
   for (int i = 0; i < 4; ++i) {
     const ChannelNames& n = channel_names()[i];
     p.set(n.sampler, i);
-    p.set(n.time, in.time);
+    p.set(n.time, in.channel_time[i]);
     p.set(n.resolution, glm::make_vec3(in.channel_resolution[i]));
   }
 }

@@ -18,6 +18,7 @@ struct ShadertoyInputs {
   int frame = 0;
   float mouse[4] = {0, 0, 0, 0};
   float channel_resolution[4][3] = {};  // iChannelResolution: the bound input's size (0 when unbound)
+  float channel_time[4] = {};           // iChannelTime: iTime, but 0 for audio that never loaded
 };
 
 // iChannel0..3 of a Shadertoy shader: a black 1x1 texture, as an unbound

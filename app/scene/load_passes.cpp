@@ -231,7 +231,7 @@ std::shared_ptr<const ShaderProject> read_passes(const Reader& r, const toml::ta
         r.fail(Reader::line_of(*ch, "buffer"), "passes[" + std::to_string(i) + "]." + key + ".buffer",
                "Buffer " + letter + " is read here, but no pass writes it");
     }
-  check_project(*p, scene_file.string());  // e.g. a cubemap = "A" with no cubemap pass
+  check_project(*p, scene_file.string(), Unwritten::refuse);  // e.g. a cubemap = "A" with no cubemap pass
   return p;
 }
 

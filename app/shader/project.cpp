@@ -31,7 +31,7 @@ const char* glsl_sampler_type(ChannelType t) {
 
 std::string buffer_letter(int buffer) { return std::string(1, static_cast<char>('A' + buffer)); }
 
-void check_project(const ShaderProject& p, const std::string& file) {
+void check_project(ShaderProject& p, const std::string& file, Unwritten unwritten) {
   if (p.passes.empty() || p.passes.back().kind != PassKind::image)
     fail_input("the shader has no Image pass", file, 0, {}, "a Shadertoy shader draws its picture in the Image pass");
   bool writes[4] = {false, false, false, false};
@@ -53,16 +53,26 @@ void check_project(const ShaderProject& p, const std::string& file) {
                  "each buffer has one pass that draws it");
     writes[pass.output] = true;
   }
+  // Shadertoy binds a buffer (or Cube A) that no pass writes as it stands
+  // before frame 0, all zero: a warning here, an error in a scene's [[passes]].
   for (const ProjectPass& pass : p.passes)
     for (size_t c = 0; c < pass.inputs.size(); ++c) {
       const ProjectInput& in = pass.inputs[c];
-      if (in.kind == InputKind::buffer && (in.buffer < 0 || in.buffer > 3 || !writes[in.buffer]))
-        fail_input(pass.name + " iChannel" + std::to_string(c) + " reads Buffer " +
-                       (in.buffer >= 0 && in.buffer <= 3 ? buffer_letter(in.buffer) : "?") + ", which no pass writes",
-                   file, 0, pass.name + ".iChannel" + std::to_string(c));
-      if (in.kind == InputKind::cubemap && in.buffer == kCubeA && !cube)
-        fail_input(pass.name + " iChannel" + std::to_string(c) + " reads Cube A, which no pass writes", file, 0,
-                   pass.name + ".iChannel" + std::to_string(c), "add the cubemap pass (type \"cubemap\", mainCubemap)");
+      const std::string channel = pass.name + " iChannel" + std::to_string(c);
+      if (in.kind == InputKind::buffer && (in.buffer < 0 || in.buffer > 3))
+        fail_input(channel + " reads Buffer ?, which no pass writes", file, 0, pass.name + ".iChannel" + std::to_string(c));
+      std::string what;
+      if (in.kind == InputKind::buffer && !writes[in.buffer])
+        what = channel + " reads Buffer " + buffer_letter(in.buffer) + ", which no pass writes";
+      else if (in.kind == InputKind::cubemap && in.buffer == kCubeA && !cube)
+        what = channel + " reads Cube A, which no pass writes";
+      if (what.empty()) continue;
+      if (unwritten == Unwritten::refuse)
+        fail_input(what, file, 0, pass.name + ".iChannel" + std::to_string(c),
+                   in.kind == InputKind::buffer ? "" : "add the cubemap pass (type \"cubemap\", mainCubemap)");
+      p.warnings.push_back(what + ": it reads 0, an empty " +
+                           (in.kind == InputKind::buffer ? std::string("buffer of the image's size") : "Cube A") +
+                           ", as on Shadertoy");
     }
 }
 

@@ -110,10 +110,15 @@ struct ShadertoySettings {
 // "A".."D" for 0..3.
 std::string buffer_letter(int buffer);
 
+// What an input of a buffer (or Cube A) that no pass writes gets: refused
+// (a scene's [[passes]]), or bound as Shadertoy binds it, all zero, with a
+// warning in p.warnings (--strict makes it an error).
+enum class Unwritten { refuse, warn };
+
 // Checks what a loader built: exactly one Image pass and it is last, each
-// buffer written by at most one pass, buffer inputs naming a buffer some
-// pass writes, at most one Cube A pass and cubemap inputs of Cube A only
-// with one. Throws bad_input naming `file` and the pass.
-void check_project(const ShaderProject& p, const std::string& file);
+// buffer written by at most one pass, buffer inputs naming a buffer A..D,
+// at most one Cube A pass; inputs of a buffer or Cube A that no pass writes
+// as `unwritten` says. Throws bad_input naming `file` and the pass.
+void check_project(ShaderProject& p, const std::string& file, Unwritten unwritten = Unwritten::warn);
 
 }  // namespace ms

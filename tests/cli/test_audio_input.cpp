@@ -81,7 +81,7 @@ TEST(ShadertoyAudio, CorruptMissingAndMicAreOneLineErrors) {
   EXPECT_NE(r.err.find("audio '/media/a/gone.mp3' is not in the media directory"), std::string::npos) << r.err;
   r = run_marchstudio({"render", "m.json", "--media-dir", ".", "--missing-media", "black", "-o", "o.png"}, dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("silence stands in"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("it reads as Shadertoy's audio before it loads"), std::string::npos) << r.err;
 
   write_file(dir / "mic.json", music_json("mic", ""));
   r = run_marchstudio({"render", "mic.json", "-o", "o2.png"}, dir.path());

@@ -27,7 +27,7 @@ TEST(HelpDefaults, RenderHelpShowsTheDefaultsItUses) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(help_of(r.out, "-o,--output").find("<stem>.png"), std::string::npos) << r.out;
   EXPECT_NE(help_of(r.out, "--backend").find("auto (default"), std::string::npos) << r.out;
-  EXPECT_NE(help_of(r.out, "--frame").find("(default 0)"), std::string::npos) << r.out;
+  EXPECT_NE(help_of(r.out, "--frame").find("default round(time x fps)"), std::string::npos) << r.out;
   // The scene's [render] time wins over 0 when --time is not given.
   const std::string time = help_of(r.out, "--time");
   EXPECT_NE(time.find("the scene's [render] time"), std::string::npos) << time;

@@ -19,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace ms;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    const ShaderProject p = load_shadertoy_json(text, "fuzz.json");
+    ShaderProject p = load_shadertoy_json(text, "fuzz.json");
     check_project(p, "fuzz.json");
     for (const ProjectPass& pass : p.passes) {
       const std::string once = rename_desktop_keywords(pass.code);

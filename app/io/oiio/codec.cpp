@@ -22,10 +22,12 @@ struct OpenedImage {
   std::unique_ptr<OIIO::ImageInput> in;
 };
 
-OpenedImage open_image(const std::string& bytes, const fs::path& name) {
+OpenedImage open_image(const std::string& bytes, const fs::path& name, bool straight_alpha = false) {
   OpenedImage o;
   o.mem = std::make_unique<OIIO::Filesystem::IOMemReader>(bytes.data(), bytes.size());
   OIIO::ImageSpec config;
+  // Without this, the PNG and TIFF readers multiply RGB by alpha.
+  if (straight_alpha) config.attribute("oiio:UnassociatedAlpha", 1);
   o.in = OIIO::ImageInput::open(name.string(), &config, o.mem.get());
   if (!o.in) fail_input("cannot read image: " + OIIO::geterror(), name.string());
   return o;
@@ -88,8 +90,8 @@ ImageInfo read_info(const std::string& bytes, const fs::path& name) {
   return info;
 }
 
-Image read(const std::string& bytes, const fs::path& name) {
-  const OpenedImage opened = open_image(bytes, name);
+Image read(const std::string& bytes, const fs::path& name, bool straight_alpha) {
+  const OpenedImage opened = open_image(bytes, name, straight_alpha);
   OIIO::ImageInput* in = opened.in.get();
   const OIIO::ImageSpec& spec = in->spec();
   Image img;

@@ -20,9 +20,9 @@ class OiioBackend final : public ImageBackend {
     const LibpngLines quiet;
     return oiio::read_info(bytes, name);
   }
-  Image read(const std::string& bytes, const std::filesystem::path& name) const override {
+  Image read(const std::string& bytes, const std::filesystem::path& name, bool straight_alpha) const override {
     const LibpngLines quiet;
-    return oiio::read(bytes, name);
+    return oiio::read(bytes, name, straight_alpha);
   }
   std::string decode_problem(const std::string& bytes, const std::filesystem::path& name) const override {
     const LibpngLines quiet;

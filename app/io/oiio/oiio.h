@@ -31,7 +31,7 @@ std::unique_ptr<ImageRowWriter> open_rows(const std::filesystem::path& path, Ima
 
 // codec.cpp
 ImageInfo read_info(const std::string& bytes, const std::filesystem::path& name);
-Image read(const std::string& bytes, const std::filesystem::path& name);
+Image read(const std::string& bytes, const std::filesystem::path& name, bool straight_alpha);
 std::string decode_problem(const std::string& bytes, const std::filesystem::path& name);
 Image quantize_8bit(const Image& image);
 
