@@ -90,7 +90,7 @@ Image read_state_file(const fs::path& path, const std::string& fingerprint, std:
     why = "it was made for another frame or run";
     return {};
   }
-  return codec.read(bytes, path);
+  return codec.read(bytes, path, false);  // EXR: stored as drawn, associated
 }
 
 // read_checkpoint(), with why it is empty in `why`.

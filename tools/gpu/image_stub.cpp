@@ -4,7 +4,7 @@
 #include "io/image_io.h"
 
 namespace ms {
-Image read_image(const std::filesystem::path& path) {
+Image read_image(const std::filesystem::path& path, AlphaMode) {
   fail_system("images (textures) are not built into marchstudio-gpubench", path.string());
 }
 }  // namespace ms
