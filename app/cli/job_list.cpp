@@ -17,6 +17,7 @@
 #include "cli/override_flags.h"
 #include "cli/render_cmd.h"
 #include "scene/suggest.h"
+#include "shader/json_brief.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -35,7 +36,7 @@ struct KeyValue {
 };
 
 [[noreturn]] void wrong_type(const KeyValue& kv, const std::string& expected) {
-  fail_input("'" + kv.key + "' must be " + expected + ", not " + kv.value.dump(), {}, 0, kv.key);
+  fail_input("'" + kv.key + "' must be " + expected + ", not " + json_brief(kv.value), {}, 0, kv.key);
 }
 std::string text(const KeyValue& kv) {
   if (!kv.value.is_string()) wrong_type(kv, "a string");
@@ -147,7 +148,7 @@ RenderJob job_from_line(const std::string& line, const RenderArgs& defaults, con
     if (const std::size_t close = what.find("] "); close != std::string::npos) what = what.substr(close + 2);
     fail_input("not a JSON object: " + what, {}, 0, {}, "one object per line, e.g. {\"scene\": \"a.toml\"}");
   }
-  if (!obj.is_object()) fail_input("not a JSON object: " + obj.dump(), {}, 0, {}, "one object per line");
+  if (!obj.is_object()) fail_input("not a JSON object: " + json_brief(obj), {}, 0, {}, "one object per line");
   RenderArgs a = defaults;
   a.output.clear();  // -o names one file; a job names its own
   a.input.clear();

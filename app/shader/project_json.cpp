@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "core/error.h"
+#include "shader/json_brief.h"
 
 namespace ms {
 namespace {
@@ -259,7 +260,7 @@ class Loader {
       shader = &root["Shader"];
       prefix = "Shader.";
     } else if (root.is_object() && root.contains("Error")) {
-      fail("Error", "the file is an error from the Shadertoy API: " + root["Error"].dump(), "download the shader again");
+      fail("Error", "the file is an error from the Shadertoy API: " + json_brief(root["Error"], 200), "download the shader again");
     }
     if (!shader->is_object() || !shader->contains("renderpass") || !(*shader)["renderpass"].is_array())
       fail(prefix + "renderpass", "no 'renderpass' array: this is not Shadertoy JSON",

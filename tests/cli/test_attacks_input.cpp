@@ -128,8 +128,10 @@ TEST(NonRegularInputs, AreRefusedAtOnceAndNamedForWhatTheyAre) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_LT(seconds_since(t0), 10.0) << c.a;
   }
-  // The same reader for scenes and shaders.
-  const RunResult s = run_marchstudio({"render", "fifo.png"}, dir.path());
+  // The same reader for scenes and shaders (a .png input is refused as an
+  // image by its name alone, so the shader FIFO has a shader's name).
+  ASSERT_EQ(::mkfifo((dir / "fifo.glsl").c_str(), 0600), 0);
+  const RunResult s = run_marchstudio({"render", "fifo.glsl"}, dir.path());
   EXPECT_EQ(s.exit_code, 2);
   EXPECT_NE(s.err.find("is a FIFO"), std::string::npos) << s.err;
 }
