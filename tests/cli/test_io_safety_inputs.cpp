@@ -110,5 +110,19 @@ TEST(CorruptPng, ATextureGivesOurOneLineOnly) {
   }
 }
 
+// A JPEG cut inside its header: OpenImageIO reports two messages, one a
+// line; ours joins them as clauses rather than showing an escaped "\n".
+TEST(CorruptJpeg, HeaderCutShortIsOneLineWithoutEscapedBreaks) {
+  TempDir dir;
+  write_file(dir / "m.glsl", kMain);
+  ASSERT_EQ(run_marchstudio({"render", "m.glsl", "--size", "16x16", "-o", "ok.jpg"}, dir.path()).exit_code, 0);
+  write_file(dir / "cut.jpg", read_file(dir / "ok.jpg").substr(0, 100));
+  const RunResult r = run_marchstudio({"info", "cut.jpg"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("cut.jpg"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("\\n"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace ms::test

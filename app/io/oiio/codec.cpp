@@ -22,6 +22,14 @@ struct OpenedImage {
   std::unique_ptr<OIIO::ImageInput> in;
 };
 
+// OpenImageIO's error text, one message a line, as one clause: the one-line
+// error would otherwise show its line breaks escaped as "\\n".
+std::string oiio_text(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 2)) text.replace(at, 1, "; ");
+  return text;
+}
+
 OpenedImage open_image(const std::string& bytes, const fs::path& name, bool straight_alpha = false) {
   OpenedImage o;
   o.mem = std::make_unique<OIIO::Filesystem::IOMemReader>(bytes.data(), bytes.size());
@@ -29,7 +37,7 @@ OpenedImage open_image(const std::string& bytes, const fs::path& name, bool stra
   // Without this, the PNG and TIFF readers multiply RGB by alpha.
   if (straight_alpha) config.attribute("oiio:UnassociatedAlpha", 1);
   o.in = OIIO::ImageInput::open(name.string(), &config, o.mem.get());
-  if (!o.in) fail_input("cannot read image: " + OIIO::geterror(), name.string());
+  if (!o.in) fail_input("cannot read image: " + oiio_text(OIIO::geterror()), name.string());
   return o;
 }
 
@@ -107,8 +115,7 @@ Image read(const std::string& bytes, const fs::path& name, bool straight_alpha) 
                name.string());
   img.pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data())) {
-    const std::string err = in->geterror();
-    fail_input("cannot decode image: " + err, name.string());
+    fail_input("cannot decode image: " + oiio_text(in->geterror()), name.string());
   }
   in->close();
   return img;
@@ -118,14 +125,14 @@ std::string decode_problem(const std::string& bytes, const fs::path& name) {
   OIIO::Filesystem::IOMemReader mem(bytes.data(), bytes.size());
   OIIO::ImageSpec config;
   auto in = OIIO::ImageInput::open(name.string(), &config, &mem);
-  if (!in) return "unreadable: " + OIIO::geterror();
+  if (!in) return "unreadable: " + oiio_text(OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
   if (std::string why = over_budget(spec); !why.empty()) return why;
   if (is_jpeg(in.get()) && jpeg_cut_short(bytes)) return "cut short: the JPEG data ends before its end-of-image marker";
   // In the file's own pixel type: the cheapest full decode.
   std::vector<unsigned char> pixels(spec.image_bytes());
   if (!in->read_image(0, 0, 0, spec.nchannels, spec.format, pixels.data()))
-    return "cannot decode: " + in->geterror();
+    return "cannot decode: " + oiio_text(in->geterror());
   return {};
 }
 
