@@ -10,36 +10,16 @@
 
 #include "io/atomic_file.h"
 #include "io/image_io.h"
+#include "chaos_passes.h"
 #include "run.h"
 
 namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-// Buffer A: a chaotic map of its previous value, so a state from any other
-// frame shows in every later frame.
-const char* kToml =
-    "[scene]\nname = \"chaos\"\n[render]\nwidth = 32\nheight = 24\n"
-    "[[passes]]\ntype = \"buffer\"\nbuffer = \"A\"\nfile = \"a.glsl\"\niChannel0 = { buffer = \"A\" }\n"
-    "[[passes]]\ntype = \"image\"\nfile = \"img.glsl\"\niChannel0 = { buffer = \"A\" }\n";
-const char* kA =
-    "void mainImage(out vec4 o, in vec2 f) {\n"
-    "  vec4 p = texelFetch(iChannel0, ivec2(f), 0);\n"
-    "  float x = iFrame == 0 ? fract(f.x * 0.137 + f.y * 0.291) : p.x;\n"
-    "  for (int i = 0; i < 3; ++i) x = 3.9 * x * (1.0 - x);\n"
-    "  o = vec4(x, p.y + 1.0, 0.0, 1.0);\n"
-    "}\n";
-const char* kImg =
-    "void mainImage(out vec4 o, in vec2 f) { vec4 a = texelFetch(iChannel0, ivec2(f), 0); o = vec4(a.x, a.y / 64.0, "
-    "0.5, 1.0); }\n";
-
 struct Project {
   TempDir dir;
-  Project() {
-    write_file(dir / "s.toml", kToml);
-    write_file(dir / "a.glsl", kA);
-    write_file(dir / "img.glsl", kImg);
-  }
+  Project() { write_chaos_project(dir, 3, 32, 24); }
   RunResult frames(const std::string& range) {
     return run_marchstudio({"render", "s.toml", "--frames", range, "--fps", "30", "-o", "f_%d.exr"}, dir.path(),
                            "timeout 120 ");

@@ -1,4 +1,4 @@
-// Issue 14: sequences of a shader with buffers carry the buffers from
+// Sequences of a shader with buffers carry the buffers from
 // frame to frame; a run killed with SIGKILL resumes from its checkpoint
 // with frames bit-identical to an uninterrupted run's; a chunk shard
 // replays the frames before its own; stride shards are refused.
@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "io/image_io.h"
+#include "chaos_passes.h"
 #include "run.h"
 #include "test_viewer_util.h"
 
@@ -18,26 +19,7 @@ namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-// Buffer A: a chaotic map of its previous value (any lost or repeated
-// frame shows), slowed by a loop so a run can be killed half way.
-const char* kToml =
-    "[scene]\nname = \"chaos\"\n[render]\nwidth = 64\nheight = 48\n"
-    "[[passes]]\ntype = \"buffer\"\nbuffer = \"A\"\nfile = \"a.glsl\"\niChannel0 = { buffer = \"A\" }\n"
-    "[[passes]]\ntype = \"image\"\nfile = \"img.glsl\"\niChannel0 = { buffer = \"A\" }\n";
-const char* kA =
-    "void mainImage(out vec4 o, in vec2 f) {\n"
-    "  vec4 p = texelFetch(iChannel0, ivec2(f), 0);\n"
-    "  float x = iFrame == 0 ? fract(f.x * 0.137 + f.y * 0.291) : p.x;\n"
-    "  for (int i = 0; i < LOOPS; ++i) x = 3.9 * x * (1.0 - x);\n"
-    "  o = vec4(x, p.y + 1.0, 0.0, 1.0);\n"
-    "}\n";
-const char* kImg = "void mainImage(out vec4 o, in vec2 f) { vec4 a = texelFetch(iChannel0, ivec2(f), 0); o = vec4(a.x, a.y / 64.0, 0.5, 1.0); }\n";
-
-void write_project(const TempDir& dir, int loops) {
-  write_file(dir / "s.toml", kToml);
-  write_file(dir / "a.glsl", "#define LOOPS " + std::to_string(loops) + "\n" + kA);
-  write_file(dir / "img.glsl", kImg);
-}
+void write_project(const TempDir& dir, int loops) { write_chaos_project(dir, loops, 64, 48); }
 
 std::vector<std::string> frames_args(const std::string& range, const std::string& out) {
   return {"render", "s.toml", "--frames", range, "--fps", "30", "-o", out};
