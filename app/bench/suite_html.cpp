@@ -6,6 +6,7 @@
 
 #include "bench/compare.h"
 #include "bench/suite_report.h"
+#include "core/version.h"
 #include "io/image_io.h"
 #include "io/atomic_file.h"
 
@@ -36,7 +37,7 @@ Image for_display(const Image& img, bool linear) {
   return out;
 }
 
-const ImageMetadata kMeta = {{"Software", "marchstudio 0.1.0 test --report"}};
+const ImageMetadata kMeta = {{"Software", std::string(kSoftware) + " test --report"}};
 
 // Failures first: could not run, fail, warn, pass; suite order within.
 std::vector<const CaseResult*> ordered(const SuiteResult& r) {

@@ -7,6 +7,7 @@
 #include "bench/suite_gl.h"
 #include "bench/suite_html.h"
 #include "bench/suite_report.h"
+#include "core/version.h"
 #include "io/sequence.h"
 #include "io/stored_pixels.h"
 #include "render/scene_drawer.h"
@@ -121,7 +122,7 @@ void check_images(Gl& gl, const PreparedCase& pc, const RunOptions& opts, CaseRe
         if (why.empty() && cr.outcome == Outcome::fail && cr.frame == (c.frames ? f.frame : -1)) why = check_text(cr);
       if (why.empty()) why = "failed";
       fs::create_directories(ref_path.parent_path().empty() ? fs::path(".") : ref_path.parent_path(), ec);
-      write_image(still.color, ref_path, {{"Software", "marchstudio 0.1.0 test --update"}});
+      write_image(still.color, ref_path, {{"Software", std::string(kSoftware) + " test --update"}});
       r.updated.push_back({ref_path, why});
       ref = got;
       bad.clear();

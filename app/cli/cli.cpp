@@ -21,6 +21,7 @@
 #include "cli/test_cmd.h"
 #include "core/error.h"
 #include "core/utf8.h"
+#include "core/version.h"
 
 namespace ms {
 
@@ -48,7 +49,7 @@ int run_cli(int argc, char** argv) {
     argv = help_argv.data();
   }
   CLI::App app{"marchstudio: a GLSL raymarching studio for SDF scenes", "marchstudio"};
-  app.set_version_flag("--version", "marchstudio 0.1.0");
+  app.set_version_flag("--version", kSoftware);
   app.require_subcommand(1);
   RenderArgs render_args;
   CLI::App* render = add_render_command(app, render_args);

@@ -17,6 +17,7 @@
 #include "bench/outcome.h"
 #include "cli/exit_codes.h"
 #include "core/error.h"
+#include "core/version.h"
 #include "io/image_io.h"
 
 namespace ms {
@@ -257,7 +258,7 @@ int compare(const CompareArgs& a, ExitCodes codes) {
   if (!a.diff.empty()) {
     try {
       write_image(diff_heatmap(ia, ib), a.diff,
-                  {{"Software", "marchstudio 0.1.0"},
+                  {{"Software", kSoftware},
                    {"ImageDescription", "|A-B| heat map (inferno, top = max abs error " +
                                             std::to_string(m.max_abs) + "): " + a.a + " vs " + a.b}});
     } catch (const Error& e) {

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "core/hash.h"
+#include "core/version.h"
 #include "io/input_file.h"
 
 namespace ms {
@@ -10,7 +11,7 @@ namespace ms {
 std::string job_fingerprint(const LoadedInput& in, const FrameParams& fp, const ShaderSource& post,
                             const std::vector<std::string>& aovs, double fps) {
   Hash128 h;
-  h.add("marchstudio 0.1.0 fingerprint 1");
+  h.add(std::string(kSoftware) + " fingerprint 1");
   h.add(read_input_file(in.path, "input file", {}, kMaxTextInput));
   // --set changes the scene without changing the file (camera and sky are
   // uniforms, not shader text): each override's key and value.

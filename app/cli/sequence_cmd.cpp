@@ -22,6 +22,7 @@
 #include "cli/shader_dir.h"
 #include "core/error.h"
 #include "core/signal_scope.h"
+#include "core/version.h"
 #include "gl/context.h"
 #include "io/frame_writer.h"
 #include "io/direct_codec.h"
@@ -355,7 +356,7 @@ int run_sequence(const RenderArgs& a) {
       render_s += took;
       progress.rendered(f, took);
       if (a.no_write) continue;
-      ImageMetadata meta{{"Software", "marchstudio 0.1.0"},
+      ImageMetadata meta{{"Software", kSoftware},
                          {"ImageDescription", fs::path(a.input).filename().string() + " t=" + std::to_string(time) +
                                                   " spp=" + std::to_string(fp.spp) + " frame=" + std::to_string(f)}};
       add_fingerprint(meta, fingerprint(f));

@@ -14,6 +14,7 @@
 #include "cli/tiled_render.h"
 #include "core/deadline.h"
 #include "core/error.h"
+#include "core/version.h"
 #include "io/direct_codec.h"
 #include "io/image_backend.h"
 #include "io/image_io.h"
@@ -200,7 +201,7 @@ void render_still_job(const RenderJob& job, RenderSession& session) {
     std::fprintf(stderr, "marchstudio: %s: warning: %s (--strict makes this an error)\n", input.string().c_str(),
                  what.c_str());
   };
-  ImageMetadata meta{{"Software", "marchstudio 0.1.0"},
+  ImageMetadata meta{{"Software", kSoftware},
                      {"ImageDescription", input.filename().string() + " t=" + std::to_string(time) +
                                               " spp=" + std::to_string(fp.spp)}};
   add_fingerprint(meta, frame_fingerprint(job_fingerprint(in, fp, p.post_src, job.aov_channels, scene.shadertoy.fps),

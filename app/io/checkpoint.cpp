@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/version.h"
 #include "io/atomic_file.h"
 #include "io/image_backend.h"
 #include "io/image_io.h"
@@ -52,7 +53,7 @@ std::string state_key(const std::string& text) {
 
 void write_checkpoint(const fs::path& path, const BufferState& all_state, const std::string& fingerprint) {
   if (all_state.empty()) return;
-  ImageMetadata meta{{"Software", "marchstudio 0.1.0 sequence state"}};
+  ImageMetadata meta{{"Software", std::string(kSoftware) + " sequence state"}};
   if (!fingerprint.empty()) add_fingerprint(meta, fingerprint);
   // Cube A beside, written first: the main file marks a complete checkpoint.
   BufferState state;

@@ -14,6 +14,7 @@
 #include <imgui.h>
 
 #include "core/error.h"
+#include "core/version.h"
 #include "io/image_io.h"
 #include "live/capture.h"
 #include "render/still.h"
@@ -230,7 +231,7 @@ void FrameDrawer::capture(const fs::path& dir, int k, LiveLog& log) {
     std::error_code ec;
     fs::create_directories(dir, ec);
     const fs::path path = dir / ("frame_" + std::to_string(k) + ".png");
-    write_image(read_color(), path, {{"Software", "marchstudio 0.1.0 view"}});
+    write_image(read_color(), path, {{"Software", std::string(kSoftware) + " view"}});
     log.line("capture " + std::to_string(k) + " " + path.string());
   } catch (const Error& e) {
     log.line("capture " + std::to_string(k) + " failed -- " + e.what());
@@ -258,7 +259,7 @@ void FrameDrawer::screenshot(const fs::path& path, int w, int h) {
   Image img = read_color();
   take_flagged(img);
   write_image(img, path,
-              {{"Software", "marchstudio 0.1.0 view"},
+              {{"Software", std::string(kSoftware) + " view"},
                {"ImageDescription", session_.scene().name + " t=" + std::to_string(s_.time) +
                                         " spp=" + std::to_string(fp.spp) + " debug_view=" +
                                         std::to_string(session_.compiled_debug_view())}});
@@ -269,7 +270,7 @@ void FrameDrawer::save_accumulated(const fs::path& path, LiveLog& log) {
   check_output_path(path);
   const int n = std::max(1, accum_.samples());
   write_image(read_color(), path,
-              {{"Software", "marchstudio 0.1.0 view"},
+              {{"Software", std::string(kSoftware) + " view"},
                {"ImageDescription", session_.scene().name + " t=" + std::to_string(s_.time) + " spp=" +
                                         std::to_string(n) + " accumulated debug_view=" +
                                         std::to_string(session_.compiled_debug_view())}});
@@ -278,7 +279,7 @@ void FrameDrawer::save_accumulated(const fs::path& path, LiveLog& log) {
 
 void FrameDrawer::window_shot(const fs::path& path, LiveLog& log) {
   try {
-    write_image(grab_window(fbw_, fbh_), path, {{"Software", "marchstudio 0.1.0 view"}});
+    write_image(grab_window(fbw_, fbh_), path, {{"Software", std::string(kSoftware) + " view"}});
     log.line("window_shot " + path.string());
   } catch (const Error& e) {
     log.line(std::string("window_shot failed -- ") + e.what());
