@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The expected values of tests/unit/test_flip.cpp, from NVIDIA's own FLIP
 implementation (PyPI package flip-evaluator 1.7), on the same synthetic image
-pairs the test builds. Used only to check our implementation (bench/flip.cpp,
+pairs the test builds. Used only to check our implementation (io/flip.cpp,
 written from the paper); nothing of it is in marchstudio. Run it in a
 virtual environment:
   python3 -m venv /tmp/flipvenv && /tmp/flipvenv/bin/pip install flip-evaluator==1.7 numpy

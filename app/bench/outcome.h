@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "bench/compare.h"
+#include "io/compare.h"
 #include "core/error.h"
 
 namespace ms {

@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-#include "bench/compare.h"
+#include "io/compare.h"
 
 namespace ms {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "bench/compare.h"
+#include "io/compare.h"
 #include "bench/suite_report.h"
 #include "core/version.h"
 #include "io/image_io.h"

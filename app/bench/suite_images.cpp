@@ -3,7 +3,7 @@
 #include <cstring>
 #include <optional>
 
-#include "bench/flip.h"
+#include "io/flip.h"
 #include "bench/suite_gl.h"
 #include "bench/suite_html.h"
 #include "bench/suite_report.h"

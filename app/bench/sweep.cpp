@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "bench/clock.h"
-#include "bench/compare.h"
+#include "io/compare.h"
 #include "bench/sweep_exact.h"
 #include "core/error.h"
 #include "render/aov.h"

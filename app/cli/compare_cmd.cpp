@@ -12,8 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bench/compare.h"
-#include "bench/flip.h"
+#include "io/compare.h"
+#include "io/flip.h"
 #include "bench/outcome.h"
 #include "cli/exit_codes.h"
 #include "core/error.h"

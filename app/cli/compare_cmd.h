@@ -1,7 +1,7 @@
 // `marchstudio compare A B`: image metrics of B against the reference A,
 // with a threshold on one of them deciding the exit code (0 within, 1 over;
 // or idiff's 0 pass, 1 warn, 2 fail, 4 could not run), so it drops straight
-// into CI. Metrics live in bench/compare.h.
+// into CI. Metrics live in io/compare.h.
 #pragma once
 #include <string>
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <system_error>
 
-#include "shader/project.h"
+#include "scene/project.h"
 
 namespace ms {
 namespace fs = std::filesystem;

@@ -18,7 +18,7 @@ const char* kComponents[] = {"R", "G", "B", "A"};
 
 std::string letter(int buffer) { return std::string(1, static_cast<char>('A' + buffer)); }
 
-constexpr int kCube = 4;  // shader/project.h's kCubeA: Shadertoy's Cube A, six faces stacked
+constexpr int kCube = 4;  // scene/project.h's kCubeA: Shadertoy's Cube A, six faces stacked
 
 }  // namespace
 

@@ -6,7 +6,7 @@
 //   write_checkpoint(checkpoint_path(frame_path, key), {{0, a}, {2, c}}, fingerprint);
 //   auto state = read_checkpoint(path, buffers, w, h, fingerprint, &why);  // empty: why not
 //
-// Shadertoy's Cube A (index 4, shader/project.h's kCubeA; six faces stacked,
+// Shadertoy's Cube A (index 4, scene/project.h's kCubeA; six faces stacked,
 // not the image's size) goes in a second file beside it,
 // ".<frame file name>.<key>.cube.state.exr", written before the main file,
 // which marks the checkpoint complete; with Cube A alone the main file is a

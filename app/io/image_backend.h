@@ -11,7 +11,7 @@
 //   image_backend().write(img, path, meta);  // waits for the load if needed
 //
 // The callers are io/image_io.cpp, io/image_stream.cpp, io/stored_pixels.cpp,
-// io/sequence.cpp, bench/compare.cpp and bench/plot.cpp; nothing else calls
+// io/sequence.cpp, io/compare.cpp and bench/plot.cpp; nothing else calls
 // the backend, and nothing but io/oiio/ includes an OpenImageIO header.
 #pragma once
 #include <filesystem>
@@ -22,7 +22,7 @@
 #include <array>
 #include <memory>
 
-#include "bench/compare.h"
+#include "io/compare.h"
 #include "io/image.h"
 #include "io/image_io.h"
 #include "io/image_stream.h"
@@ -65,7 +65,7 @@ class ImageBackend {
   virtual std::string decode_problem(const std::string& bytes, const std::filesystem::path& name) const = 0;
   // stored_pixels() for an 8-bit format: the codec's own float conversion.
   virtual Image quantize_8bit(const Image& image) const = 0;
-  // bench/compare.h: the metrics but LDR-FLIP, and the heat map.
+  // io/compare.h: the metrics but LDR-FLIP, and the heat map.
   virtual CompareMetrics compare(const Image& a, const Image& b, const CompareOptions& opts) const = 0;
   virtual Image diff_heatmap(const Image& a, const Image& b, float scale) const = 0;
   // A width x height canvas filled with `background`; text in DejaVu Sans

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "io/cube_faces.h"
-#include "shader/project.h"
+#include "scene/project.h"
 
 namespace ms {
 

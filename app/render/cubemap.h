@@ -9,7 +9,7 @@
 #include "gl/gl.h"
 #include "io/cube_faces.h"
 #include "io/image.h"
-#include "shader/project.h"
+#include "scene/project.h"
 
 namespace ms {
 

@@ -11,7 +11,7 @@
 
 #include "render/graph.h"
 #include "shader/assemble.h"
-#include "shader/project.h"
+#include "scene/project.h"
 #include "shader/shadertoy_media.h"
 
 namespace ms {

@@ -11,7 +11,7 @@
 
 #include "gl/gl.h"
 #include "io/video_input.h"
-#include "shader/project.h"
+#include "scene/project.h"
 
 namespace ms {
 

@@ -31,7 +31,7 @@ namespace ms {
 void read_shadertoy_settings(const Reader& r, const toml::table& root, const std::filesystem::path& scene_file,
                              ShadertoySettings& out);
 
-// [[passes]] into a checked ShaderProject (shader/project.h); null when the
+// [[passes]] into a checked ShaderProject (scene/project.h); null when the
 // file has none.
 std::shared_ptr<const ShaderProject> read_passes(const Reader& r, const toml::table& root,
                                                  const std::filesystem::path& scene_file,

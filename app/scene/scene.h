@@ -10,7 +10,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "shader/project.h"
+#include "scene/project.h"
 
 namespace ms {
 

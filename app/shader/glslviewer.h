@@ -15,7 +15,7 @@
 
 #include "shader/assemble.h"
 #include "shader/preprocess.h"
-#include "shader/project.h"
+#include "scene/project.h"
 
 namespace ms {
 

@@ -1,5 +1,5 @@
 // Shadertoy's JSON, as the API serves it and as the site exports it, into
-// a ShaderProject (shader/project.h).
+// a ShaderProject (scene/project.h).
 //
 //   API:    {"Shader": {"info": {...}, "renderpass": [{"name", "type",
 //            "code", "inputs": [{"id", "src", "ctype", "channel",
@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-#include "shader/project.h"
+#include "scene/project.h"
 
 namespace ms {
 

@@ -1,6 +1,6 @@
 // Shadertoy shaders as #version 450 core fragment shaders. A file (a .glsl
 // with mainImage, or Shadertoy's JSON) becomes a ShaderProject
-// (shader/project.h); each of its passes is assembled with a generated
+// (scene/project.h); each of its passes is assembled with a generated
 // wrapper that declares Shadertoy's uniforms and typed channels, defines
 // HW_PERFORMANCE, puts the Common source first, renames desktop-only
 // keywords (shader/es_compat.h) and calls mainImage from main().
@@ -13,7 +13,7 @@
 
 #include "shader/assemble.h"
 #include "shader/preprocess.h"
-#include "shader/project.h"
+#include "scene/project.h"
 
 namespace ms {
 

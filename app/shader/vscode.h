@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-#include "shader/project.h"
+#include "scene/project.h"
 
 namespace ms {
 

@@ -12,7 +12,7 @@
 #include "core/error.h"
 #include "fuzz_util.h"
 #include "shader/es_compat.h"
-#include "shader/project.h"
+#include "scene/project.h"
 #include "shader/project_json.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,11 +1,11 @@
-// bench/compare: the metric functions on small synthetic images whose
+// io/compare: the metric functions on small synthetic images whose
 // metrics are known in closed form.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "bench/compare.h"
+#include "io/compare.h"
 #include "core/error.h"
 
 namespace ms {

@@ -1,4 +1,4 @@
-// LDR-FLIP (bench/flip.h), written from the paper, against NVIDIA's own
+// LDR-FLIP (io/flip.h), written from the paper, against NVIDIA's own
 // implementation: the expected values come from the flip-evaluator 1.7
 // package on the same synthetic pairs (tools/flip-reference.py prints them).
 #include <gtest/gtest.h>
@@ -6,8 +6,8 @@
 #include <cmath>
 #include <functional>
 
-#include "bench/compare.h"
-#include "bench/flip.h"
+#include "io/compare.h"
+#include "io/flip.h"
 
 namespace ms {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "shader/project.h"
+#include "scene/project.h"
 #include "shader/project_json.h"
 
 namespace ms {

@@ -1,6 +1,6 @@
-// bench/compare.h's metrics and heat map with OpenImageIO's ImageBufAlgo
+// io/compare.h's metrics and heat map with OpenImageIO's ImageBufAlgo
 // (compare, absdiff, minchan, computePixelStats, color_map): no loops of
-// our own over pixels. LDR-FLIP is bench/flip.cpp's, in the executable.
+// our own over pixels. LDR-FLIP is io/flip.cpp's, in the executable.
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <algorithm>

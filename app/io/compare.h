@@ -2,7 +2,7 @@
 // images in, numbers out; no files, no printing. All arithmetic over pixels
 // is OpenImageIO's ImageBufAlgo (compare, absdiff, minchan,
 // computePixelStats, color_map, in the image module io/oiio/compare.cpp),
-// not loops of our own, except LDR-FLIP, which OpenImageIO lacks (bench/flip.h).
+// not loops of our own, except LDR-FLIP, which OpenImageIO lacks (io/flip.h).
 #pragma once
 #include <cstdint>
 #include <limits>
@@ -25,7 +25,7 @@ struct CompareOptions {
   // exceeds this. 1/255 lets through the one-level rounding differences that
   // two GL drivers produce in 8-bit output, and counts anything larger.
   float pixel_threshold = 1.0f / 255.0f;
-  // Also compute LDR-FLIP (bench/flip.h) at this many pixels per degree
+  // Also compute LDR-FLIP (io/flip.h) at this many pixels per degree
   // (0: not computed; its figures stay NaN). Image overload only.
   double flip_ppd = 0.0;
 };

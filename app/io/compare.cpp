@@ -1,10 +1,10 @@
-#include "bench/compare.h"
+#include "io/compare.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "bench/flip.h"
+#include "io/flip.h"
 #include "core/error.h"
 #include "io/image_backend.h"
 

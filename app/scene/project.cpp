@@ -1,4 +1,4 @@
-#include "shader/project.h"
+#include "scene/project.h"
 
 #include "core/error.h"
 

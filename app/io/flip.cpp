@@ -1,4 +1,4 @@
-#include "bench/flip.h"
+#include "io/flip.h"
 
 #include <algorithm>
 #include <array>
