@@ -48,23 +48,6 @@ void check_cube_memory(int size, const std::string& file) {
 
 }  // namespace
 
-std::array<fs::path, 6> cube_face_files(const fs::path& first) {
-  std::array<fs::path, 6> out;
-  out[0] = first;
-  for (int i = 1; i < 6; ++i)
-    out[i] = first.parent_path() / (first.stem().string() + "_" + std::to_string(i) + first.extension().string());
-  return out;
-}
-
-std::array<fs::path, 6> cube_wildcard_files(const std::string& pattern) {
-  static const char* names[] = {"px", "nx", "py", "ny", "pz", "nz"};
-  std::array<fs::path, 6> out;
-  const size_t at = pattern.find("{}");
-  if (at == std::string::npos) return out;
-  for (int i = 0; i < 6; ++i) out[i] = std::string(pattern).replace(at, 2, names[i]);
-  return out;
-}
-
 CubeFaces read_cube_faces(const std::array<fs::path, 6>& files) {
   static const char* names[] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
   CubeFaces c;
