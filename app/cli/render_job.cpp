@@ -52,8 +52,8 @@ RenderJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::
   if (a.tile_still < 0) fail_input("--tile-still must be >= 0", {}, 0, "--tile-still");
   job.tile_size = a.tile_size;
   job.tile_still = a.tile_still;
-  job.backend = parse_backend(a.backend);
-  if (!a.size.empty()) job.size = parse_size_flag(a.size);
+  job.backend = a.backend;
+  job.size = a.size;
   for (const std::string& d : a.disable) check_one_of(d, kEffectNames, "--disable");
   job.disable = a.disable;
   if (!a.preset.empty()) check_one_of(a.preset, quality_preset_names(), "--preset");
@@ -67,8 +67,8 @@ RenderJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::
   job.strict = a.strict;
   job.verbose = a.verbose;
   job.shadertoy = a.shadertoy;
-  job.dispatch = parse_dispatch(a.dispatch);  // auto: chosen once the context exists (cli/dispatch_probe.h)
-  job.compute_group = parse_compute_group(a.compute_group);
+  job.dispatch = a.dispatch;  // auto: chosen once the context exists (cli/dispatch_probe.h)
+  job.compute_group = a.compute_group;
   job.overrides = a.overrides;
 
   job.output = !output.empty()     ? output

@@ -31,7 +31,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   CLI::App* cmd =
       app.add_subcommand("sweep", "Frame time against error over a grid of quality settings (docs/speed-vs-error.md)");
   cmd->add_option("scene", a.input, "Scene .toml")->required();
-  cmd->add_option("--size", a.size, "Image size WxH (default 640x360)");
+  add_size_flag(cmd, "--size", a.size, "Image size WxH (default 640x360)");
   cmd->add_option("--frames", a.frames, "Timed frames per row in each round (default 5)");
   cmd->add_option("--rounds", a.rounds,
                   "Timing rounds over all rows; a row's time is its best round's median (default 3)");
@@ -56,8 +56,8 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Measure the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   add_override_flags(cmd, a.overrides);
-  cmd->add_option("--dispatch", a.dispatch,
-                  "Draw every row as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
+  add_dispatch_flag(cmd, a.dispatch,
+                    "Draw every row as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
   add_compute_group_flag(cmd, a.compute_group);
   return cmd;
 }
@@ -69,8 +69,10 @@ void check_range(int v, int lo, int hi, const char* flag) {
     fail_input(std::string(flag) + " must be in " + std::to_string(lo) + ".." + std::to_string(hi), {}, 0, flag);
 }
 
+std::string size_text(ImageSize s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }
+
 std::string command_line(const SweepArgs& a) {
-  std::string c = "marchstudio sweep " + a.input + " --size " + a.size + " --frames " + std::to_string(a.frames) +
+  std::string c = "marchstudio sweep " + a.input + " --size " + size_text(a.size) + " --frames " + std::to_string(a.frames) +
                   " --rounds " + std::to_string(a.rounds) + " --warmup " + std::to_string(a.warmup) + " --spp " + std::to_string(a.spp) + " --ref-spp " +
                   std::to_string(a.ref_spp) + " --grid " + a.grid;
   if (a.preset != "balanced") c += " --preset " + a.preset;
@@ -79,9 +81,9 @@ std::string command_line(const SweepArgs& a) {
     c += " --only ";
     for (size_t i = 0; i < a.only.size(); ++i) c += (i ? "," : "") + a.only[i];
   }
-  if (a.backend != "auto") c += " --backend " + a.backend;
+  if (a.backend != Backend::automatic) c += std::string(" --backend ") + backend_name(a.backend);
   if (a.no_specialize) c += " --no-specialize";
-  if (a.dispatch != "fragment") c += " --dispatch " + a.dispatch;
+  if (a.dispatch != Dispatch::fragment) c += std::string(" --dispatch ") + dispatch_name(a.dispatch);
   for (const std::string& o : a.overrides.as_given) {  // "--set KEY=VALUE": the value quoted, brackets are shell globs
     const size_t space = o.find(' ');
     std::string value = o.substr(space + 1);
@@ -94,11 +96,11 @@ std::string command_line(const SweepArgs& a) {
 }  // namespace
 
 int run_sweep_command(const SweepArgs& a) {
-  const Backend backend = parse_backend(a.backend);
+  const Backend backend = a.backend;
   // The shader render and bench build: specialized to the scene (and each row's quality).
   const AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
   SweepSettings s;
-  const ImageSize size = parse_size_flag(a.size);
+  const ImageSize size = a.size;
   s.width = size.width;
   s.height = size.height;
   check_range(a.frames, 1, 10000, "--frames");
@@ -118,8 +120,8 @@ int run_sweep_command(const SweepArgs& a) {
     fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
                "wrap the map in a scene .toml");
   s.time = in.scene.render.time;
-  s.dispatch = parse_dispatch(a.dispatch);
-  const std::optional<ComputeGroup> group = parse_compute_group(a.compute_group);
+  s.dispatch = a.dispatch;
+  const std::optional<ComputeGroup> group = a.compute_group;
   s.group = group.value_or(ComputeGroup{});
   check_compute_input(s.dispatch, in, false);
 
@@ -172,7 +174,7 @@ int run_sweep_command(const SweepArgs& a) {
   const SweepSubject subject{a.input, in.scene.name, command_line(a), specialization_name(opts.specialize)};
   write_file_atomic(csv, sweep_csv(r));
   write_file_atomic(json, sweep_json(subject, s, r));
-  const SweepPlot plot = plot_sweep(r, in.scene.name + ", " + a.size + ", " + r.gl_renderer);
+  const SweepPlot plot = plot_sweep(r, in.scene.name + ", " + size_text(a.size) + ", " + r.gl_renderer);
   write_image(plot.image, png);
   if (!plot.has_text && !a.quiet)
     std::fprintf(stderr, "sweep: no usable font for the plot's labels; drawn without text\n");

@@ -50,9 +50,11 @@ CLI::App* add_test_command(CLI::App& app, TestArgs& a) {
   cmd->add_flag("--list", a.list, "Print the suite's cases, as expanded, and exit");
   cmd->add_flag("-v,--verbose", a.verbose, "Print every compile error of a case that could not run, after its line");
   add_shader_dir_flag(cmd, a.shader_dir);
-  cmd->add_option("--dispatch", a.dispatch,
-                  "Draw every case's images and counting pass as a fragment pass (default) or a compute dispatch "
-                  "(docs/gpu.md)");
+  // auto is read, then refused by run() with its reason: a suite checks one dispatch.
+  add_dispatch_flag(cmd, a.dispatch,
+                    "Draw every case's images and counting pass as a fragment pass (default) or a compute dispatch "
+                    "(docs/gpu.md)",
+                    "{fragment, compute}");
   return cmd;
 }
 
@@ -154,7 +156,7 @@ int run(const TestArgs& a, ExitCodes codes) {
   if (a.update && ci_is_set() && !a.force)
     fail_input("refusing to write references with CI set: a regression would become the new reference", {}, 0,
                "--update", "update references by hand, look at them and commit them; --force overrides");
-  const Dispatch dispatch = parse_dispatch(a.dispatch);
+  const Dispatch dispatch = a.dispatch;
   if (dispatch == Dispatch::automatic)
     fail_input("test --dispatch auto: a suite checks one dispatch at a time", {}, 0, "--dispatch",
                "give fragment or compute");

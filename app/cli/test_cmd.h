@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "render/compute_frame.h"
+
 namespace CLI {
 class App;
 }
@@ -24,7 +26,7 @@ struct TestArgs {
   bool list = false;                  // print the cases and exit
   bool verbose = false;               // -v: every compile error of a case that could not run
   std::string shader_dir;
-  std::string dispatch = "fragment";  // --dispatch fragment|compute (cli/dispatch_flag.h)
+  Dispatch dispatch = Dispatch::fragment;  // --dispatch fragment|compute (cli/dispatch_flag.h)
 };
 
 CLI::App* add_test_command(CLI::App& app, TestArgs& args);
