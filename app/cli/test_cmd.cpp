@@ -164,7 +164,7 @@ int run(const TestArgs& a, ExitCodes codes) {
   const std::vector<const SuiteCase*> selected = select_cases(suite, a.only);
   if (a.list) {
     for (const SuiteCase* c : selected)
-      std::printf("%s\t%s\t%s\t%s\n", c->name.c_str(), c->input.string().c_str(), c->backend.c_str(),
+      std::printf("%s\t%s\t%s\t%s\n", c->name.c_str(), c->input.string().c_str(), backend_name(c->backend),
                   c->reference.empty() ? "-" : c->reference.string().c_str());
     return 0;
   }
