@@ -46,15 +46,7 @@ CLI::Option* add_size_flag(CLI::App* cmd, const std::string& name, ImageSize& si
 
 CLI::Option* add_dispatch_flag(CLI::App* cmd, Dispatch& dispatch, const std::string& description,
                                const std::string& choices) {
-  return cmd
-      ->add_option_function<std::string>(
-          "--dispatch", [&dispatch](const std::string& v) { dispatch = parse_dispatch(v); }, description)
-      ->check(CLI::Validator(
-          [](std::string& v) {
-            (void)parse_dispatch(v);  // throws its own one-line error, which names the flag
-            return std::string();
-          },
-          choices));
+  return add_enum_flag(cmd, "--dispatch", dispatch, parse_dispatch, choices, description);
 }
 
 CLI::Option* add_compute_group_flag(CLI::App* cmd, std::optional<ComputeGroup>& group) {

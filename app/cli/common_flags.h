@@ -31,6 +31,22 @@ CLI::Option* add_disable_flag(CLI::App* cmd, std::vector<std::string>& effects);
 // A WxH flag (--size, --shot-size), typed as it is read: parse_size_flag,
 // whose error names `name`. Not given: `size` keeps its default.
 CLI::Option* add_size_flag(CLI::App* cmd, const std::string& name, ImageSize& size, const std::string& description);
+// An enum flag typed as it is read: `parse` turns a name into the value and
+// throws its own one-line error, naming the flag, for anything else;
+// --help lists `choices`, e.g. "{default, idiff}".
+template <class E>
+CLI::Option* add_enum_flag(CLI::App* cmd, const std::string& name, E& value, E (*parse)(const std::string&),
+                           const std::string& choices, const std::string& description) {
+  return cmd
+      ->add_option_function<std::string>(
+          name, [&value, parse](const std::string& v) { value = parse(v); }, description)
+      ->check(CLI::Validator(
+          [parse](std::string& v) {
+            (void)parse(v);  // a bad name throws here, before any callback
+            return std::string();
+          },
+          choices));
+}
 // --dispatch NAME, typed as it is read (cli/dispatch_flag.h's
 // parse_dispatch, whose one-line error a bad name gets); --help lists
 // `choices`.

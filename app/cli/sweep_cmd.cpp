@@ -38,11 +38,17 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   cmd->add_option("--warmup", a.warmup, "Untimed frames before each row's frames in each round (default 1)");
   cmd->add_option("--spp", a.spp, "Samples per pixel of every row and of the same-spp reference (default 1)");
   cmd->add_option("--ref-spp", a.ref_spp, "Samples per pixel of the supersampled reference (default 16)");
-  cmd->add_option("--grid", a.grid, "quick (about 30 rows) or full (adds a tracer factorial, about 80)")
+  cmd->add_option_function<std::string>(
+         "--grid", [&a](const std::string& v) { a.grid = parse_sweep_grid(v); },
+         "quick (about 30 rows) or full (adds a tracer factorial, about 80)")
       ->check(one_of({"quick", "full"}));
-  cmd->add_option("--time-by", a.time_by,
-                  "The frame time the fronts and the plot use: gpu (GL timer), wall, cpu (this process's CPU time: "
-                  "steadier on a shared machine), or auto (default: cpu on a software GL such as llvmpipe, else gpu)")
+  cmd->add_option_function<std::string>(
+         "--time-by",
+         [&a](const std::string& v) {
+           a.time_by = v == "auto" ? std::nullopt : std::optional<SweepClock>(parse_sweep_clock(v));
+         },
+         "The frame time the fronts and the plot use: gpu (GL timer), wall, cpu (this process's CPU time: "
+         "steadier on a shared machine), or auto (default: cpu on a software GL such as llvmpipe, else gpu)")
       ->check(one_of({"auto", "gpu", "wall", "cpu"}));
   cmd->add_option("--preset", a.preset, "The preset the rows vary around (default balanced)")
       ->check(one_of(quality_preset_names()));
@@ -74,9 +80,9 @@ std::string size_text(ImageSize s) { return std::to_string(s.width) + "x" + std:
 std::string command_line(const SweepArgs& a) {
   std::string c = "marchstudio sweep " + a.input + " --size " + size_text(a.size) + " --frames " + std::to_string(a.frames) +
                   " --rounds " + std::to_string(a.rounds) + " --warmup " + std::to_string(a.warmup) + " --spp " + std::to_string(a.spp) + " --ref-spp " +
-                  std::to_string(a.ref_spp) + " --grid " + a.grid;
+                  std::to_string(a.ref_spp) + " --grid " + sweep_grid_name(a.grid);
   if (a.preset != "balanced") c += " --preset " + a.preset;
-  if (a.time_by != "auto") c += " --time-by " + a.time_by;
+  if (a.time_by) c += std::string(" --time-by ") + sweep_clock_name(*a.time_by);
   if (!a.only.empty()) {
     c += " --only ";
     for (size_t i = 0; i < a.only.size(); ++i) c += (i ? "," : "") + a.only[i];
@@ -113,8 +119,8 @@ int run_sweep_command(const SweepArgs& a) {
   s.rounds = a.rounds;
   s.spp = a.spp;
   s.ref_spp = a.ref_spp;
-  s.grid = parse_sweep_grid(a.grid);
-  if (a.time_by != "auto") s.clock = parse_sweep_clock(a.time_by);
+  s.grid = a.grid;
+  if (a.time_by) s.clock = *a.time_by;
   const LoadedInput in = load_input(a.input, {}, opts, {}, a.overrides.set);
   if (in.shadertoy)
     fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
@@ -131,7 +137,7 @@ int run_sweep_command(const SweepArgs& a) {
     for (const std::string& name : a.only) {
       const auto it = std::find_if(configs.begin(), configs.end(), [&](const SweepConfig& c) { return c.name == name; });
       if (it == configs.end())
-        fail_input("no row '" + name + "' in the " + a.grid + " grid", {}, 0, "--only",
+        fail_input("no row '" + name + "' in the " + sweep_grid_name(a.grid) + " grid", {}, 0, "--only",
                    "row names are in the first column of the CSV, e.g. textbook, balanced, omega=1.5");
       kept.push_back(*it);
     }
@@ -151,7 +157,7 @@ int run_sweep_command(const SweepArgs& a) {
   ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
   ::setenv("__GL_SHADER_DISK_CACHE", "0", 1);
   std::unique_ptr<Context> ctx = create_headless_context(backend);
-  if (a.time_by == "auto") s.clock = ctx->info().software() ? SweepClock::cpu : SweepClock::gpu;
+  if (!a.time_by) s.clock = ctx->info().software() ? SweepClock::cpu : SweepClock::gpu;
   const Scene posed = animated(in.scene, s.time);
   if (s.dispatch == Dispatch::automatic) {  // probed on the scene's own pass (cli/dispatch_probe.h)
     PassGraph graph(in.passes);

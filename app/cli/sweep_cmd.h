@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "cli/input.h"
+#include "bench/sweep.h"
+#include "bench/sweep_grid.h"
 #include "cli/override_flags.h"
 #include "gl/context.h"
 #include "render/compute_frame.h"
@@ -25,8 +27,8 @@ struct SweepArgs {
   int warmup = 1;
   int spp = 1;
   int ref_spp = 16;
-  std::string grid = "quick";
-  std::string time_by = "auto";     // the clock of the fronts and the plot
+  SweepGrid grid = SweepGrid::quick;
+  std::optional<SweepClock> time_by;  // the clock of the fronts and the plot; none: auto
   std::vector<std::string> only;    // row names to keep (empty: the whole grid)
   std::string preset = "balanced";  // the rows vary the settings around this preset
   std::string out = ".";            // directory for <scene>.sweep.{csv,json,png}

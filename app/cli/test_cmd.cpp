@@ -44,8 +44,8 @@ CLI::App* add_test_command(CLI::App& app, TestArgs& a) {
   cmd->add_flag("--json", a.json, "Print the results as JSON on stdout (the case lines go to stderr)");
   cmd->add_flag("--update", a.update, "Write missing and failing references (refused when CI is set)");
   cmd->add_flag("--force", a.force, "Let --update run although CI is set");
-  cmd->add_option("--exit-codes", a.exit_codes,
-                  "default (0 pass, 1 fail, 2 bad input, 3 system) or idiff (0 pass, 1 warn, 2 fail, 4 could not run)");
+  add_enum_flag(cmd, "--exit-codes", a.exit_codes, parse_exit_codes, "{default, idiff}",
+                "default (0 pass, 1 fail, 2 bad input, 3 system) or idiff (0 pass, 1 warn, 2 fail, 4 could not run)");
   cmd->add_option("--only", a.only, "Run only the cases whose name matches this glob (repeatable)");
   cmd->add_flag("--list", a.list, "Print the suite's cases, as expanded, and exit");
   cmd->add_flag("-v,--verbose", a.verbose, "Print every compile error of a case that could not run, after its line");
@@ -227,8 +227,7 @@ int run(const TestArgs& a, ExitCodes codes) {
 }  // namespace
 
 int run_test(const TestArgs& a) {
-  const ExitCodes codes = parse_exit_codes(a.exit_codes);
-  return run_with_exit_codes(codes, [&] { return run(a, codes); });
+  return run_with_exit_codes(a.exit_codes, [&] { return run(a, a.exit_codes); });
 }
 
 }  // namespace ms

@@ -14,7 +14,7 @@ namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-TEST(TypedFlags, HelpListsTheDispatchChoices) {
+TEST(TypedFlags, HelpListsTheChoices) {
   for (const std::string cmd : {"render", "bench", "sweep", "view"}) {
     const RunResult r = run_marchstudio({cmd, "--help"});
     ASSERT_EQ(r.exit_code, 0) << cmd << ": " << r.err;
@@ -24,6 +24,10 @@ TEST(TypedFlags, HelpListsTheDispatchChoices) {
   const RunResult t = run_marchstudio({"test", "--help"});
   ASSERT_EQ(t.exit_code, 0) << t.err;
   EXPECT_NE(t.out.find("--dispatch TEXT:{fragment, compute}"), std::string::npos) << t.out;
+  for (const std::string cmd : {"test", "compare"}) {
+    const RunResult r = run_marchstudio({cmd, "--help"});
+    EXPECT_NE(r.out.find("--exit-codes TEXT:{default, idiff}"), std::string::npos) << cmd << ": " << r.out;
+  }
 }
 
 // Parsed at the edge: a bad value is the error although the input does not
