@@ -49,6 +49,15 @@ CLI::Option* add_dispatch_flag(CLI::App* cmd, Dispatch& dispatch, const std::str
   return add_enum_flag(cmd, "--dispatch", dispatch, parse_dispatch, choices, description);
 }
 
+CLI::Option* add_define_flag(CLI::App* cmd, std::vector<std::pair<std::string, std::string>>& defines) {
+  return cmd->add_option_function<std::vector<std::string>>(
+      "-D,--define",
+      [&defines](const std::vector<std::string>& v) {
+        for (auto& d : parse_defines(v)) defines.push_back(std::move(d));
+      },
+      "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
+}
+
 CLI::Option* add_compute_group_flag(CLI::App* cmd, std::optional<ComputeGroup>& group) {
   return cmd
       ->add_option_function<std::string>(

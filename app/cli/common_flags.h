@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/input.h"
@@ -52,6 +53,9 @@ CLI::Option* add_enum_flag(CLI::App* cmd, const std::string& name, E& value, E (
 // `choices`.
 CLI::Option* add_dispatch_flag(CLI::App* cmd, Dispatch& dispatch, const std::string& description,
                                const std::string& choices = "{fragment, compute, auto}");
+// -D,--define NAME[=VALUE], repeatable, parsed as it is read
+// (parse_defines) and added after `defines`' own.
+CLI::Option* add_define_flag(CLI::App* cmd, std::vector<std::pair<std::string, std::string>>& defines);
 // --compute-group WxH, hidden, typed as it is read (parse_compute_group);
 // none when not given.
 CLI::Option* add_compute_group_flag(CLI::App* cmd, std::optional<ComputeGroup>& group);

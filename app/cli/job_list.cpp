@@ -108,7 +108,9 @@ const std::map<std::string, Handler>& handlers() {
       {"disable", [](const KeyValue& kv, RenderArgs& a) { comma_list(kv, a.disable); }},
       {"aov", [](const KeyValue& kv, RenderArgs& a) { comma_list(kv, a.aov); }},
       {"define",
-       [](const KeyValue& kv, RenderArgs& a) { strings(kv, text, [&](const std::string& s) { a.defines.push_back(s); }); }},
+       [](const KeyValue& kv, RenderArgs& a) {
+         strings(kv, text, [&](const std::string& s) { a.defines.push_back(parse_defines({s}).front()); });
+       }},
       {"allow-include",
        [](const KeyValue& kv, RenderArgs& a) {
          strings(kv, path, [&](const std::string& s) { a.allow_include.push_back(s); });

@@ -53,7 +53,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   add_shader_dir_flag(cmd, a.shader_dir);
   add_preset_flag(cmd, a.preset);
   add_disable_flag(cmd, a.disable);
-  cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
+  add_define_flag(cmd, a.defines);
   cmd->add_option_function<std::string>(
          "--frames", [&a](const std::string& v) { a.frames = parse_frame_range(v); },
          "Render frames A..B (both included) to -o PATTERN, e.g. out/f_%04d.png")
@@ -116,7 +116,7 @@ static int run_render_watch(const RenderArgs& a) {
   live::WatchRenderOptions w;
   w.render = [once] { run_render(once); };
   w.files = [&a] {
-    AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
+    AssembleOptions opts{resolve_shader_dir(a.shader_dir), a.defines,
                          parse_allow_include(a.allow_include)};
     opts.uniforms = a.overrides.uniforms;
     std::vector<fs::path> files = {a.input};

@@ -3,6 +3,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/input.h"
@@ -41,7 +42,7 @@ struct RenderArgs {
   std::string shader_dir; // empty: MARCH_SHADER_DIR or the built-in location
   std::vector<std::string> disable;  // effects switched off: shadows, reflections, ao, checker-filter
   std::string preset;                // quality preset replacing the scene's; empty: the scene's
-  std::vector<std::string> defines;  // -D NAME[=VALUE], injected into the scene shader
+  std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE], injected into the scene shader
   // Sequences (cli/sequence_cmd.h): --frames turns `render` into one.
   std::optional<FrameRange> frames;  // --frames A..B, both included
   double fps = kSceneFps;  // time of frame f is f / fps

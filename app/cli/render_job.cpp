@@ -60,7 +60,7 @@ RenderJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::
   job.preset = a.preset;
   for (const std::string& n : a.aov) check_one_of(n, kAovNames, "--aov");
   if (!a.aov.empty()) job.aov_channels = aov_channels(a.aov);
-  job.defines = parse_defines(a.defines);
+  job.defines = a.defines;
   job.allow_include = parse_allow_include(a.allow_include);
   job.shader_dir = resolve_shader_dir(a.shader_dir);
   job.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;

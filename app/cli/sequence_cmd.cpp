@@ -152,7 +152,7 @@ int run_sequence(const RenderArgs& a) {
   if (deadline.limited()) watchdog.emplace().arm(deadline, "loading and compiling");
   // Animated values stay uniforms in a folded shader: one program serves every frame.
   AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
-  opts.defines = parse_defines(a.defines);
+  opts.defines = a.defines;
   if (aovs)
     for (const auto& d : aov_defines()) opts.defines.push_back(d);
   LoadedInput in = load_input_scene(a.input, a.disable, a.preset, a.overrides.set);

@@ -32,7 +32,7 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_option("input", a.input, "Scene .toml or Shadertoy .glsl/.frag")->required();
   add_size_flag(cmd, "--size", a.size, "Window size WxH (default: the scene's, at most 1280x720)")->check(not_empty());
   add_shader_dir_flag(cmd, a.shader_dir);
-  cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
+  add_define_flag(cmd, a.defines);
   cmd->add_option("--debug-view", a.debug_view,
                   "Start in a debug view: 0 lit, 1 steps, 2 normals, 3 depth, 4 AO, 5 shadow, 6 material id")
       ->check(CLI::Range(0, 6));
@@ -146,7 +146,7 @@ live::ScriptedDrag parse_drag(const std::string& text, const fs::path& input, co
 int run_view(const ViewArgs& a) {
   live::ViewerOptions o;
   o.input = a.input;
-  o.assemble = AssembleOptions{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
+  o.assemble = AssembleOptions{resolve_shader_dir(a.shader_dir), a.defines,
                                parse_allow_include(a.allow_include)};
   // Folded as `render` is; what the panel drags stays a uniform while it is
   // dragged (live/live_values.h).

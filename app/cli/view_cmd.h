@@ -3,6 +3,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/input.h"
@@ -21,7 +22,7 @@ struct ViewArgs {
   std::string input;
   ImageSize size;            // window --size WxH; 0x0: the scene's, at most 1280x720
   std::string shader_dir;
-  std::vector<std::string> defines;  // -D NAME[=VALUE]
+  std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE], parsed
   int debug_view = 0;
   int accumulate = -1;
   std::string record_dir, record_video;       // --record-dir, --record-video
