@@ -53,6 +53,19 @@ TEST(TypedFlags, ABadValueIsRefusedBeforeTheInputIsRead) {
   EXPECT_TRUE(dir.entries().empty());
 }
 
+// Under --exit-codes idiff a bad value is "could not run" (4), as it was
+// when the value was parsed after the flags; either order of the two flags.
+TEST(TypedFlags, IdiffCodesStillCoverABadValue) {
+  TempDir dir;
+  const std::string suite = (dir / "missing.toml").string();
+  const RunResult a = run_marchstudio({"test", suite, "--dispatch", "gpu", "--exit-codes", "idiff"});
+  EXPECT_EQ(a.exit_code, 4) << a.err;
+  EXPECT_NE(a.err.find("--dispatch 'gpu'"), std::string::npos) << a.err;
+  EXPECT_EQ(run_marchstudio({"test", suite, "--exit-codes", "idiff", "--dispatch", "gpu"}).exit_code, 4);
+  EXPECT_EQ(run_marchstudio({"test", suite, "--dispatch", "gpu"}).exit_code, 2);
+  EXPECT_EQ(run_marchstudio({"test", suite, "--exit-codes", "oiio"}).exit_code, 2);
+}
+
 // A --jobs line's missing-media is checked as the flag is (it was once
 // taken as given, and an unknown name did nothing).
 TEST(TypedFlags, AJobsMissingMediaIsOneOfTheNames) {
