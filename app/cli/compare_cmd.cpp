@@ -28,7 +28,13 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& a) {
   cmd->add_option("a", a.a, "Reference image (e.g. a golden)")->required();
   cmd->add_option("b", a.b, "Image to check")->required();
   cmd->add_option("--metric", a.metric,
-                  "Metric the threshold applies to: psnr, mae, max, fraction, flip (default psnr)");
+                  "Metric the threshold applies to: psnr, mae, max, fraction, flip (default psnr)")
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            (void)parse_metric(v);  // a bad name: its one-line error, as the flag is read
+            return std::string();
+          },
+          "{psnr, mae, max, fraction, flip}"));
   cmd->add_option("--threshold", a.threshold,
                   "psnr: fail when PSNR (dB) < X; mae, max, fraction: fail when value > X "
                   "(default: the images must match exactly)")

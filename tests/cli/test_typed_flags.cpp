@@ -28,6 +28,8 @@ TEST(TypedFlags, HelpListsTheChoices) {
     const RunResult r = run_marchstudio({cmd, "--help"});
     EXPECT_NE(r.out.find("--exit-codes TEXT:{default, idiff}"), std::string::npos) << cmd << ": " << r.out;
   }
+  const RunResult c = run_marchstudio({"compare", "--help"});
+  EXPECT_NE(c.out.find("--metric TEXT:{psnr, mae, max, fraction, flip}"), std::string::npos) << c.out;
 }
 
 // Parsed at the edge: a bad value is the error although the input does not
