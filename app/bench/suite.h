@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "gl/context.h"
 #include "io/compare.h"
 
 namespace ms {
@@ -65,7 +66,7 @@ struct SuiteCase {
   std::optional<std::pair<int, int>> frames;
   double fps = 24.0;
   int spp = 0;                        // 0: the input's
-  std::string backend = "auto";       // auto | egl | osmesa
+  Backend backend = Backend::automatic;
   std::string renderer;               // GL_RENDERER must contain this ("" = any)
   std::string preset;                 // "" = the input's
   std::vector<std::string> disable;   // shadows, reflections, ao, checker-filter, bloom

@@ -79,7 +79,7 @@ std::string row(const CaseResult& r) {
   char secs[32];
   std::snprintf(secs, sizeof secs, "%.2f s", r.seconds);
   h += "<div class=\"input\">" + std::to_string(r.width) + "x" + std::to_string(r.height) + ", " +
-       esc(r.backend.empty() ? c.backend : r.backend) + (r.renderer.empty() ? "" : ", " + esc(r.renderer)) + ", " +
+       esc(r.backend.empty() ? backend_name(c.backend) : r.backend) + (r.renderer.empty() ? "" : ", " + esc(r.renderer)) + ", " +
        secs + "</div></td>\n";
   h += "<td class=\"images\">";
   if (!c.checks.empty())

@@ -290,7 +290,7 @@ void read_case(const Reader& r, const toml::table& own, const toml::table* defau
     for (const std::string& be : backends) {
       SuiteCase e = c;
       e.input = in;
-      e.backend = be;
+      e.backend = parse_backend(be);  // one of kBackends, checked above
       e.name = fill(r, ct.line("name"), ct.path + ".name", name_template, in.stem().string(), be);
       if (!std::regex_match(e.name, name_ok))
         r.fail(ct.line("name"), ct.path + ".name", "case name " + quote(e.name) + " is not [A-Za-z0-9_.-]{1,100}",

@@ -55,7 +55,7 @@ Json case_json(const CaseResult& r) {
   j["message"] = r.message;
   j["input"] = c.input.string();
   j["reference"] = or_null(c.reference.string());
-  j["backend"] = r.backend.empty() ? c.backend : r.backend;
+  j["backend"] = r.backend.empty() ? std::string(backend_name(c.backend)) : r.backend;
   j["gl_renderer"] = or_null(r.renderer);
   j["width"] = r.width;
   j["height"] = r.height;
@@ -136,7 +136,7 @@ std::string utc_timestamp() {
 std::string details(const CaseResult& r) {
   std::string out = std::string(outcome_name(r.outcome)) + ": " + r.message + "\n";
   out += "input " + r.spec->input.string() + ", " + std::to_string(r.width) + "x" + std::to_string(r.height) + ", " +
-         (r.backend.empty() ? r.spec->backend : r.backend) + (r.renderer.empty() ? "" : ", " + r.renderer) + "\n";
+         (r.backend.empty() ? std::string(backend_name(r.spec->backend)) : r.backend) + (r.renderer.empty() ? "" : ", " + r.renderer) + "\n";
   for (const CheckResult& k : r.checks) out += "check " + check_text(k) + " [" + outcome_name(k.outcome) + "]\n";
   for (const BudgetResult& b : r.budgets) out += "budget " + b.note + " [" + outcome_name(b.outcome) + "]\n";
   if (r.nondeterministic_values)

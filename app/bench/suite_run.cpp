@@ -241,17 +241,17 @@ SuiteResult run_suite(const Suite& suite, const std::vector<PreparedCase>& cases
   SuiteResult out;
   out.cases.resize(cases.size());
   // Backends in order of first use; each gets one context for all its cases.
-  std::vector<std::string> backends;
+  std::vector<Backend> backends;
   for (const PreparedCase& pc : cases)
     if (std::find(backends.begin(), backends.end(), pc.spec->backend) == backends.end())
       backends.push_back(pc.spec->backend);
   const int total = static_cast<int>(cases.size());
   int done = 0;
-  for (const std::string& be : backends) {
+  for (const Backend be : backends) {
     std::unique_ptr<Context> ctx;
     std::optional<ErrorInfo> no_context;
     try {
-      ctx = create_headless_context(parse_backend(be));
+      ctx = create_headless_context(be);
       out.machines.emplace_back(ctx->backend(), ctx->info().renderer);
     } catch (const Error& e) {
       no_context = e.info();

@@ -30,7 +30,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
   cmd->add_option("scene", a.input, "Scene .toml, or a Shadertoy shader (.glsl, .json): its passes are timed")->required();
   add_shadertoy_flags(cmd, a.shadertoy);
   add_override_flags(cmd, a.overrides);
-  cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
+  add_size_flag(cmd, "--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
   cmd->add_option("--frames", a.frames, "Timed frames (default 30)");
   cmd->add_option("--warmup", a.warmup, "Untimed frames before them (default 3)");
   cmd->add_option("--spp", a.spp, "Samples per timed frame, 1..1024 (default: the scene's; the cost pass uses 1)")
@@ -48,8 +48,8 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
                 "the report is still printed");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Time the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
-  cmd->add_option("--dispatch", a.dispatch,
-                  "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
+  add_dispatch_flag(cmd, a.dispatch,
+                    "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
   add_compute_group_flag(cmd, a.compute_group);
   cmd->add_flag("-v,--verbose", a.verbose, "Say which dispatch --dispatch auto chose, and why");
   return cmd;
@@ -68,7 +68,7 @@ void set_shader_cache(bool allowed) {
 }  // namespace
 
 int run_bench_command(const BenchArgs& a) {
-  const Backend backend = parse_backend(a.backend);
+  const Backend backend = a.backend;
   AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
   LoadedInput in = load_input_scene(a.input, a.disable, a.preset, a.overrides.set);
   apply_shadertoy_flags(in, a.shadertoy);
@@ -84,10 +84,9 @@ int run_bench_command(const BenchArgs& a) {
   BenchSettings s;
   s.width = in.scene.render.width;
   s.height = in.scene.render.height;
-  if (!a.size.empty()) {
-    const ImageSize size = parse_size_flag(a.size);
-    s.width = size.width;
-    s.height = size.height;
+  if (a.size.width > 0) {
+    s.width = a.size.width;
+    s.height = a.size.height;
   }
   s.spp = a.spp > 0 ? a.spp : in.scene.render.spp;
   if (a.spp < 0) s.spp = a.spp;  // run_bench rejects it with the flag's name
@@ -101,8 +100,8 @@ int run_bench_command(const BenchArgs& a) {
   report_input_warnings(in.warnings, a.input, a.strict);
 
   s.shader_cache = a.shader_cache;
-  s.dispatch = parse_dispatch(a.dispatch);
-  const std::optional<ComputeGroup> group = parse_compute_group(a.compute_group);
+  s.dispatch = a.dispatch;
+  const std::optional<ComputeGroup> group = a.compute_group;
   s.group = group.value_or(ComputeGroup{});
   check_compute_input(s.dispatch, in, false);
   check_bench_settings(s);  // before the (slow) context

@@ -1,11 +1,15 @@
 // `marchstudio bench SCENE`: frame times, startup times and per-pixel cost
 // of a scene, as a table or one JSON object (docs/bench.md).
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/input.h"
 #include "cli/override_flags.h"
+#include "gl/context.h"
+#include "render/compute_frame.h"
+#include "shader/compute_wrap.h"
 
 namespace CLI {
 class App;
@@ -15,13 +19,13 @@ namespace ms {
 
 struct BenchArgs {
   std::string input;       // a scene .toml, or a Shadertoy shader (its passes timed, no cost counted)
-  std::string size;        // "WxH", empty: the scene's
+  ImageSize size;          // --size WxH; 0x0: the scene's
   int frames = 30;
   int warmup = 3;
   int spp = 0;             // 0: the scene's
   bool json = false;
   bool shader_cache = false;  // let the driver's disk cache serve the compile
-  std::string backend = "auto";
+  Backend backend = Backend::automatic;
   std::string shader_dir;  // empty: MARCH_SHADER_DIR or the built-in location
   std::vector<std::string> disable;
   std::string preset;      // empty: the scene's [quality] preset
@@ -30,8 +34,8 @@ struct BenchArgs {
   std::vector<std::string> allow_include;  // more directories #include may read
   ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
   Overrides overrides;       // --set, --uniform (cli/override_flags.h)
-  std::string dispatch = "fragment";  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
-  std::string compute_group;  // hidden --compute-group; "": 8x8, or auto's measured group
+  Dispatch dispatch = Dispatch::fragment;  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
+  std::optional<ComputeGroup> compute_group;  // hidden --compute-group; none: 8x8, or auto's measured group
   bool verbose = false;               // -v: what --dispatch auto chose, and why
 };
 

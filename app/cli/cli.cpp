@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/outcome.h"
 #include "cli/render_cmd.h"
 #include "cli/view_cmd.h"
 #include "cli/bench_cmd.h"
@@ -31,6 +32,17 @@ namespace {
 bool verbose(const CLI::App& app) {
   for (const CLI::App* sub : app.get_subcommands())
     if (const CLI::Option* v = sub->get_option_no_throw("--verbose"); v && v->count() > 0) return true;
+  return false;
+}
+
+// --exit-codes idiff on the subcommand (compare, test): a flag's value
+// refused as it is read is "could not run" (4) there, as every error after
+// parsing is.
+bool idiff_requested(const CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands())
+    if (const CLI::Option* o = sub->get_option_no_throw("--exit-codes"))
+      for (const std::string& r : o->results())
+        if (r == "idiff") return true;
   return false;
 }
 
@@ -89,9 +101,9 @@ int run_cli(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "marchstudio: %s (see 'marchstudio --help')\n", e.what());
     return static_cast<int>(Exit::bad_input);
-  } catch (const Error& e) {  // a flag's value parsed as it is read (--set, --mouse)
+  } catch (const Error& e) {  // a flag's value parsed as it is read (--set, --mouse, --dispatch)
     std::fprintf(stderr, "marchstudio: %s\n", e.what());
-    return static_cast<int>(e.code());
+    return idiff_requested(app) ? exit_code_for(ExitCodes::idiff, Outcome::error) : static_cast<int>(e.code());
   }
 
   try {

@@ -1,12 +1,17 @@
 #include "cli/common_flags.h"
 
+#include "cli/dispatch_flag.h"
 #include "cli/flag_checks.h"
 #include "scene/quality.h"
 
 namespace ms {
 
-CLI::Option* add_backend_flag(CLI::App* cmd, std::string& backend) {
-  return cmd->add_option("--backend", backend, "GL context: auto (default: EGL, else OSMesa), egl or osmesa")->check(one_of(kBackendNames));
+CLI::Option* add_backend_flag(CLI::App* cmd, Backend& backend) {
+  return cmd
+      ->add_option_function<std::string>(
+          "--backend", [&backend](const std::string& v) { backend = parse_backend(v); },
+          "GL context: auto (default: EGL, else OSMesa), egl or osmesa")
+      ->check(one_of(kBackendNames));
 }
 
 CLI::Option* add_shader_dir_flag(CLI::App* cmd, std::string& dir) {
@@ -34,9 +39,30 @@ CLI::Option* add_disable_flag(CLI::App* cmd, std::vector<std::string>& effects) 
       ->check(one_of(kEffectNames));
 }
 
-CLI::Option* add_compute_group_flag(CLI::App* cmd, std::string& group) {
+CLI::Option* add_size_flag(CLI::App* cmd, const std::string& name, ImageSize& size, const std::string& description) {
+  return cmd->add_option_function<std::string>(
+      name, [name, &size](const std::string& v) { size = parse_size_flag(v, name); }, description);
+}
+
+CLI::Option* add_dispatch_flag(CLI::App* cmd, Dispatch& dispatch, const std::string& description,
+                               const std::string& choices) {
+  return add_enum_flag(cmd, "--dispatch", dispatch, parse_dispatch, choices, description);
+}
+
+CLI::Option* add_define_flag(CLI::App* cmd, std::vector<std::pair<std::string, std::string>>& defines) {
+  return cmd->add_option_function<std::vector<std::string>>(
+      "-D,--define",
+      [&defines](const std::vector<std::string>& v) {
+        for (auto& d : parse_defines(v)) defines.push_back(std::move(d));
+      },
+      "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
+}
+
+CLI::Option* add_compute_group_flag(CLI::App* cmd, std::optional<ComputeGroup>& group) {
   return cmd
-      ->add_option("--compute-group", group, "Compute work group WxH (default 8x8; auto measures 8x8, 16x8, 16x16 and 32x4)")
+      ->add_option_function<std::string>(
+          "--compute-group", [&group](const std::string& v) { group = parse_compute_group(v); },
+          "Compute work group WxH (default 8x8; auto measures 8x8, 16x8, 16x16 and 32x4)")
       ->group("");
 }
 

@@ -15,6 +15,7 @@
 #include "io/compare.h"
 #include "io/flip.h"
 #include "bench/outcome.h"
+#include "cli/common_flags.h"
 #include "cli/exit_codes.h"
 #include "core/error.h"
 #include "core/version.h"
@@ -28,7 +29,13 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& a) {
   cmd->add_option("a", a.a, "Reference image (e.g. a golden)")->required();
   cmd->add_option("b", a.b, "Image to check")->required();
   cmd->add_option("--metric", a.metric,
-                  "Metric the threshold applies to: psnr, mae, max, fraction, flip (default psnr)");
+                  "Metric the threshold applies to: psnr, mae, max, fraction, flip (default psnr)")
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            (void)parse_metric(v);  // a bad name: its one-line error, as the flag is read
+            return std::string();
+          },
+          "{psnr, mae, max, fraction, flip}"));
   cmd->add_option("--threshold", a.threshold,
                   "psnr: fail when PSNR (dB) < X; mae, max, fraction: fail when value > X "
                   "(default: the images must match exactly)")
@@ -36,8 +43,8 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& a) {
   cmd->add_option("--warn", a.warn,
                   "Warn (pass, but report it; idiff exit code 1) when the metric is past X but within --threshold")
       ->each([&a](const std::string&) { a.warn_set = true; });
-  cmd->add_option("--exit-codes", a.exit_codes,
-                  "default (0 pass, 1 fail, 2 bad input, 3 system) or idiff (0 pass, 1 warn, 2 fail, 4 could not run)");
+  add_enum_flag(cmd, "--exit-codes", a.exit_codes, parse_exit_codes, "{default, idiff}",
+                "default (0 pass, 1 fail, 2 bad input, 3 system) or idiff (0 pass, 1 warn, 2 fail, 4 could not run)");
   cmd->add_option("--pixel-threshold", a.pixel_threshold,
                   "A pixel is 'different' when a channel differs by more than T (default 1/255)");
   cmd->add_option("--diff", a.diff, "Write a heat map of |A-B| here (.png .jpg .tif .exr)");
@@ -289,8 +296,7 @@ int compare(const CompareArgs& a, ExitCodes codes) {
 }  // namespace
 
 int run_compare(const CompareArgs& a) {
-  const ExitCodes codes = parse_exit_codes(a.exit_codes);
-  return run_with_exit_codes(codes, [&] { return compare(a, codes); });
+  return run_with_exit_codes(a.exit_codes, [&] { return compare(a, a.exit_codes); });
 }
 
 }  // namespace ms

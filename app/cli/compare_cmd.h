@@ -5,6 +5,8 @@
 #pragma once
 #include <string>
 
+#include "bench/outcome.h"
+
 namespace CLI {
 class App;
 }
@@ -22,7 +24,7 @@ struct CompareArgs {
   bool warn_set = false;
   std::string diff;               // heat map output; empty: none written
   bool json = false;
-  std::string exit_codes = "default";  // default | idiff (bench/outcome.h)
+  ExitCodes exit_codes = ExitCodes::standard;  // --exit-codes default | idiff (bench/outcome.h)
 };
 
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <regex>
+#include <string_view>
 
 #include "cli/bloom_setup.h"
 #include "cli/flag_checks.h"
@@ -17,6 +18,7 @@
 #include "io/input_file.h"
 #include "scene/load.h"
 #include "scene/quality.h"
+#include "scene/suggest.h"
 #include "shader/glsl_scan.h"
 #include "shader/shadertoy.h"
 
@@ -24,6 +26,9 @@ namespace ms {
 namespace fs = std::filesystem;
 
 namespace {
+
+// MissingMedia's values, in its order.
+const std::vector<std::string> kMissingMediaNames = {"error", "noise", "black"};
 
 void apply_disable(Quality& q, const std::vector<std::string>& off) {
   for (const std::string& name : off) {
@@ -137,7 +142,7 @@ void assemble_input(LoadedInput& in, const AssembleOptions& opts) {
 
 void apply_shadertoy_flags(LoadedInput& in, const ShadertoyFlags& f) {
   if (!in.shadertoy) {
-    const char* flag = !f.media_dir.empty() ? "--media-dir" : !f.missing_media.empty() ? "--missing-media"
+    const char* flag = !f.media_dir.empty() ? "--media-dir" : f.missing_media ? "--missing-media"
                        : !f.mouse.empty() ? "--mouse" : !f.textures.empty() ? "--texture" : nullptr;
     if (flag)
       fail_input(std::string(flag) + " has no effect on an SDF scene", in.path.string(), 0, flag,
@@ -152,13 +157,18 @@ void apply_shadertoy_flags(LoadedInput& in, const ShadertoyFlags& f) {
     s.media_dir = f.media_dir;
     s.media_dir_flag = f.media_dir;  // the user's own choice: media may be read from it
   }
-  if (f.missing_media == "error") s.missing_media = MissingMedia::error;
-  if (f.missing_media == "noise") s.missing_media = MissingMedia::noise;
-  if (f.missing_media == "black") s.missing_media = MissingMedia::black;
+  if (f.missing_media) s.missing_media = *f.missing_media;
   if (f.mouse.size() == 4) std::copy(f.mouse.begin(), f.mouse.end(), s.mouse);
   if (f.fps > 0) s.fps = f.fps;
   for (const NamedTexture& t : f.textures) check_input_file(t.file, "texture", "--texture");
   s.textures = f.textures;
+}
+
+MissingMedia parse_missing_media(const std::string& text) {
+  for (size_t i = 0; i < kMissingMediaNames.size(); ++i)
+    if (text == kMissingMediaNames[i]) return static_cast<MissingMedia>(i);
+  std::vector<std::string_view> views(kMissingMediaNames.begin(), kMissingMediaNames.end());
+  fail_input("'" + text + "' is not one of error, noise, black", {}, 0, "--missing-media", did_you_mean(text, views));
 }
 
 NamedTexture parse_texture_flag(const std::string& text, int unnamed_before) {
@@ -183,9 +193,10 @@ void add_shadertoy_flags(CLI::App* cmd, ShadertoyFlags& f) {
                   "Where a Shadertoy shader's media (/media/a/<name>) are found, by file name (default: the shader's "
                   "directory, or the scene's [shadertoy] media_dir)")
       ->check(not_empty());
-  cmd->add_option("--missing-media", f.missing_media,
-                  "For a texture not in the media directory: error (default), noise or black stand-ins, with a warning")
-      ->check(one_of({"error", "noise", "black"}));
+  cmd->add_option_function<std::string>(
+         "--missing-media", [&f](const std::string& v) { f.missing_media = parse_missing_media(v); },
+         "For a texture not in the media directory: error (default), noise or black stand-ins, with a warning")
+      ->check(one_of(kMissingMediaNames));
   cmd->add_option_function<std::string>(
          "--mouse", [&f](const std::string& v) { f.mouse = parse_mouse_flag(v); },
          "iMouse of a Shadertoy shader: X,Y,Z,W in pixels, or u_mouse of a glslViewer shader: X,Y (default: the scene's, "

@@ -5,6 +5,7 @@
 // context exists: shaders, media, flags.
 #pragma once
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,7 @@ struct LoadedInput {
 // Shadertoy flags over a scene file's [shadertoy] (empty/negative: keep).
 struct ShadertoyFlags {
   std::string media_dir;
-  std::string missing_media;  // error, noise, black
+  std::optional<MissingMedia> missing_media;  // none: the scene's
   std::vector<float> mouse;   // 4 values
   double fps = 0.0;
   std::vector<NamedTexture> textures;  // --texture [NAME=]FILE, in order: u_tex0.. unless named
@@ -57,6 +58,9 @@ std::vector<std::string> unbound_warnings(const PassGraph& graph);
 // "X,Y,Z,W" as iMouse, or "X,Y" (glslViewer's u_mouse; Z and W 0). Throws
 // bad_input naming --mouse.
 std::vector<float> parse_mouse_flag(const std::string& text);
+// "error", "noise" or "black" (--missing-media). Throws bad_input naming
+// the flag, with a did-you-mean.
+MissingMedia parse_missing_media(const std::string& text);
 // One --texture: "NAME=FILE" binds NAME, "FILE" binds u_tex<unnamed_before>;
 // the file made absolute (it is checked when applied).
 NamedTexture parse_texture_flag(const std::string& text, int unnamed_before);

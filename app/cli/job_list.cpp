@@ -13,6 +13,7 @@
 #include <map>
 #include <string_view>
 
+#include "cli/dispatch_flag.h"
 #include "cli/input.h"
 #include "cli/override_flags.h"
 #include "cli/render_cmd.h"
@@ -84,7 +85,7 @@ const std::map<std::string, Handler>& handlers() {
   static const std::map<std::string, Handler> h = {
       {"scene", [](const KeyValue& kv, RenderArgs& a) { a.input = path(kv); }},
       {"output", [](const KeyValue& kv, RenderArgs& a) { a.output = job_output(text(kv), kv.base, a.output_dir).string(); }},
-      {"size", [](const KeyValue& kv, RenderArgs& a) { a.size = text(kv); }},
+      {"size", [](const KeyValue& kv, RenderArgs& a) { a.size = parse_size_flag(text(kv)); }},
       {"spp", [](const KeyValue& kv, RenderArgs& a) { a.spp = integer(kv); }},
       {"time",
        [](const KeyValue& kv, RenderArgs& a) {
@@ -101,13 +102,15 @@ const std::map<std::string, Handler>& handlers() {
          a.fps = number(kv);
          a.fps_set = true;
        }},
-      {"backend", [](const KeyValue& kv, RenderArgs& a) { a.backend = text(kv); }},
+      {"backend", [](const KeyValue& kv, RenderArgs& a) { a.backend = parse_backend(text(kv)); }},
       {"shader-dir", [](const KeyValue& kv, RenderArgs& a) { a.shader_dir = path(kv); }},
       {"preset", [](const KeyValue& kv, RenderArgs& a) { a.preset = text(kv); }},
       {"disable", [](const KeyValue& kv, RenderArgs& a) { comma_list(kv, a.disable); }},
       {"aov", [](const KeyValue& kv, RenderArgs& a) { comma_list(kv, a.aov); }},
       {"define",
-       [](const KeyValue& kv, RenderArgs& a) { strings(kv, text, [&](const std::string& s) { a.defines.push_back(s); }); }},
+       [](const KeyValue& kv, RenderArgs& a) {
+         strings(kv, text, [&](const std::string& s) { a.defines.push_back(parse_defines({s}).front()); });
+       }},
       {"allow-include",
        [](const KeyValue& kv, RenderArgs& a) {
          strings(kv, path, [&](const std::string& s) { a.allow_include.push_back(s); });
@@ -128,10 +131,11 @@ const std::map<std::string, Handler>& handlers() {
        }},
       {"strict", [](const KeyValue& kv, RenderArgs& a) { a.strict = boolean(kv); }},
       {"no-specialize", [](const KeyValue& kv, RenderArgs& a) { a.no_specialize = boolean(kv); }},
-      {"dispatch", [](const KeyValue& kv, RenderArgs& a) { a.dispatch = text(kv); }},
+      {"dispatch", [](const KeyValue& kv, RenderArgs& a) { a.dispatch = parse_dispatch(text(kv)); }},
       {"timeout", [](const KeyValue& kv, RenderArgs& a) { a.timeout = number(kv); }},
       {"media-dir", [](const KeyValue& kv, RenderArgs& a) { a.shadertoy.media_dir = path(kv); }},
-      {"missing-media", [](const KeyValue& kv, RenderArgs& a) { a.shadertoy.missing_media = text(kv); }},
+      {"missing-media",
+       [](const KeyValue& kv, RenderArgs& a) { a.shadertoy.missing_media = parse_missing_media(text(kv)); }},
       {"mouse", [](const KeyValue& kv, RenderArgs& a) { a.shadertoy.mouse = parse_mouse_flag(text(kv)); }},
   };
   return h;

@@ -40,7 +40,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                   "Render the stills listed in FILE, one JSON object per line with \"scene\", \"output\" and any "
                   "flag without its dashes; the command line's flags are the defaults")
       ->check(not_empty());
-  cmd->add_option("--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
+  add_size_flag(cmd, "--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
   cmd->add_option("--time", a.time,
                   "Scene time in seconds, any finite value (default: the scene's [render] time, else 0)")
       ->check(seconds_value())
@@ -53,11 +53,13 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   add_shader_dir_flag(cmd, a.shader_dir);
   add_preset_flag(cmd, a.preset);
   add_disable_flag(cmd, a.disable);
-  cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
-  cmd->add_option("--frames", a.frames, "Render frames A..B (both included) to -o PATTERN, e.g. out/f_%04d.png")
+  add_define_flag(cmd, a.defines);
+  cmd->add_option_function<std::string>(
+         "--frames", [&a](const std::string& v) { a.frames = parse_frame_range(v); },
+         "Render frames A..B (both included) to -o PATTERN, e.g. out/f_%04d.png")
       ->check(not_empty());
-  cmd->add_option("--dispatch", a.dispatch,
-                  "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
+  add_dispatch_flag(cmd, a.dispatch,
+                    "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
   add_compute_group_flag(cmd, a.compute_group);
   add_shadertoy_flags(cmd, a.shadertoy);
   add_override_flags(cmd, a.overrides);
@@ -65,8 +67,13 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                   "Frames per second: frame f of --frames is at time f / fps (default 24; a Shadertoy shader's 60), "
                   "and a still of a shader with buffers replays round(time x fps) frames")
       ->each([&a](const std::string&) { a.fps_set = true; });
-  cmd->add_option("--shard", a.shard, "Render only shard I of N (I/N, from 0) of --frames")->check(not_empty());
-  cmd->add_option("--shard-mode", a.shard_mode, "How --shard splits the frames: stride (default) or chunk")
+  cmd->add_option_function<std::string>(
+         "--shard", [&a](const std::string& v) { a.shard = parse_shard(v); },
+         "Render only shard I of N (I/N, from 0) of --frames")
+      ->check(not_empty());
+  cmd->add_option_function<std::string>(
+         "--shard-mode", [&a](const std::string& v) { a.shard_mode = parse_shard_mode(v); },
+         "How --shard splits the frames: stride (default) or chunk")
       ->check(one_of({"stride", "chunk"}));
   cmd->add_option("--video", a.video, "Encode the --frames sequence with ffmpeg into this file (e.g. out.mp4)")
       ->check(not_empty());
@@ -109,7 +116,7 @@ static int run_render_watch(const RenderArgs& a) {
   live::WatchRenderOptions w;
   w.render = [once] { run_render(once); };
   w.files = [&a] {
-    AssembleOptions opts{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
+    AssembleOptions opts{resolve_shader_dir(a.shader_dir), a.defines,
                          parse_allow_include(a.allow_include)};
     opts.uniforms = a.overrides.uniforms;
     std::vector<fs::path> files = {a.input};

@@ -1,12 +1,18 @@
 // `marchstudio render`: a scene (.toml) or a Shadertoy shader (.glsl) to an
 // image file, headless.
 #pragma once
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/input.h"
 #include "cli/override_flags.h"
+#include "gl/context.h"
+#include "io/sequence.h"
+#include "render/compute_frame.h"
 #include "render/tiles.h"
+#include "shader/compute_wrap.h"
 
 namespace CLI {
 class App;
@@ -26,23 +32,23 @@ struct RenderArgs {
   std::string output_dir; // a batch's DIR/<stem>.<format>
   std::string format;     // png (empty), exr, tif or jpg: outputs named from the input
   std::string jobs;       // --jobs FILE: JSON lines, one still each (cli/job_list.h)
-  std::string size;       // "WxH", empty: the scene's
+  ImageSize size;         // --size WxH; 0x0: the scene's
   double time = 0.0;      // seconds; explicit default 0, never the wall clock
   bool time_set = false;
   int spp = 0;            // 0: the scene's
   int frame = 0;
   bool frame_set = false;  // else a still's frame is round(time x fps)
-  std::string backend = "auto";
+  Backend backend = Backend::automatic;
   std::string shader_dir; // empty: MARCH_SHADER_DIR or the built-in location
   std::vector<std::string> disable;  // effects switched off: shadows, reflections, ao, checker-filter
   std::string preset;                // quality preset replacing the scene's; empty: the scene's
-  std::vector<std::string> defines;  // -D NAME[=VALUE], injected into the scene shader
+  std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE], injected into the scene shader
   // Sequences (cli/sequence_cmd.h): --frames turns `render` into one.
-  std::string frames;      // "A..B", both included
+  std::optional<FrameRange> frames;  // --frames A..B, both included
   double fps = kSceneFps;  // time of frame f is f / fps
   bool fps_set = false;
-  std::string shard;       // "I/N"
-  std::string shard_mode;  // "stride" (when empty) or "chunk"
+  std::optional<Shard> shard;           // --shard I/N
+  std::optional<ShardMode> shard_mode;  // none: stride
   std::string video;       // encode the frames with ffmpeg afterwards
   bool no_write = false;   // hidden: render but discard (throughput measurements)
   bool force = false;      // a sequence renders every frame again (cli/sequence_state.h)
@@ -56,8 +62,8 @@ struct RenderArgs {
   double timeout = 0.0;      // seconds per image (each frame of --frames); 0: none (core/deadline.h)
   int tile_size = kTileSize; // hidden --tile-size: largest square per draw (render/tiles.h); 0: whole frame
   int tile_still = 0;        // hidden --tile-still: draw and stream the still in tiles of this side (tests); 0: past the limits only
-  std::string dispatch = "fragment";  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
-  std::string compute_group;  // hidden --compute-group WxH: the compute work group; "": 8x8, or auto's measured group
+  Dispatch dispatch = Dispatch::fragment;  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
+  std::optional<ComputeGroup> compute_group;  // hidden --compute-group WxH; none: 8x8, or auto's measured group
   ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
   Overrides overrides;       // --set, --uniform (cli/override_flags.h)
 };

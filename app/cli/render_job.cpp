@@ -52,23 +52,23 @@ RenderJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::
   if (a.tile_still < 0) fail_input("--tile-still must be >= 0", {}, 0, "--tile-still");
   job.tile_size = a.tile_size;
   job.tile_still = a.tile_still;
-  job.backend = parse_backend(a.backend);
-  if (!a.size.empty()) job.size = parse_size_flag(a.size);
+  job.backend = a.backend;
+  job.size = a.size;
   for (const std::string& d : a.disable) check_one_of(d, kEffectNames, "--disable");
   job.disable = a.disable;
   if (!a.preset.empty()) check_one_of(a.preset, quality_preset_names(), "--preset");
   job.preset = a.preset;
   for (const std::string& n : a.aov) check_one_of(n, kAovNames, "--aov");
   if (!a.aov.empty()) job.aov_channels = aov_channels(a.aov);
-  job.defines = parse_defines(a.defines);
+  job.defines = a.defines;
   job.allow_include = parse_allow_include(a.allow_include);
   job.shader_dir = resolve_shader_dir(a.shader_dir);
   job.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
   job.strict = a.strict;
   job.verbose = a.verbose;
   job.shadertoy = a.shadertoy;
-  job.dispatch = parse_dispatch(a.dispatch);  // auto: chosen once the context exists (cli/dispatch_probe.h)
-  job.compute_group = parse_compute_group(a.compute_group);
+  job.dispatch = a.dispatch;  // auto: chosen once the context exists (cli/dispatch_probe.h)
+  job.compute_group = a.compute_group;
   job.overrides = a.overrides;
 
   job.output = !output.empty()     ? output

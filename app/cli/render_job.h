@@ -1,8 +1,9 @@
 // One still to render, as typed and checked values: what `render`'s flags
 // (or one line of a --jobs file, cli/job_list.h) become in cli/, and the
 // only thing the still pipeline (cli/still_job.h) reads. Nothing below cli/
-// sees a flag string: sizes, backends, AOV names, defines and include
-// directories are parsed here, once, and every error names its flag.
+// sees a flag string: sizes, backends, dispatches and defines arrive typed,
+// parsed as the flag (or the job's key) was read; AOV names and include
+// directories are checked here; every error names its flag.
 //
 //   RenderJob job = make_render_job(args, args.inputs[0]);  // throws ms::Error
 //   render_still_job(job, session);                          // cli/still_job.h

@@ -90,7 +90,7 @@ struct Plan {
 };
 
 Plan plan_from_flags(const RenderArgs& a) {
-  if (a.frames.empty())
+  if (!a.frames)
     fail_input("--shard, --shard-mode, --video and --no-write need --frames", {}, 0, "--frames",
                "e.g. --frames 0..59 --fps 24 -o out/frame_%04d.png");
   if (a.time_set)
@@ -99,12 +99,12 @@ Plan plan_from_flags(const RenderArgs& a) {
   if (a.frame != 0) fail_input("--frame conflicts with --frames", {}, 0, "--frame");
   if (a.spp < 0 || a.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
   Plan p;
-  p.range = parse_frame_range(a.frames);
+  p.range = *a.frames;
   p.fps = a.fps_set ? a.fps : kDefaultFps;
   if (!std::isfinite(p.fps) || p.fps <= 0)
     fail_input("--fps must be a positive number, got " + std::to_string(p.fps), {}, 0, "--fps");
-  if (!a.shard.empty()) p.shard = parse_shard(a.shard);
-  if (!a.shard_mode.empty()) p.mode = parse_shard_mode(a.shard_mode);
+  if (a.shard) p.shard = *a.shard;
+  if (a.shard_mode) p.mode = *a.shard_mode;
   if (a.output.empty()) {
     // <stem>_%04d.png, with any '%' of the stem escaped for the pattern.
     for (char c : fs::path(a.input).stem().string()) p.pattern += c == '%' ? std::string("%%") : std::string(1, c);
@@ -125,7 +125,7 @@ Plan plan_from_flags(const RenderArgs& a) {
 }  // namespace
 
 bool wants_sequence(const RenderArgs& a) {
-  return !a.frames.empty() || !a.shard.empty() || !a.shard_mode.empty() || !a.video.empty() || a.no_write;
+  return a.frames || a.shard || a.shard_mode || !a.video.empty() || a.no_write;
 }
 
 int run_sequence(const RenderArgs& a) {
@@ -153,7 +153,7 @@ int run_sequence(const RenderArgs& a) {
   if (deadline.limited()) watchdog.emplace().arm(deadline, "loading and compiling");
   // Animated values stay uniforms in a folded shader: one program serves every frame.
   AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
-  opts.defines = parse_defines(a.defines);
+  opts.defines = a.defines;
   if (aovs)
     for (const auto& d : aov_defines()) opts.defines.push_back(d);
   LoadedInput in = load_input_scene(a.input, a.disable, a.preset, a.overrides.set);
@@ -165,10 +165,9 @@ int run_sequence(const RenderArgs& a) {
   FrameParams fp;
   fp.width = scene.render.width;
   fp.height = scene.render.height;
-  if (!a.size.empty()) {
-    const ImageSize size = parse_size_flag(a.size);
-    fp.width = size.width;
-    fp.height = size.height;
+  if (a.size.width > 0) {
+    fp.width = a.size.width;
+    fp.height = a.size.height;
   }
   fp.spp = a.spp > 0 ? a.spp : scene.render.spp;
   fp.aovs = aovs;
@@ -178,8 +177,8 @@ int run_sequence(const RenderArgs& a) {
   assemble_input(in, opts);
   report_input_warnings(in.warnings, a.input, a.strict);
   // --dispatch: refused here, before the context, as render refuses it (cli/dispatch_flag.h).
-  const Dispatch requested = parse_dispatch(a.dispatch);
-  const std::optional<ComputeGroup> group = parse_compute_group(a.compute_group);
+  const Dispatch requested = a.dispatch;
+  const std::optional<ComputeGroup> group = a.compute_group;
   check_compute_input(requested, in, false);
   const bool stateful = in.stateful();
   if (stateful && plan.shard.count > 1 && plan.mode == ShardMode::stride)
@@ -242,7 +241,7 @@ int run_sequence(const RenderArgs& a) {
   // From here to the end, encoding included: Ctrl-C and SIGTERM stop cleanly.
   StopSignals signals;
   if (!todo.empty()) {
-    std::unique_ptr<Context> ctx = create_headless_context(parse_backend(a.backend));
+    std::unique_ptr<Context> ctx = create_headless_context(a.backend);
     // A TIFF or JPEG needs the image module (PNG and EXR do not: io/direct_codec.h):
     // it loads while the shaders compile and the frame renders, not before the
     // context, whose driver dlopen would wait for it (io/image_backend.h).

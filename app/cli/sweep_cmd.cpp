@@ -31,18 +31,24 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   CLI::App* cmd =
       app.add_subcommand("sweep", "Frame time against error over a grid of quality settings (docs/speed-vs-error.md)");
   cmd->add_option("scene", a.input, "Scene .toml")->required();
-  cmd->add_option("--size", a.size, "Image size WxH (default 640x360)");
+  add_size_flag(cmd, "--size", a.size, "Image size WxH (default 640x360)");
   cmd->add_option("--frames", a.frames, "Timed frames per row in each round (default 5)");
   cmd->add_option("--rounds", a.rounds,
                   "Timing rounds over all rows; a row's time is its best round's median (default 3)");
   cmd->add_option("--warmup", a.warmup, "Untimed frames before each row's frames in each round (default 1)");
   cmd->add_option("--spp", a.spp, "Samples per pixel of every row and of the same-spp reference (default 1)");
   cmd->add_option("--ref-spp", a.ref_spp, "Samples per pixel of the supersampled reference (default 16)");
-  cmd->add_option("--grid", a.grid, "quick (about 30 rows) or full (adds a tracer factorial, about 80)")
+  cmd->add_option_function<std::string>(
+         "--grid", [&a](const std::string& v) { a.grid = parse_sweep_grid(v); },
+         "quick (about 30 rows) or full (adds a tracer factorial, about 80)")
       ->check(one_of({"quick", "full"}));
-  cmd->add_option("--time-by", a.time_by,
-                  "The frame time the fronts and the plot use: gpu (GL timer), wall, cpu (this process's CPU time: "
-                  "steadier on a shared machine), or auto (default: cpu on a software GL such as llvmpipe, else gpu)")
+  cmd->add_option_function<std::string>(
+         "--time-by",
+         [&a](const std::string& v) {
+           a.time_by = v == "auto" ? std::nullopt : std::optional<SweepClock>(parse_sweep_clock(v));
+         },
+         "The frame time the fronts and the plot use: gpu (GL timer), wall, cpu (this process's CPU time: "
+         "steadier on a shared machine), or auto (default: cpu on a software GL such as llvmpipe, else gpu)")
       ->check(one_of({"auto", "gpu", "wall", "cpu"}));
   cmd->add_option("--preset", a.preset, "The preset the rows vary around (default balanced)")
       ->check(one_of(quality_preset_names()));
@@ -56,8 +62,8 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Measure the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   add_override_flags(cmd, a.overrides);
-  cmd->add_option("--dispatch", a.dispatch,
-                  "Draw every row as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
+  add_dispatch_flag(cmd, a.dispatch,
+                    "Draw every row as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
   add_compute_group_flag(cmd, a.compute_group);
   return cmd;
 }
@@ -69,19 +75,21 @@ void check_range(int v, int lo, int hi, const char* flag) {
     fail_input(std::string(flag) + " must be in " + std::to_string(lo) + ".." + std::to_string(hi), {}, 0, flag);
 }
 
+std::string size_text(ImageSize s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }
+
 std::string command_line(const SweepArgs& a) {
-  std::string c = "marchstudio sweep " + a.input + " --size " + a.size + " --frames " + std::to_string(a.frames) +
+  std::string c = "marchstudio sweep " + a.input + " --size " + size_text(a.size) + " --frames " + std::to_string(a.frames) +
                   " --rounds " + std::to_string(a.rounds) + " --warmup " + std::to_string(a.warmup) + " --spp " + std::to_string(a.spp) + " --ref-spp " +
-                  std::to_string(a.ref_spp) + " --grid " + a.grid;
+                  std::to_string(a.ref_spp) + " --grid " + sweep_grid_name(a.grid);
   if (a.preset != "balanced") c += " --preset " + a.preset;
-  if (a.time_by != "auto") c += " --time-by " + a.time_by;
+  if (a.time_by) c += std::string(" --time-by ") + sweep_clock_name(*a.time_by);
   if (!a.only.empty()) {
     c += " --only ";
     for (size_t i = 0; i < a.only.size(); ++i) c += (i ? "," : "") + a.only[i];
   }
-  if (a.backend != "auto") c += " --backend " + a.backend;
+  if (a.backend != Backend::automatic) c += std::string(" --backend ") + backend_name(a.backend);
   if (a.no_specialize) c += " --no-specialize";
-  if (a.dispatch != "fragment") c += " --dispatch " + a.dispatch;
+  if (a.dispatch != Dispatch::fragment) c += std::string(" --dispatch ") + dispatch_name(a.dispatch);
   for (const std::string& o : a.overrides.as_given) {  // "--set KEY=VALUE": the value quoted, brackets are shell globs
     const size_t space = o.find(' ');
     std::string value = o.substr(space + 1);
@@ -94,11 +102,11 @@ std::string command_line(const SweepArgs& a) {
 }  // namespace
 
 int run_sweep_command(const SweepArgs& a) {
-  const Backend backend = parse_backend(a.backend);
+  const Backend backend = a.backend;
   // The shader render and bench build: specialized to the scene (and each row's quality).
   const AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
   SweepSettings s;
-  const ImageSize size = parse_size_flag(a.size);
+  const ImageSize size = a.size;
   s.width = size.width;
   s.height = size.height;
   check_range(a.frames, 1, 10000, "--frames");
@@ -111,15 +119,15 @@ int run_sweep_command(const SweepArgs& a) {
   s.rounds = a.rounds;
   s.spp = a.spp;
   s.ref_spp = a.ref_spp;
-  s.grid = parse_sweep_grid(a.grid);
-  if (a.time_by != "auto") s.clock = parse_sweep_clock(a.time_by);
+  s.grid = a.grid;
+  if (a.time_by) s.clock = *a.time_by;
   const LoadedInput in = load_input(a.input, {}, opts, {}, a.overrides.set);
   if (in.shadertoy)
     fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
                "wrap the map in a scene .toml");
   s.time = in.scene.render.time;
-  s.dispatch = parse_dispatch(a.dispatch);
-  const std::optional<ComputeGroup> group = parse_compute_group(a.compute_group);
+  s.dispatch = a.dispatch;
+  const std::optional<ComputeGroup> group = a.compute_group;
   s.group = group.value_or(ComputeGroup{});
   check_compute_input(s.dispatch, in, false);
 
@@ -129,7 +137,7 @@ int run_sweep_command(const SweepArgs& a) {
     for (const std::string& name : a.only) {
       const auto it = std::find_if(configs.begin(), configs.end(), [&](const SweepConfig& c) { return c.name == name; });
       if (it == configs.end())
-        fail_input("no row '" + name + "' in the " + a.grid + " grid", {}, 0, "--only",
+        fail_input("no row '" + name + "' in the " + sweep_grid_name(a.grid) + " grid", {}, 0, "--only",
                    "row names are in the first column of the CSV, e.g. textbook, balanced, omega=1.5");
       kept.push_back(*it);
     }
@@ -149,7 +157,7 @@ int run_sweep_command(const SweepArgs& a) {
   ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
   ::setenv("__GL_SHADER_DISK_CACHE", "0", 1);
   std::unique_ptr<Context> ctx = create_headless_context(backend);
-  if (a.time_by == "auto") s.clock = ctx->info().software() ? SweepClock::cpu : SweepClock::gpu;
+  if (!a.time_by) s.clock = ctx->info().software() ? SweepClock::cpu : SweepClock::gpu;
   const Scene posed = animated(in.scene, s.time);
   if (s.dispatch == Dispatch::automatic) {  // probed on the scene's own pass (cli/dispatch_probe.h)
     PassGraph graph(in.passes);
@@ -172,7 +180,7 @@ int run_sweep_command(const SweepArgs& a) {
   const SweepSubject subject{a.input, in.scene.name, command_line(a), specialization_name(opts.specialize)};
   write_file_atomic(csv, sweep_csv(r));
   write_file_atomic(json, sweep_json(subject, s, r));
-  const SweepPlot plot = plot_sweep(r, in.scene.name + ", " + a.size + ", " + r.gl_renderer);
+  const SweepPlot plot = plot_sweep(r, in.scene.name + ", " + size_text(a.size) + ", " + r.gl_renderer);
   write_image(plot.image, png);
   if (!plot.has_text && !a.quiet)
     std::fprintf(stderr, "sweep: no usable font for the plot's labels; drawn without text\n");

@@ -1,10 +1,17 @@
 // `marchstudio sweep SCENE`: frame time against error over a grid of quality
 // settings, written as CSV, JSON and a plot (docs/speed-vs-error.md).
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "cli/input.h"
+#include "bench/sweep.h"
+#include "bench/sweep_grid.h"
 #include "cli/override_flags.h"
+#include "gl/context.h"
+#include "render/compute_frame.h"
+#include "shader/compute_wrap.h"
 
 namespace CLI {
 class App;
@@ -14,25 +21,25 @@ namespace ms {
 
 struct SweepArgs {
   std::string input;          // a scene .toml with an SDF map
-  std::string size = "640x360";
+  ImageSize size{640, 360};  // --size WxH
   int frames = 5;
   int rounds = 3;
   int warmup = 1;
   int spp = 1;
   int ref_spp = 16;
-  std::string grid = "quick";
-  std::string time_by = "auto";     // the clock of the fronts and the plot
+  SweepGrid grid = SweepGrid::quick;
+  std::optional<SweepClock> time_by;  // the clock of the fronts and the plot; none: auto
   std::vector<std::string> only;    // row names to keep (empty: the whole grid)
   std::string preset = "balanced";  // the rows vary the settings around this preset
   std::string out = ".";            // directory for <scene>.sweep.{csv,json,png}
-  std::string backend = "auto";
+  Backend backend = Backend::automatic;
   std::string shader_dir;
   std::vector<std::string> allow_include;
   bool quiet = false;
   bool no_specialize = false;       // time the generic shader, as bench --no-specialize
   Overrides overrides;              // --set, --uniform (cli/override_flags.h)
-  std::string dispatch = "fragment";  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
-  std::string compute_group;  // hidden --compute-group; "": 8x8, or auto's measured group
+  Dispatch dispatch = Dispatch::fragment;  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
+  std::optional<ComputeGroup> compute_group;  // hidden --compute-group; none: 8x8, or auto's measured group
 };
 
 CLI::App* add_sweep_command(CLI::App& app, SweepArgs& args);

@@ -44,15 +44,17 @@ CLI::App* add_test_command(CLI::App& app, TestArgs& a) {
   cmd->add_flag("--json", a.json, "Print the results as JSON on stdout (the case lines go to stderr)");
   cmd->add_flag("--update", a.update, "Write missing and failing references (refused when CI is set)");
   cmd->add_flag("--force", a.force, "Let --update run although CI is set");
-  cmd->add_option("--exit-codes", a.exit_codes,
-                  "default (0 pass, 1 fail, 2 bad input, 3 system) or idiff (0 pass, 1 warn, 2 fail, 4 could not run)");
+  add_enum_flag(cmd, "--exit-codes", a.exit_codes, parse_exit_codes, "{default, idiff}",
+                "default (0 pass, 1 fail, 2 bad input, 3 system) or idiff (0 pass, 1 warn, 2 fail, 4 could not run)");
   cmd->add_option("--only", a.only, "Run only the cases whose name matches this glob (repeatable)");
   cmd->add_flag("--list", a.list, "Print the suite's cases, as expanded, and exit");
   cmd->add_flag("-v,--verbose", a.verbose, "Print every compile error of a case that could not run, after its line");
   add_shader_dir_flag(cmd, a.shader_dir);
-  cmd->add_option("--dispatch", a.dispatch,
-                  "Draw every case's images and counting pass as a fragment pass (default) or a compute dispatch "
-                  "(docs/gpu.md)");
+  // auto is read, then refused by run() with its reason: a suite checks one dispatch.
+  add_dispatch_flag(cmd, a.dispatch,
+                    "Draw every case's images and counting pass as a fragment pass (default) or a compute dispatch "
+                    "(docs/gpu.md)",
+                    "{fragment, compute}");
   return cmd;
 }
 
@@ -154,7 +156,7 @@ int run(const TestArgs& a, ExitCodes codes) {
   if (a.update && ci_is_set() && !a.force)
     fail_input("refusing to write references with CI set: a regression would become the new reference", {}, 0,
                "--update", "update references by hand, look at them and commit them; --force overrides");
-  const Dispatch dispatch = parse_dispatch(a.dispatch);
+  const Dispatch dispatch = a.dispatch;
   if (dispatch == Dispatch::automatic)
     fail_input("test --dispatch auto: a suite checks one dispatch at a time", {}, 0, "--dispatch",
                "give fragment or compute");
@@ -162,7 +164,7 @@ int run(const TestArgs& a, ExitCodes codes) {
   const std::vector<const SuiteCase*> selected = select_cases(suite, a.only);
   if (a.list) {
     for (const SuiteCase* c : selected)
-      std::printf("%s\t%s\t%s\t%s\n", c->name.c_str(), c->input.string().c_str(), c->backend.c_str(),
+      std::printf("%s\t%s\t%s\t%s\n", c->name.c_str(), c->input.string().c_str(), backend_name(c->backend),
                   c->reference.empty() ? "-" : c->reference.string().c_str());
     return 0;
   }
@@ -225,8 +227,7 @@ int run(const TestArgs& a, ExitCodes codes) {
 }  // namespace
 
 int run_test(const TestArgs& a) {
-  const ExitCodes codes = parse_exit_codes(a.exit_codes);
-  return run_with_exit_codes(codes, [&] { return run(a, codes); });
+  return run_with_exit_codes(a.exit_codes, [&] { return run(a, a.exit_codes); });
 }
 
 }  // namespace ms

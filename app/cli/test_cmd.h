@@ -6,6 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "bench/outcome.h"
+#include "render/compute_frame.h"
+
 namespace CLI {
 class App;
 }
@@ -19,12 +22,12 @@ struct TestArgs {
   bool json = false;                  // the results as JSON on stdout (the case lines go to stderr)
   bool update = false;                // write missing and failing references
   bool force = false;                 // --update even with CI set
-  std::string exit_codes = "default"; // default | idiff
+  ExitCodes exit_codes = ExitCodes::standard;  // --exit-codes default | idiff
   std::vector<std::string> only;      // case-name globs
   bool list = false;                  // print the cases and exit
   bool verbose = false;               // -v: every compile error of a case that could not run
   std::string shader_dir;
-  std::string dispatch = "fragment";  // --dispatch fragment|compute (cli/dispatch_flag.h)
+  Dispatch dispatch = Dispatch::fragment;  // --dispatch fragment|compute (cli/dispatch_flag.h)
 };
 
 CLI::App* add_test_command(CLI::App& app, TestArgs& args);

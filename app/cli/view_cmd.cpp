@@ -30,9 +30,9 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   CLI::App* cmd = app.add_subcommand("view", "Open a window on a scene (.toml) or Shadertoy shader (.glsl); "
                                              "reloads on every save (docs/viewer.md)");
   cmd->add_option("input", a.input, "Scene .toml or Shadertoy .glsl/.frag")->required();
-  cmd->add_option("--size", a.size, "Window size WxH (default: the scene's, at most 1280x720)")->check(not_empty());
+  add_size_flag(cmd, "--size", a.size, "Window size WxH (default: the scene's, at most 1280x720)")->check(not_empty());
   add_shader_dir_flag(cmd, a.shader_dir);
-  cmd->add_option("-D,--define", a.defines, "Inject #define NAME VALUE into the scene shader (NAME or NAME=VALUE)");
+  add_define_flag(cmd, a.defines);
   cmd->add_option("--debug-view", a.debug_view,
                   "Start in a debug view: 0 lit, 1 steps, 2 normals, 3 depth, 4 AO, 5 shadow, 6 material id")
       ->check(CLI::Range(0, 6));
@@ -60,7 +60,16 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
       ->check(not_empty());
   cmd->add_option("--record-fps", a.record_fps, "Frames per second of a recording (default 24; a Shadertoy shader's 60)")
       ->check(CLI::Range(0.001, 1000.0));
-  cmd->add_option("--record", a.record_frames, "Record frames A..B at start, as render --frames A..B would (scripts)")
+  cmd->add_option_function<std::string>(
+         "--record",
+         [&a](const std::string& v) {
+           try {
+             a.record_frames = parse_frame_range(v);
+           } catch (const Error&) {  // its message names --frames
+             fail_input("invalid --record '" + v + "'", {}, 0, "--record", "frames A..B, as render --frames");
+           }
+         },
+         "Record frames A..B at start, as render --frames A..B would (scripts)")
       ->check(not_empty());
   cmd->add_option("--record-video", a.record_video, "Encode each recording into this file with ffmpeg (e.g. out.mp4)")
       ->check(not_empty());
@@ -72,7 +81,7 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_option("--capture-dir", a.capture_dir,
                   "Write the first frame after start and after each reload as DIR/frame_<k>.png");
   cmd->add_option("--shot-dir", a.shot_dir, "Where screenshots (P, Shift+P) go (default: the current directory)");
-  cmd->add_option("--shot-size", a.shot_size, "Screenshot size WxH, re-rendered (default: the window's)");
+  add_size_flag(cmd, "--shot-size", a.shot_size, "Screenshot size WxH, re-rendered (default: the window's)");
   cmd->add_option("--shot-frame", a.shot_frame, "Take both screenshots after frame N (scripts)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--drag", a.drag,
@@ -86,9 +95,9 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   cmd->add_flag("--no-panel", a.no_panel, "Start with the panel hidden (Tab shows it)");
   // A failed reload prints the compiler's whole log anyway; -v, as render's, prints it for an error that ends the run.
   cmd->add_flag("-v,--verbose", a.verbose, "Print every compile error, not the first and a count");
-  cmd->add_option("--dispatch", a.dispatch,
-                  "Trace the scene pass as a fragment pass (default), a compute dispatch, or auto; the window's "
-                  "display pass stays fragment (docs/viewer.md#compute)");
+  add_dispatch_flag(cmd, a.dispatch,
+                    "Trace the scene pass as a fragment pass (default), a compute dispatch, or auto; the window's "
+                    "display pass stays fragment (docs/viewer.md#compute)");
   add_compute_group_flag(cmd, a.compute_group);
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Build the generic shader: every feature compiled (docs/specialization.md)");
@@ -137,7 +146,7 @@ live::ScriptedDrag parse_drag(const std::string& text, const fs::path& input, co
 int run_view(const ViewArgs& a) {
   live::ViewerOptions o;
   o.input = a.input;
-  o.assemble = AssembleOptions{resolve_shader_dir(a.shader_dir), parse_defines(a.defines),
+  o.assemble = AssembleOptions{resolve_shader_dir(a.shader_dir), a.defines,
                                parse_allow_include(a.allow_include)};
   // Folded as `render` is; what the panel drags stays a uniform while it is
   // dragged (live/live_values.h).
@@ -169,30 +178,22 @@ int run_view(const ViewArgs& a) {
       if (e.info().key.rfind("--uniform", 0) == 0) throw;
     }
   }
-  if (!a.size.empty()) {
-    const ImageSize size = parse_size_flag(a.size, "--size");
-    o.width = size.width;
-    o.height = size.height;
+  if (a.size.width > 0) {
+    o.width = a.size.width;
+    o.height = a.size.height;
   }
-  if (!a.shot_size.empty()) {
-    const ImageSize size = parse_size_flag(a.shot_size, "--shot-size");
-    o.shot_width = size.width;
-    o.shot_height = size.height;
+  if (a.shot_size.width > 0) {
+    o.shot_width = a.shot_size.width;
+    o.shot_height = a.shot_size.height;
   }
   o.debug_view = a.debug_view;
   o.accumulate = a.accumulate;
   o.audio_device = a.audio_device;
   o.record.dir = a.record_dir.empty() ? fs::path(fs::path(a.input).stem().string() + "_frames") : fs::path(a.record_dir);
   o.record.fps = a.record_fps;
-  if (!a.record_frames.empty()) {
-    FrameRange r;
-    try {
-      r = parse_frame_range(a.record_frames);
-    } catch (const Error&) {  // its message names --frames
-      fail_input("invalid --record '" + a.record_frames + "'", {}, 0, "--record", "frames A..B, as render --frames");
-    }
-    o.record.first = r.first;
-    o.record.last = r.last;
+  if (a.record_frames) {
+    o.record.first = a.record_frames->first;
+    o.record.last = a.record_frames->last;
   }
   if (!a.record_video.empty()) {
     check_video_path(a.record_video);
@@ -210,9 +211,9 @@ int run_view(const ViewArgs& a) {
   o.max_frames = a.max_frames;
   o.debounce_ms = a.debounce_ms;
   o.hide_panel = a.no_panel;
-  o.dispatch.dispatch = parse_dispatch(a.dispatch);  // a bad name: exit 2 before the window
+  o.dispatch.dispatch = a.dispatch;  // a bad name was refused as the flag was read
   // auto: render's cached or measured choice for this device; -v's line on stderr says which.
-  o.dispatch.group = parse_compute_group(a.compute_group);
+  o.dispatch.group = a.compute_group;
   o.dispatch.choose = [group = o.dispatch.group](PassGraph& graph, const Program& post, const StillFrame& frame,
                                                  const Context& ctx) {
     return choose_dispatch(Dispatch::automatic, graph, post, frame, ctx, group, true);

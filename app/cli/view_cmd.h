@@ -1,10 +1,16 @@
 // `marchstudio view`: the live viewer (app/live/) with hot reload, for a
 // scene (.toml) or a Shadertoy shader (.glsl). docs/viewer.md.
 #pragma once
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "cli/input.h"
 #include "cli/override_flags.h"
+#include "io/sequence.h"
+#include "render/compute_frame.h"
+#include "shader/compute_wrap.h"
 
 namespace CLI {
 class App;
@@ -14,12 +20,13 @@ namespace ms {
 
 struct ViewArgs {
   std::string input;
-  std::string size;          // window "WxH"; empty: the scene's, at most 1280x720
+  ImageSize size;            // window --size WxH; 0x0: the scene's, at most 1280x720
   std::string shader_dir;
-  std::vector<std::string> defines;  // -D NAME[=VALUE]
+  std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE], parsed
   int debug_view = 0;
   int accumulate = -1;
-  std::string record_dir, record_frames, record_video;  // --record-dir, --record A..B, --record-video
+  std::string record_dir, record_video;       // --record-dir, --record-video
+  std::optional<FrameRange> record_frames;   // --record A..B
   double record_fps = 0.0;
   std::string audio_device = "default";  // --accumulate: -1 the scene's spp, 0 no limit (unlimited), N
   std::string preset;
@@ -29,15 +36,15 @@ struct ViewArgs {
   std::string log;           // --log FILE; empty: stderr
   std::string capture_dir;
   std::string shot_dir = ".";
-  std::string shot_size;     // "WxH"
+  ImageSize shot_size;       // --shot-size WxH; 0x0: the window's
   long shot_frame = -1;
   std::string drag;          // --drag TARGET=V@A..B (scripts): a panel drag
   double exit_after = 0.0;
   long max_frames = 0;
   int debounce_ms = 10;
   bool no_panel = false;
-  std::string dispatch = "fragment";  // --dispatch fragment|compute|auto
-  std::string compute_group;          // hidden --compute-group WxH; "": 8x8, or auto's measured group
+  Dispatch dispatch = Dispatch::fragment;     // --dispatch fragment|compute|auto
+  std::optional<ComputeGroup> compute_group;  // hidden --compute-group WxH; none: 8x8, or auto's measured group
   bool no_specialize = false;  // the generic shader, not one specialized to the scene
   bool verbose = false;        // -v: every compile error of a load that fails before the window
   std::vector<std::string> allow_include;  // more directories #include may read

@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const ms::Error& e) {  // a flag's value parsed as it is read (--size, --dispatch)
+    std::fprintf(stderr, "marchstudio: %s\n", e.what());
+    return static_cast<int>(e.code());
   }
   try {
     if (bench->parsed()) return ms::run_bench_command(args);
