@@ -19,7 +19,7 @@
 #include "live/audio_out.h"
 #include "live/capture.h"
 #include "live/compile_worker.h"
-#include "live/input.h"
+#include "live/key_bindings.h"
 #include "live/keyboard.h"
 #include "live/live_values.h"
 #include "live/live_log.h"
@@ -57,7 +57,7 @@ struct ImGuiScope {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // never drop an imgui.ini into the user's folder
     ImGui::StyleColorsDark();
-    ImGui_ImplGlfw_InitForOpenGL(w, true);  // chains to our callbacks (input.cpp)
+    ImGui_ImplGlfw_InitForOpenGL(w, true);  // chains to our callbacks (key_bindings.cpp)
     ImGui_ImplOpenGL3_Init("#version 450 core");
   }
   ~ImGuiScope() {
