@@ -4,17 +4,14 @@
 #include <variant>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "scene/quality.h"
 #include "scene/quality_fields.h"
 
 namespace ms {
 namespace {
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string num(double v) { return format_number(v); }
 
 // Every [quality] key (scene/quality_fields.h), so a new one is compared too.
 bool same(const SweepConfig& a, const SweepConfig& b) {

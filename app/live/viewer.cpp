@@ -14,6 +14,7 @@
 #include <imgui.h>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "gl/context.h"
 #include "io/image_io.h"
 #include "live/audio_out.h"
@@ -42,11 +43,7 @@ double seconds_now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
+std::string fmt(const char* f, double v) { return printf_number(f, v); }
 
 namespace {
 
