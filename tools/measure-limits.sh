@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Measures the guarantees of issue 13 on the release binary and writes the
+# Measures the input and output limits on the release binary and writes the
 # table between the <!-- limits:begin --> and <!-- limits:end --> markers of
 # docs/reliability.md: for each attack the exit status, the wall time and
 # the peak memory (/usr/bin/time -v, the whole process), and the first line

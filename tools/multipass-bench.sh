@@ -5,7 +5,7 @@
 # times the whole frame (all passes, buffer swaps, mipmaps, the post pass,
 # the read-back) and each pass alone (glFinish before and after it); the
 # overhead is the frame's median over the sum of the passes' medians.
-# Issue 14 asks for at most 5% on llvmpipe.
+# The aim is at most 5% on llvmpipe.
 #
 # Usage: tools/multipass-bench.sh [path/to/marchstudio]
 set -euo pipefail

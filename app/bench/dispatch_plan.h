@@ -1,4 +1,4 @@
-// --dispatch auto's measuring plan (issue 18), without the GL: which frame
+// --dispatch auto's measuring plan, without the GL: which frame
 // sizes and work groups the probe times, and what it picks. The caller
 // gives the timer (cli/dispatch_probe.h draws the job's scene with it), so
 // the plan is tested with made-up timings (tests/unit/test_dispatch_plan.cpp).
@@ -30,7 +30,7 @@ namespace ms {
 constexpr int kProbeWidth = 256, kProbeHeight = 144, kProbeFrames = 3;
 constexpr int kProbeMaxWidth = 1920, kProbeMaxHeight = 1080;
 constexpr double kProbeMinMs = 2.0;
-// Issue 18's shapes; the first is the default.
+// The work-group shapes it tries; the first is the default.
 inline const ComputeGroup kProbeGroups[] = {{8, 8, 0}, {16, 8, 0}, {16, 16, 0}, {32, 4, 0}};
 
 // Median wall milliseconds of one frame drawn by d (with g when compute) at w x h.

@@ -7,6 +7,7 @@
 
 #include <memory>
 
+#include "core/format.h"
 #include "io/image_backend.h"
 
 namespace ms {
@@ -41,11 +42,7 @@ struct Canvas {
   }
 };
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string num(double v) { return format_number(v); }
 
 // 1, 2, 5 x 10^k inside [lo, hi].
 std::vector<double> log_ticks(double lo, double hi) {

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/format.h"
 #include "core/utf8.h"
 
 namespace ms {
@@ -14,20 +15,14 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::string printf_text(const char* fmt, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, v);
-  return buf;
-}
-
 std::string metric_text(Metric m, double v) {
   if (std::isnan(v)) return "nan";
   if (m == Metric::psnr) {
     if (std::isinf(v)) return v > 0 ? "inf dB" : "-inf dB";
-    return printf_text("%.2f dB", v);
+    return printf_number("%.2f dB", v);
   }
   if (m == Metric::fraction || m == Metric::flip) return format_value(v);
-  return format_value(v) + " (" + printf_text("%.2f", v * 255.0) + "/255)";
+  return format_value(v) + " (" + printf_number("%.2f", v * 255.0) + "/255)";
 }
 
 struct Counts {
@@ -121,7 +116,7 @@ std::string attr(const std::string& name, const std::string& value) {
   return " " + name + "=\"" + xml_escape(value) + "\"";
 }
 
-std::string seconds_text(double s) { return printf_text("%.3f", s); }
+std::string seconds_text(double s) { return printf_number("%.3f", s); }
 
 std::string utc_timestamp() {
   const std::time_t now = std::time(nullptr);
@@ -150,7 +145,7 @@ std::string details(const CaseResult& r) {
 std::string format_value(double v) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  return printf_text("%.6g", v);
+  return printf_number("%.6g", v);
 }
 
 std::string check_text(const CheckResult& r) {
@@ -180,7 +175,7 @@ const char* outcome_label(Outcome o) {
 std::string case_line(const CaseResult& r) {
   char head[160];
   std::snprintf(head, sizeof head, "%-5s %-28s ", outcome_label(r.outcome), r.spec->name.c_str());
-  return head + r.message + " (" + printf_text("%.2f", r.seconds) + " s)";
+  return head + r.message + " (" + printf_number("%.2f", r.seconds) + " s)";
 }
 
 std::string summary_line(const SuiteResult& r) {

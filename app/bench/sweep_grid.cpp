@@ -1,27 +1,23 @@
 #include "bench/sweep_grid.h"
 
 #include <cstdio>
+#include <variant>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "scene/quality.h"
+#include "scene/quality_fields.h"
 
 namespace ms {
 namespace {
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string num(double v) { return format_number(v); }
 
+// Every [quality] key (scene/quality_fields.h), so a new one is compared too.
 bool same(const SweepConfig& a, const SweepConfig& b) {
-  const Quality &x = a.quality, &y = b.quality;
-  return x.max_steps == y.max_steps && x.max_distance == y.max_distance && x.hit_tolerance == y.hit_tolerance &&
-         x.hit_epsilon == y.hit_epsilon && x.lipschitz == y.lipschitz && x.omega == y.omega &&
-         x.shadow_steps == y.shadow_steps && x.ao_taps == y.ao_taps && x.bounces == y.bounces &&
-         x.shadows == y.shadows && x.ao == y.ao && x.reflections == y.reflections &&
-         x.checker_filter == y.checker_filter && x.bounds == y.bounds && x.analytic_planes == y.analytic_planes &&
-         a.tunables == b.tunables;
+  for (const Field<Quality>& f : kQualityFields)
+    if (!std::visit([&](auto m) { return a.quality.*m == b.quality.*m; }, f.member)) return false;
+  return a.tunables == b.tunables;
 }
 
 // Collects rows, skipping repeats.

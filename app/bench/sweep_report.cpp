@@ -5,16 +5,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/format.h"
+
 namespace ms {
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
+std::string fmt(const char* f, double v) { return printf_number(f, v); }
 
 // CSV cell: %.6g, "inf", or empty for NaN.
 std::string cell(double v) {

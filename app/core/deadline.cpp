@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/format.h"
 
 namespace ms {
 
@@ -31,9 +32,7 @@ void Deadline::check(const std::string& what) const {
 namespace {
 
 ErrorInfo timeout_info(const std::string& what, double seconds) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", seconds);
-  return ErrorInfo{Exit::system, {}, 0, "--timeout", what + " did not finish within " + buf + " s",
+  return ErrorInfo{Exit::system, {}, 0, "--timeout", what + " did not finish within " + format_number(seconds) + " s",
                    "a shader loop that never ends, or more work than the time allows", {}};
 }
 

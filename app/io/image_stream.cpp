@@ -15,7 +15,6 @@ ImageStreamWriter::ImageStreamWriter(const std::filesystem::path& path, int widt
                    std::to_string(width) + "x" + std::to_string(height),
                path.string(), 0, "--size", "write a .png, .tif or .exr");
   rows_ = image_backend().open_rows(path, format, width, height, channels, meta);
-  temp_ = rows_->temp();
 }
 
 ImageStreamWriter::~ImageStreamWriter() = default;  // without finish(): the module's writer removes the temporary

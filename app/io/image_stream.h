@@ -55,16 +55,11 @@ class ImageStreamWriter {
   void finish();
   // Remove the temporary now; nothing is written.
   void discard();
-  int rows_written() const { return next_row_; }
-  // The temporary the rows go to (io/atomic_file.h), for a signal handler
-  // or watchdog that must remove it before the process ends.
-  const std::filesystem::path& temp_path() const { return temp_; }
 
  private:
   std::filesystem::path path_;
   int width_ = 0, height_ = 0;
   std::vector<std::string> channels_;
-  std::filesystem::path temp_;
   int next_row_ = 0;
   std::unique_ptr<ImageRowWriter> rows_;
 };

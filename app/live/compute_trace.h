@@ -1,4 +1,4 @@
-// view --dispatch compute|auto (issue 18): the viewer's scene pass traced by
+// view --dispatch compute|auto: the viewer's scene pass traced by
 // the compute dispatch (render/compute_frame.h) instead of FrameRenderer;
 // the window's blit, the UI and a Shadertoy graph's buffer passes stay
 // fragment passes. Built once per program generation: by the compile worker

@@ -9,7 +9,7 @@
 
 #include <imgui.h>
 
-#include "live/input.h"
+#include "live/key_bindings.h"
 #include "render/aov.h"
 
 namespace ms::live {

@@ -7,7 +7,7 @@
 #include <imgui.h>
 
 #include "gl/context.h"
-#include "live/input.h"
+#include "live/key_bindings.h"
 #include "scene/quality.h"
 #include "shader/assemble.h"
 

@@ -15,7 +15,7 @@
 
 #include "core/error.h"
 #include "live/live_values.h"
-#include "live/scene_params.h"
+#include "live/param_reload.h"
 #include "render/bloom.h"
 #include "render/graph.h"
 #include "render/program.h"

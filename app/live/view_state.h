@@ -1,5 +1,5 @@
 // The viewer's interactive state, shared by the loop (viewer.cpp), the GLFW
-// callbacks (input.cpp, reached through glfwSetWindowUserPointer) and the
+// callbacks (key_bindings.cpp, reached through glfwSetWindowUserPointer) and the
 // ImGui panel and overlay. Keys and buttons only set requests here; the loop
 // serves them between frames, so file writes and recompiles never happen
 // inside a callback.

@@ -14,12 +14,13 @@
 #include <imgui.h>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "gl/context.h"
 #include "io/image_io.h"
 #include "live/audio_out.h"
 #include "live/capture.h"
 #include "live/compile_worker.h"
-#include "live/input.h"
+#include "live/key_bindings.h"
 #include "live/keyboard.h"
 #include "live/live_values.h"
 #include "live/live_log.h"
@@ -42,11 +43,7 @@ double seconds_now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
+std::string fmt(const char* f, double v) { return printf_number(f, v); }
 
 namespace {
 
@@ -57,7 +54,7 @@ struct ImGuiScope {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // never drop an imgui.ini into the user's folder
     ImGui::StyleColorsDark();
-    ImGui_ImplGlfw_InitForOpenGL(w, true);  // chains to our callbacks (input.cpp)
+    ImGui_ImplGlfw_InitForOpenGL(w, true);  // chains to our callbacks (key_bindings.cpp)
     ImGui_ImplOpenGL3_Init("#version 450 core");
   }
   ~ImGuiScope() {

@@ -39,8 +39,6 @@ class BloomStage {
   void run(GLuint accum, int width, int height, float inv_samples);
   GLuint texture() const { return tex_[0]; }  // the result, linear filtering, clamp to edge
   float intensity() const { return settings_.intensity; }
-  int target_width() const { return w_; }
-  int target_height() const { return h_; }
 
  private:
   void resize(int w, int h);

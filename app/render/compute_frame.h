@@ -1,4 +1,4 @@
-// The scene pass as a compute dispatch (issue 18): the same assembled scene
+// The scene pass as a compute dispatch: the same assembled scene
 // shader, wrapped by shader/compute_wrap.h, run once per sample over the
 // frame tile by tile (glDispatchCompute), adding into RGBA32F images with
 // imageLoad + imageStore and a memory barrier between samples; then the

@@ -1,8 +1,8 @@
-// A frame as an ordered list of passes (shared/ARCHITECTURE.md's Graph):
-// each pass is a program with up to four inputs and one output. A
-// Shadertoy project's buffer passes A..D draw into RGBA32F buffers, in
-// order, then its Image pass draws the frame through FrameRenderer
-// (samples, tiles, the post pass); an SDF scene is a graph of one pass.
+// A frame as an ordered list of passes: each pass is a program with up to
+// four inputs and one output. A Shadertoy project's buffer passes A..D draw
+// into RGBA32F buffers, in order, then its Image pass draws the frame through
+// FrameRenderer (samples, tiles, the post pass); an SDF scene is a graph of
+// one pass.
 //
 // Each buffer holds two textures, and a pass reads a buffer as it stands
 // when the pass runs: a pass reading its own buffer, or one later in the

@@ -1,4 +1,4 @@
-// The scene pass drawn by whichever dispatch a job chose (issue 18): the
+// The scene pass drawn by whichever dispatch a job chose: the
 // fragment pass (FrameRenderer) or the compute dispatch (compute_frame.h),
 // behind one interface, so sequences, bench, sweep and test draw with
 // either without a second copy of their loops. The buffer and Cube A

@@ -16,6 +16,8 @@
 #include <glm/vec3.hpp>
 #include <toml++/toml.h>
 
+#include "core/format.h"
+
 namespace ms {
 
 // Accepted values of a number; vec3 fields apply it to each component.
@@ -48,8 +50,6 @@ using Keys = std::span<const std::string_view>;
 std::string printable(std::string_view text, std::size_t max_bytes = 64);
 // printable(text) in single quotes: 'fov'.
 std::string quote(std::string_view text);
-// A number as %g: "0.0001", "1e+20", "nan".
-std::string format_number(double v);
 // "camera" + "fov" -> "camera.fov"; "" + "camera" -> "camera".
 std::string join_key(std::string_view path, std::string_view key);
 

@@ -1,4 +1,4 @@
-// The scene pass as a compute shader (issue 18): the assembled fragment
+// The scene pass as a compute shader: the assembled fragment
 // source of a scene (shader/assemble.h), rewritten so the same text runs as
 // a GL 4.3+ compute shader, one invocation per pixel. No GL here.
 //

@@ -71,9 +71,6 @@ class MacroEngine {
   Region region() const;
   bool defined(std::string_view name) const;
 
-  std::size_t expanded_tokens() const { return expanded_; }
-  int deepest_expression() const { return depth_.deepest(); }
-
  private:
   struct Macro;
   struct Cond;

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "camera.h"
 #include "scene/scene.h"
 
 namespace ms::test {
@@ -25,10 +26,7 @@ struct CpuRay {
 // are stored top row first; GL's gl_FragCoord.y counts from the bottom).
 inline CpuRay cpu_camera_ray(const Camera& cam, int width, int height, int x, int y_top) {
   const float fovy = cam.fov_deg * 3.14159265358979f / 180.0f;  // as render/uniforms.cpp
-  const glm::vec3 fw = glm::normalize(cam.target - cam.position);
-  const glm::vec3 up = glm::normalize(cam.up);
-  const glm::vec3 right = glm::normalize(glm::cross(fw, up));
-  const glm::vec3 upv = glm::cross(right, fw);
+  const auto [fw, right, upv] = camera_basis(cam);
   const float th = std::tan(0.5f * std::clamp(fovy, 1e-4f, 3.14159265358979f - 1e-3f));
   const float invH = 1.0f / std::max(static_cast<float>(height), 1.0f);
   const glm::vec2 res(static_cast<float>(width), static_cast<float>(height));

@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include "camera.h"
 #include "io/image.h"
 #include "scene/scene.h"
 
@@ -15,9 +16,7 @@ struct PixelPos {
 };
 
 inline PixelPos project(const Camera& cam, int width, int height, glm::vec3 p) {
-  const glm::vec3 fw = glm::normalize(cam.target - cam.position);
-  const glm::vec3 right = glm::normalize(glm::cross(fw, glm::normalize(cam.up)));
-  const glm::vec3 up = glm::cross(right, fw);
+  const auto [fw, right, up] = camera_basis(cam);
   const float th = std::tan(0.5f * glm::radians(cam.fov_deg));
   const glm::vec3 d = p - cam.position;
   const float z = glm::dot(d, fw);

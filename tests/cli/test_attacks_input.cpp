@@ -1,4 +1,4 @@
-// Issue 13, the input side, through the real binary: shaders that took the
+// Attacks on the input side, through the real binary: shaders that took the
 // process down (a deep expression, a macro bomb, an include diamond),
 // `#error` under a warm shader cache, non-regular input files, and flags
 // or scene keys accepted without a word. Each case failed before the fix

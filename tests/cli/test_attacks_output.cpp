@@ -1,4 +1,4 @@
-// Issue 13, the output side, through the real binary: a full disk (a file
+// Attacks on the output side, through the real binary: a full disk (a file
 // size limit everywhere, a small tmpfs where we may mount one), ffmpeg
 // under --timeout and SIGTERM, long output names, absurd timeouts and
 // window sizes. Before the fix PNG exited 0 over a 0-byte file and JPEG

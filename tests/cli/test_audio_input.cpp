@@ -1,4 +1,4 @@
-// Issue 16, audio inputs through the real binary: a music input reads a WAV
+// Audio inputs through the real binary: a music input reads a WAV
 // the test writes (a sine at the centre of FFT bin 100 from 1 s on) from the
 // media directory, and the shader sees Shadertoy's 512x2 texture texel for
 // texel as render/audio_texture.h computes it (its own test checks the

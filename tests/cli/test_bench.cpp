@@ -123,7 +123,7 @@ TEST(Bench, TableForPeople) {
     EXPECT_NE(r.out.find(s), std::string::npos) << s << " not in:\n" << r.out;
 }
 
-// A per-frame host cost (issue 18 item 5): every frame sets the same
+// A per-frame host cost: every frame sets the same
 // uniforms, so their locations are asked of the GL in the first frames and
 // kept (render/program.h). Counted, not timed: scene and Shadertoy uniforms,
 // fused and post-pass frames, bloom, both dispatches.
@@ -146,7 +146,7 @@ TEST(Bench, NoUniformLookupsAfterTheFirstFrame) {
   }
 }
 
-// A per-frame host cost (issue 18 item 5): a program keeps its uniforms,
+// A per-frame host cost: a program keeps its uniforms,
 // so a frame sends only the values that differ from the last one
 // (render/program.h). A still scene at spp 1 changes nothing; at spp 4 the
 // jitter changes four times a frame (one tile: uMsRect stays).

@@ -1,4 +1,4 @@
-// Issue 16, cubemaps, through the real binary: six face PNGs the test
+// Cubemaps, through the real binary: six face PNGs the test
 // writes land on their axes and in GL's orientation within each face; the
 // Cube A pass's rayDir and fragCoord at texels the test picks, against GL's
 // cube map table computed here; Cube A's read order (this frame's for the

@@ -1,4 +1,4 @@
-// render --dispatch (issue 18): the scene pass as a compute dispatch gives
+// render --dispatch: the scene pass as a compute dispatch gives
 // the fragment pass's pixels. Every shipped scene (scenes/*.toml) at 96x54,
 // spp 1 (the fused post path) and 4 (accumulation, the post pass), PNG
 // within 1/255 and EXR within 1e-5 in every channel, AOV step counts equal;

@@ -1,4 +1,4 @@
-// bench and sweep --dispatch (issue 18): each bench row names the dispatch
+// bench and sweep --dispatch: each bench row names the dispatch
 // that drew it, and the counting pass's step counts are the same with
 // either; auto records what it resolved to; what compute cannot run is
 // refused in one line. A sweep with compute gives the fragment sweep's

@@ -1,4 +1,4 @@
-// --dispatch on every path but the still (issue 18; the still:
+// --dispatch on every path but the still (the still:
 // test_dispatch.cpp): a sequence drawn with compute equals the fragment one
 // frame by frame (PNG 1/255, EXR 1e-5, step AOVs equal), also after a
 // SIGKILL and a resume; --dispatch auto probes once per device and keeps its

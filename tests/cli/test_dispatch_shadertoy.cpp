@@ -1,4 +1,4 @@
-// render --dispatch compute of Shadertoy inputs (issue 18): the Image pass
+// render --dispatch compute of Shadertoy inputs: the Image pass
 // runs as a compute shader (its texture() calls at LOD 0, the same texel on
 // inputs without mip maps), buffer passes stay fragment passes, and the
 // pixels equal the fragment pass's: a bare shader at spp 1 and 4, and a

@@ -1,4 +1,4 @@
-// Issue 17 item 2, HDR environment maps through the real binary: the map is
+// HDR environment maps through the real binary: the map is
 // what escaping rays see (its texels, turned by rotation, times intensity,
 // in a linear EXR), its irradiance is the ambient light (AO still applies),
 // the irradiance is cached by the file's content hash and read back from

@@ -1,4 +1,4 @@
-// Issue 16 item 7, glslViewer files through the real binary: the same
+// glslViewer files through the real binary: the same
 // image written as a glslViewer .frag and as a Shadertoy shader renders the
 // same bytes (a single pass on time, resolution and gl_FragCoord; a
 // DOUBLE_BUFFER_0 feedback against a Buffer A reading itself), and what

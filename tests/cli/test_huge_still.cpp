@@ -1,4 +1,4 @@
-// Huge stills (issue 15 item 4, docs/usage.md#huge-stills) through the real
+// Huge stills (docs/usage.md#huge-stills) through the real
 // binary, at small sizes with tiling forced by the hidden --tile-still: a
 // tiled still is bit-identical to a whole one (PNG and EXR, 1 and several
 // samples, AOVs, a Shadertoy shader reading gl_FragCoord and derivatives),

@@ -1,4 +1,4 @@
-// Issue 14, through the real binary, with shaders whose every pixel is
+// Multipass through the real binary, with shaders whose every pixel is
 // known: a feedback counter (Buffer A adds 1/255 a frame), a chain that
 // tells this frame's reads from the previous frame's, each sampler mode
 // against a texture of known texels, the keyboard's layout, iMouse, the

@@ -213,7 +213,7 @@ TEST_F(ViewerAttack, AHundredSavesInOneSecondEndOnTheLast) {
             << " s (incl. settling): " << (k - 2) << " reloads\n";
 }
 
-// Issue 13: a macro bomb froze the viewer until the OOM killer took it, an
+// A macro bomb froze the viewer until the OOM killer took it, an
 // include diamond hung it (so --exit-after never fired), and a deep
 // expression crashed it. Each is now a failed reload within seconds, the
 // window keeps drawing, and the fix after them renders.

@@ -1,4 +1,4 @@
-// The numerical stability suite (issue 6, docs/stability.md): every hard
+// The numerical stability suite (docs/stability.md): every hard
 // case in scenes/hard/ rendered by the real binary with the default preset
 // (balanced), checked through its AOVs against an exact double-precision
 // reference or a converged render. Tolerances live in

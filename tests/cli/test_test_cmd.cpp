@@ -1,5 +1,5 @@
-// `marchstudio test` through the real binary: the minimal suite as
-// written, relative paths, --update and its CI guard, exit codes (default and
+// `marchstudio test` through the real binary: docs/testing.md's minimal suite
+// as written, relative paths, --update and its CI guard, exit codes (default and
 // idiff), warn levels, JUnit and JSON, cost and frame-time budgets, frame
 // ranges, bad cases among good ones. The HTML report in a real browser is
 // test_test_report.cpp.
@@ -12,6 +12,7 @@
 #include <set>
 
 #include "io/image_io.h"
+#include "minimal_suite.h"
 #include "run.h"
 
 namespace ms::test {
@@ -63,19 +64,11 @@ json json_of(const RunResult& r) {
   }
 }
 
-constexpr const char* kMinimal =
-    "[[case]]\n"
-    "name = \"seed\"\n"
-    "scene = \"scenes/seed.toml\"\n"
-    "reference = \"refs/seed.png\"\n"
-    "size = [160, 90]\n"
-    "metric = \"psnr\"\n"
-    "threshold = 40\n";
 
 TEST(TestCommand, TheMinimalSuiteWorksAsWrittenFromAnyDirectory) {
   ScopedEnv no_ci("CI", std::nullopt);
   SuiteDir d;
-  const fs::path suite = d.suite(kMinimal);
+  const fs::path suite = d.suite(kMinimalSuite);
   // No reference yet: the case cannot run, and says how to make one.
   const RunResult none = test_cmd(suite, {}, "/");
   EXPECT_EQ(none.exit_code, 2) << none.out << none.err;
@@ -102,7 +95,7 @@ TEST(TestCommand, TheMinimalSuiteWorksAsWrittenFromAnyDirectory) {
 
 TEST(TestCommand, UpdateRefusesInCiUnlessForced) {
   SuiteDir d;
-  const fs::path suite = d.suite(kMinimal);
+  const fs::path suite = d.suite(kMinimalSuite);
   {
     ScopedEnv ci("CI", "true");
     const RunResult r = test_cmd(suite, {"--update"});
@@ -185,7 +178,7 @@ TEST_F(TwoCases, UpdateRewritesOnlyTheFailingReference) {
 
 TEST(TestCommand, ABadSuiteIsOneLineNamingFileLineAndKey) {
   SuiteDir d;
-  const fs::path suite = d.suite(std::string(kMinimal) + "treshold = 3\n");
+  const fs::path suite = d.suite(std::string(kMinimalSuite) + "treshold = 3\n");
   const fs::path junit = d.dir / "j.xml", report = d.dir / "report";
   const RunResult r = test_cmd(suite, {"--junit", junit.string(), "--report", report.string()});
   EXPECT_EQ(r.exit_code, 2);

@@ -1,4 +1,4 @@
-// Issue 16, video inputs through the real binary: the test makes its own
+// Video inputs through the real binary: the test makes its own
 // lossless clip with ffmpeg (8 frames of 8x6 at 4 fps, each frame a
 // distinct colour on top and another below, RGB straight through FFV1 in
 // Matroska, or lossless VP9 as gbrp in WebM), so every pixel is exact:

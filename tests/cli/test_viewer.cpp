@@ -244,7 +244,7 @@ TEST_F(Viewer, FailedBuildCarriesTheWholeLog) {
   EXPECT_TRUE(one && two) << read_file(log());
 }
 
-// One home for presets (issue 17): `view --preset NAME` starts from the
+// One home for presets: `view --preset NAME` starts from the
 // same values as `render --preset NAME`, textbook included, so its first
 // frame is render's image at that preset.
 TEST_F(Viewer, PresetsAreRendersPresets) {

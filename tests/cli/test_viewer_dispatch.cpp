@@ -1,4 +1,4 @@
-// view --dispatch fragment|compute|auto (issue 18): the scene pass traced by
+// view --dispatch fragment|compute|auto: the scene pass traced by
 // the compute dispatch draws what `render --dispatch fragment` draws, within
 // 1/255: the one-pass frame (fused) and a frame accumulated to N samples; a
 // pass compute cannot run (dFdx) is shown as an error and drawn with

@@ -1,4 +1,4 @@
-// The viewer compiles what `render` compiles (issue 17 item 5): lights,
+// The viewer compiles what `render` compiles: lights,
 // materials and sky folded into constants; a scripted panel drag (--drag)
 // keeps the dragged value (only it) a uniform until the drag ends, then
 // folds the final value; the builds compile on the worker. Under Xvfb; images against `render` within 1/255,

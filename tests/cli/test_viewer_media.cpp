@@ -1,4 +1,4 @@
-// Issue 16 item 8, timed inputs in the viewer under Xvfb: a video input
+// Timed inputs in the viewer under Xvfb: a video input
 // shows the frame of the viewer's time, as `render --time` does, and moves
 // follows a new time; a music input's analyser texture, with no audio
 // device to play to, is render's at the same time.

@@ -1,4 +1,4 @@
-// Issue 14, the viewer under Xvfb: a Shadertoy shader's buffer keeps
+// Multipass in the viewer under Xvfb: a Shadertoy shader's buffer keeps
 // evolving while another pass is edited and hot-reloaded, a broken pass
 // keeps the last good graph, and the fix renders with the buffer still
 // counting (not reset to 0).

@@ -1,4 +1,4 @@
-// Issue 16, typed channels and volume inputs, through the real binary:
+// Typed channels and volume inputs, through the real binary:
 // Shadertoy's two 3D noise volumes stand in as generated 32^3 textures
 // whose every voxel the test computes from the same generator
 // (volume_noise_byte), read with texelFetch and texture(); a channel's

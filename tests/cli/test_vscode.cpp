@@ -1,4 +1,4 @@
-// Issue 16 item 6, VS Code Shader Toy extension files through the real
+// VS Code Shader Toy extension files through the real
 // binary: a main file reading a bufferA.glsl that feeds back on "self" and
 // a texture the test writes renders the same bytes as the same shader in
 // Shadertoy's JSON; "Mirror" wraps as a mirrored coordinate does; the

@@ -16,7 +16,7 @@ mkdir -p "$OUT"
 FLAGS=(-std=c++20 -O1 -g -fprofile-instr-generate -fcoverage-mapping -I"$SRC/app" -I"$SRC/tests/fuzz"
        "-DMARCH_SOURCE_SHADER_DIR=\"$SRC/sdf_shaders\"" $(pkg-config --cflags tomlplusplus))
 LIBS=($(pkg-config --libs tomlplusplus) -lpthread)
-LIB_SOURCES=("$SRC"/app/core/*.cpp "$SRC"/app/scene/*.cpp "$SRC"/app/shader/*.cpp "$SRC/app/live/scene_params.cpp")
+LIB_SOURCES=("$SRC"/app/core/*.cpp "$SRC"/app/scene/*.cpp "$SRC"/app/shader/*.cpp "$SRC/app/live/param_reload.cpp")
 # What each target is about (the rest of the library is linked, not measured).
 declare -A FILES=(
   [scene]="app/scene/load.cpp app/scene/load_geometry.cpp app/scene/quality.cpp app/scene/toml_read.cpp app/scene/toml_guard.cpp app/scene/animation.cpp"

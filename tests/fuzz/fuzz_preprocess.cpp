@@ -7,7 +7,7 @@
 // out. Properties: only ms::Error escapes; no output, dependency or error
 // message ever holds the canary or a file outside the roots; the root part,
 // read as a driver info log, maps without crashing; the viewer's parameter
-// scan (live/scene_params.h) reads the result without crashing.
+// scan (live/param_reload.h) reads the result without crashing.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -17,7 +17,7 @@
 
 #include "core/error.h"
 #include "fuzz_util.h"
-#include "live/scene_params.h"
+#include "live/param_reload.h"
 #include "shader/log_map.h"
 #include "shader/preprocess.h"
 

@@ -1,4 +1,4 @@
-// Issue 16, audio: Shadertoy's 512x2 music texture from a Web Audio
+// Audio: Shadertoy's 512x2 music texture from a Web Audio
 // AnalyserNode (fftSize 2048, smoothing 0.8, -100..-30 dB). A sine at the
 // centre of FFT bin 100 that starts at 1 s: bins 99..101 saturate at 255 and
 // every bin further away stays 0 (a Blackman window has three cosine terms,

@@ -1,4 +1,4 @@
-// Typed channels (issue 16): the sampler type each input kind is declared
+// Typed channels: the sampler type each input kind is declared
 // with, the volume entries of Shadertoy's media table, a volume input's
 // sampler defaults, and the volume stand-in's documented formula.
 #include <gtest/gtest.h>

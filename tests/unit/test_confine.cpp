@@ -13,6 +13,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "files.h"
 #include "shader/assemble.h"
 #include "shader/preprocess.h"
 #include "shader/shadertoy.h"
@@ -34,14 +35,11 @@ void put(const fs::path& p, const std::string& text) {
 class Confine : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "marchconfine-XXXXXX").string();
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    tmp = fs::canonical(tmpl);
+    tmp = fs::canonical(tmp_dir.path());
     put(secret(), std::string("// ") + kSecret + "\nfloat secret() { return 1.0; }\n");
     put(lib() / "lib.glsl", "float lib() { return 2.0; }\n");
     fs::create_directories(scene());
   }
-  void TearDown() override { fs::remove_all(tmp); }
 
   fs::path scene() const { return tmp / "project/scene"; }
   fs::path lib() const { return tmp / "project/lib"; }
@@ -68,6 +66,7 @@ class Confine : public ::testing::Test {
     return {};
   }
 
+  test::TempDir tmp_dir;
   fs::path tmp;
 };
 

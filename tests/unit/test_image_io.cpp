@@ -15,6 +15,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "files.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/input_file.h"
@@ -58,14 +59,9 @@ TEST(ImageIoTemp, LongNamesGetTemporariesWithinTheLimit) {
 
 class AtomicFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::string t = (fs::temp_directory_path() / "marchatomic-XXXXXX").string();
-    ASSERT_NE(::mkdtemp(t.data()), nullptr);
-    dir = t;
-  }
-  void TearDown() override { fs::remove_all(dir); }
   size_t entries() const { return static_cast<size_t>(std::distance(fs::directory_iterator(dir), {})); }
-  fs::path dir;
+  test::TempDir tmp_dir;
+  fs::path dir = tmp_dir.path();
 };
 
 TEST_F(AtomicFileTest, TheTargetAppearsOnlyOnCommit) {

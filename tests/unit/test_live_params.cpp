@@ -10,7 +10,7 @@
 #include "live/overlay.h"
 #include "render/aov.h"
 #include "live/panel.h"
-#include "live/scene_params.h"
+#include "live/param_reload.h"
 
 namespace ms::live {
 namespace {

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "live/watcher.h"
+#include "files.h"
 
 namespace ms::live {
 namespace {
@@ -19,15 +20,12 @@ namespace fs = std::filesystem;
 class LiveWatcher : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "marchwatch-XXXXXX").string();
-    ASSERT_NE(mkdtemp(tmpl.data()), nullptr);
-    dir = tmpl;
+    dir = tmp_dir.path();
     write("a.glsl", "a");
     write("b.glsl", "b");
     fs::create_directories(dir / "sub");
     write("sub/c.glsl", "c");
   }
-  void TearDown() override { fs::remove_all(dir); }
   void write(const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; }
   // What a rename-on-save editor does: write a temporary, rename it over.
   void save_by_rename(const std::string& name, const std::string& text) {
@@ -37,6 +35,7 @@ class LiveWatcher : public ::testing::Test {
   std::vector<fs::path> wait(Watcher& w) { return w.wait(2000, 20, 200); }
   // For "nothing arrives": inotify delivers within microseconds, 300 ms is ample.
   std::vector<fs::path> wait_none(Watcher& w) { return w.wait(300, 20, 200); }
+  test::TempDir tmp_dir;
   fs::path dir;
 };
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "files.h"
 #include "io/cube_faces.h"
 #include "io/video.h"
 #include "shader/confine.h"
@@ -21,16 +22,13 @@ namespace fs = std::filesystem;
 class MediaRoots : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "marchmedia-XXXXXX").string();
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    tmp = fs::canonical(tmpl);
+    tmp = fs::canonical(tmp_dir.path());
     fs::create_directories(tmp / "scene");
     fs::create_directories(tmp / "media");
     fs::create_directories(tmp / "outside");
     std::ofstream(tmp / "outside" / "x.png") << "x";
     fs::create_symlink("../outside/x.png", tmp / "media" / "link.png");
   }
-  void TearDown() override { fs::remove_all(tmp); }
   // The message of the error confine_media throws, or "" when it allows `f`.
   std::string refusal(const fs::path& f, const std::vector<fs::path>& roots) {
     try {
@@ -41,6 +39,7 @@ class MediaRoots : public ::testing::Test {
     }
     return {};
   }
+  test::TempDir tmp_dir;
   fs::path tmp;
 };
 

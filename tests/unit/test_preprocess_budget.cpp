@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "files.h"
 #include "shader/log_map.h"
 #include "shader/preprocess.h"
 
@@ -21,16 +22,11 @@ namespace fs = std::filesystem;
 class PreprocessBudget : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "marchbudget-XXXXXX").string();
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir = fs::canonical(tmpl);
+    dir = fs::canonical(tmp_dir.path());
     old_cwd = fs::current_path();
     fs::current_path(dir);  // display paths are then plain file names
   }
-  void TearDown() override {
-    fs::current_path(old_cwd);
-    fs::remove_all(dir);
-  }
+  void TearDown() override { fs::current_path(old_cwd); }
   void put(const std::string& name, const std::string& text) { std::ofstream(dir / name, std::ios::binary) << text; }
   ShaderSource pp(const std::string& root) { return preprocess(root, "root.frag", dir, {}); }
   std::string error_of(const std::string& root) {
@@ -53,6 +49,7 @@ class PreprocessBudget : public ::testing::Test {
       put("f" + std::to_string(i) + ".glsl", body);
     }
   }
+  test::TempDir tmp_dir;
   fs::path dir, old_cwd;
 };
 

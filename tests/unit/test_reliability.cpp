@@ -18,6 +18,7 @@
 
 #include "core/deadline.h"
 #include "core/error.h"
+#include "files.h"
 #include "live/watcher.h"
 #include "render/tiles.h"
 #include "scene/load.h"
@@ -143,9 +144,8 @@ TEST(TomlGuard, DotsInValuesStringsAndCommentsAreFine) {
 }
 
 TEST(WatcherOverflow, AnOverflowReportsEveryWatchedFile) {
-  std::string tmpl = (fs::temp_directory_path() / "marchoverflow-XXXXXX").string();
-  ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-  const fs::path dir = tmpl;
+  const test::TempDir tmp;
+  const fs::path& dir = tmp.path();
   std::ofstream(dir / "map.glsl") << "x";
   std::ofstream(dir / "scene.toml") << "x";
   Watcher w;
@@ -164,7 +164,6 @@ TEST(WatcherOverflow, AnOverflowReportsEveryWatchedFile) {
   const std::vector<fs::path> changed = w.poll();
   const std::vector<fs::path> want = {dir / "map.glsl", dir / "scene.toml"};
   EXPECT_EQ(changed, want);
-  fs::remove_all(dir);
 }
 
 }  // namespace

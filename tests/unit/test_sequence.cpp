@@ -22,23 +22,13 @@
 #include "io/frame_writer.h"
 #include "io/image_io.h"
 #include "io/sequence.h"
+#include "files.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "marchseq-XXXXXX").string();
-    if (!mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed");
-    path = tmpl;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
+using ms::test::TempDir;
 
 ms::ErrorInfo error_of(const std::function<void()>& f) {
   try {
@@ -132,13 +122,13 @@ TEST(FramePattern, BadPatternsAreClearErrors) {
 
 TEST(Resume, CompleteFramesAreTold) {
   TempDir dir;
-  const fs::path good = dir.path / "good.png", cut = dir.path / "cut.png";
+  const fs::path good = dir.path() / "good.png", cut = dir.path() / "cut.png";
   ms::write_image(gray(32, 16, 0.5f), good);
   EXPECT_TRUE(ms::frame_is_complete(good, 32, 16));
   std::string why;
   EXPECT_FALSE(ms::frame_is_complete(good, 64, 16, &why));
   EXPECT_NE(why.find("64x16 expected"), std::string::npos) << why;
-  EXPECT_FALSE(ms::frame_is_complete(dir.path / "none.png", 32, 16, &why));
+  EXPECT_FALSE(ms::frame_is_complete(dir.path() / "none.png", 32, 16, &why));
   EXPECT_EQ(why, "missing");
   // A copy cut short: the header is there, the pixels are not.
   const auto size = fs::file_size(good);
@@ -146,25 +136,25 @@ TEST(Resume, CompleteFramesAreTold) {
   fs::resize_file(cut, size / 2);
   EXPECT_FALSE(ms::frame_is_complete(cut, 32, 16, &why));
   // EXR too.
-  const fs::path exr = dir.path / "f.exr";
+  const fs::path exr = dir.path() / "f.exr";
   ms::write_image(gray(8, 8, 2.0f), exr);
   EXPECT_TRUE(ms::frame_is_complete(exr, 8, 8));
 }
 
 TEST(Resume, StaleTempsOfOwnFramesAreRemoved) {
   TempDir dir;
-  const ms::FramePattern pattern((dir.path / "f_%03d.png").string());
+  const ms::FramePattern pattern((dir.path() / "f_%03d.png").string());
   for (const char* name : {".f_001.tmp4242.png", ".f_002.tmp17.png", ".f_009.tmp5.png", ".f_001.tmpx.png",
                            "f_001.png", ".other.tmp1.png"})
-    std::ofstream(dir.path / name) << "x";
+    std::ofstream(dir.path() / name) << "x";
   const auto removed = ms::remove_stale_temps(pattern, {1, 2, 3});
   EXPECT_EQ(removed.size(), 2u);
-  EXPECT_FALSE(fs::exists(dir.path / ".f_001.tmp4242.png"));
-  EXPECT_FALSE(fs::exists(dir.path / ".f_002.tmp17.png"));
-  EXPECT_TRUE(fs::exists(dir.path / ".f_009.tmp5.png")) << "another shard's frame";
-  EXPECT_TRUE(fs::exists(dir.path / ".f_001.tmpx.png")) << "not write_image's name";
-  EXPECT_TRUE(fs::exists(dir.path / "f_001.png"));
-  EXPECT_TRUE(fs::exists(dir.path / ".other.tmp1.png"));
+  EXPECT_FALSE(fs::exists(dir.path() / ".f_001.tmp4242.png"));
+  EXPECT_FALSE(fs::exists(dir.path() / ".f_002.tmp17.png"));
+  EXPECT_TRUE(fs::exists(dir.path() / ".f_009.tmp5.png")) << "another shard's frame";
+  EXPECT_TRUE(fs::exists(dir.path() / ".f_001.tmpx.png")) << "not write_image's name";
+  EXPECT_TRUE(fs::exists(dir.path() / "f_001.png"));
+  EXPECT_TRUE(fs::exists(dir.path() / ".other.tmp1.png"));
 }
 
 // The queue holds at most `capacity` frames: the producer blocks until the
@@ -248,9 +238,9 @@ TEST(FrameWriter, DestructorWritesWhatIsQueued) {
   TempDir dir;
   {
     ms::FrameWriter writer(4);
-    for (int f = 0; f < 3; ++f) writer.push({f, gray(4, 4, 0.25f), dir.path / ("w" + std::to_string(f) + ".png"), {}});
+    for (int f = 0; f < 3; ++f) writer.push({f, gray(4, 4, 0.25f), dir.path() / ("w" + std::to_string(f) + ".png"), {}});
   }
-  for (int f = 0; f < 3; ++f) EXPECT_TRUE(ms::frame_is_complete(dir.path / ("w" + std::to_string(f) + ".png"), 4, 4));
+  for (int f = 0; f < 3; ++f) EXPECT_TRUE(ms::frame_is_complete(dir.path() / ("w" + std::to_string(f) + ".png"), 4, 4));
 }
 
 }  // namespace

@@ -9,10 +9,12 @@
 #include "bench/outcome.h"
 #include "bench/suite.h"
 #include "core/error.h"
+#include "minimal_suite.h"
 
 namespace ms {
 namespace {
 namespace fs = std::filesystem;
+using test::kMinimalSuite;
 
 const fs::path kSource = MARCH_SOURCE_DIR;
 // As if the suite sat in tests/: "../scenes/x.toml" names a shipped scene.
@@ -30,18 +32,9 @@ ErrorInfo error_of(const std::string& text) {
   return {};
 }
 
-// The minimal case, lines 1-7.
-constexpr const char* kMinimal =
-    "[[case]]\n"
-    "name = \"seed\"\n"
-    "scene = \"scenes/seed.toml\"\n"
-    "reference = \"refs/seed.png\"\n"
-    "size = [160, 90]\n"
-    "metric = \"psnr\"\n"
-    "threshold = 40\n";
 
 TEST(SuiteLoad, TheMinimalCaseReadsAsWritten) {
-  const Suite s = parse(kMinimal);
+  const Suite s = parse(kMinimalSuite);
   ASSERT_EQ(s.cases.size(), 1u);
   const SuiteCase& c = s.cases[0];
   EXPECT_EQ(s.name, "suite");
@@ -188,7 +181,7 @@ TEST_P(SuiteError, NamesFileLineAndKey) {
   EXPECT_EQ(format_error(e).find('\n'), std::string::npos);
 }
 
-const std::string M = kMinimal;  // lines 1-7
+const std::string M = kMinimalSuite;  // lines 1-7
 
 INSTANTIATE_TEST_SUITE_P(
     All, SuiteError,

@@ -11,6 +11,7 @@
 #include "bench/suite_html.h"
 #include "bench/suite_report.h"
 #include "core/error.h"
+#include "files.h"
 #include "io/image_io.h"
 #include "io/stored_pixels.h"
 #include "io/atomic_file.h"
@@ -19,19 +20,6 @@ namespace ms {
 namespace {
 namespace fs = std::filesystem;
 
-struct Tmp {
-  fs::path dir;
-  Tmp() {
-    std::string t = (fs::temp_directory_path() / "marchunit-XXXXXX").string();
-    dir = ::mkdtemp(t.data());
-  }
-  ~Tmp() { fs::remove_all(dir); }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> out;
-    for (const auto& e : fs::directory_iterator(dir)) out.push_back(e.path().filename().string());
-    return out;
-  }
-};
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -122,43 +110,43 @@ TEST(SuiteReport, TheHtmlPageListsFailuresFirstAndEscapes) {
 }
 
 TEST(TextIo, WritesAtomicallyAndLeavesNoTemporary) {
-  Tmp t;
-  write_text_file(t.dir / "a.xml", "hello\n");
-  write_text_file(t.dir / "a.xml", "again\n");
-  EXPECT_EQ(slurp(t.dir / "a.xml"), "again\n");
+  test::TempDir t;
+  write_text_file(t.path() / "a.xml", "hello\n");
+  write_text_file(t.path() / "a.xml", "again\n");
+  EXPECT_EQ(slurp(t.path() / "a.xml"), "again\n");
   EXPECT_EQ(t.entries(), std::vector<std::string>{"a.xml"});
 }
 
 TEST(TextIo, BadPathsAreBadInputAndLeaveNothing) {
-  Tmp t;
+  test::TempDir t;
   // A missing directory is made; one under a file cannot be.
-  write_text_file(t.dir / "made/a.xml", "x", "--junit");
-  EXPECT_EQ(slurp(t.dir / "made/a.xml"), "x");
-  fs::remove_all(t.dir / "made");
-  write_text_file(t.dir / "f", "x");
+  write_text_file(t.path() / "made/a.xml", "x", "--junit");
+  EXPECT_EQ(slurp(t.path() / "made/a.xml"), "x");
+  fs::remove_all(t.path() / "made");
+  write_text_file(t.path() / "f", "x");
   try {
-    write_text_file(t.dir / "f/sub/a.xml", "x", "--junit");
+    write_text_file(t.path() / "f/sub/a.xml", "x", "--junit");
     ADD_FAILURE() << "no error";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), Exit::bad_input);
     EXPECT_EQ(e.info().key, "--junit");
   }
-  fs::remove(t.dir / "f");
-  fs::create_directory(t.dir / "d");
-  EXPECT_THROW(write_text_file(t.dir / "d", "x"), Error);
+  fs::remove(t.path() / "f");
+  fs::create_directory(t.path() / "d");
+  EXPECT_THROW(write_text_file(t.path() / "d", "x"), Error);
   EXPECT_EQ(t.entries(), std::vector<std::string>{"d"});
 }
 
 // A render compared in memory as an 8-bit file is exactly that file read back.
 TEST(StoredPixels, EqualWhatAWrittenPngReadsBackAs) {
-  Tmp t;
+  test::TempDir t;
   Image img;
   img.width = 7;
   img.height = 3;
   img.channels = {"R", "G", "B", "A"};
   for (int i = 0; i < 7 * 3 * 4; ++i) img.pixels.push_back(static_cast<float>(i % 13) / 12.3f - 0.05f);
-  write_image(img, t.dir / "a.png");
-  const Image back = read_image(t.dir / "a.png");
+  write_image(img, t.path() / "a.png");
+  const Image back = read_image(t.path() / "a.png");
   const Image mem = stored_pixels(img, ImageFormat::png);
   ASSERT_EQ(mem.channels, back.channels);
   ASSERT_EQ(mem.pixels.size(), back.pixels.size());

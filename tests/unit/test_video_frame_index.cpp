@@ -1,4 +1,4 @@
-// Issue 16: which frame of a video input shows at a time (io/video_input.h):
+// Which frame of a video input shows at a time (io/video_input.h):
 // floor(fmod(t, duration) x fps), frame 0 before time 0, the last frame held
 // to the end of the loop, and t = n / fps as a float showing frame n.
 #include <gtest/gtest.h>

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "files.h"
 #include "scene/load.h"
 #include "scene/writeback.h"
 
@@ -139,19 +140,17 @@ TEST(Writeback, SceneValueEditsOnlyWhatChanged) {
 class WritebackFile : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "marchwb-XXXXXX").string();
-    ASSERT_NE(mkdtemp(tmpl.data()), nullptr);
-    dir = tmpl;
+    dir = tmp_dir.path();
     std::ofstream(dir / "seed.glsl") << "vec2 map(vec3 p) { return vec2(length(p) - 1.0, 0.0); }\n";
     std::ofstream(dir / "scene.toml") << kScene;
   }
-  void TearDown() override { fs::remove_all(dir); }
   std::string read() {
     std::ifstream in(dir / "scene.toml");
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
   }
+  test::TempDir tmp_dir;
   fs::path dir;
 };
 

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Fragment vs compute dispatch, and the compute work groups (issue 18): per
+# Fragment vs compute dispatch, and the compute work groups: per
 # scene, the median of N renders (default 5) of the `render` time that
 # `render -v` reports (the draw and the read-back, no context, link or
 # write) at WxH (default 1280x720) and SPP samples (default 4: llvmpipe

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fragment against compute (issue 18): `marchstudio bench --json` with
+# Fragment against compute: `marchstudio bench --json` with
 # `--dispatch fragment` and `--dispatch compute` side by side, for the
 # textbook baseline and the fast / balanced / reference presets, every
 # shipped scene, at 1280x720, 1920x1080 and 3840x2160, through EGL's device

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One GPU session's measurements for issue 18, most wanted first, each stage
+# One GPU session's measurements of the dispatches, most wanted first, each stage
 # under its own time box, so a session cut short still brings back what
 # came first. Every stage writes its own file into the output directory as
 # it finishes (docs/gpu-bench.md#gpu-figures):

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Per-frame host costs (issue 18 item 5, docs/gpu-bench.md#per-frame-host-costs):
+# Per-frame host costs (docs/gpu-bench.md#per-frame-host-costs):
 # per scene, size and dispatch, `marchstudio bench --json`'s medians of the
 # GPU timer, the wall time (draw + glFinish) and the host's submit time (the
 # draw call returning), its glGetUniformLocation counts and its uniform

@@ -8,9 +8,6 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
 #include <thread>
 
 namespace ms::test {
@@ -21,20 +18,6 @@ static std::string quote(const std::string& s) {
   for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
   return q + "'";
 }
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-void write_file(const fs::path& p, const std::string& text) {
-  fs::create_directories(p.parent_path());
-  std::ofstream(p, std::ios::binary) << text;
-}
-
-fs::path source_dir() { return MARCH_SOURCE_DIR; }
 
 pid_t spawn_marchstudio(const std::vector<std::string>& args, const fs::path& dir, const std::string& log) {
   const pid_t pid = fork();
@@ -88,23 +71,6 @@ RunResult run_marchstudio(const std::vector<std::string>& args, const fs::path& 
   r.out = read_file(io / "out");
   r.err = read_file(io / "err");
   return r;
-}
-
-TempDir::TempDir() {
-  std::string tmpl = (fs::temp_directory_path() / "marchtest-XXXXXX").string();
-  if (!mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed");
-  path_ = tmpl;
-}
-
-TempDir::~TempDir() {
-  std::error_code ec;
-  fs::remove_all(path_, ec);
-}
-
-std::vector<std::string> TempDir::entries() const {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(path_)) names.push_back(e.path().filename().string());
-  return names;
 }
 
 }  // namespace ms::test

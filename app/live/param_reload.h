@@ -1,6 +1,6 @@
 // A scene's own uniforms, shown as sliders in the viewer's panel: parsed by
 // shader/scene_params.h (where --uniform also sets their values); here what
-// only the viewer needs.
+// only the viewer needs: a slider keeps its value across a reload.
 #pragma once
 #include <vector>
 

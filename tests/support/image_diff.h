@@ -1,4 +1,4 @@
-// Image comparisons for the dispatch tests (issue 18; test_dispatch*.cpp): the largest
+// Image comparisons for the dispatch tests (test_dispatch*.cpp): the largest
 // difference in any channel, and one channel's values.
 //
 //   EXPECT_LE(max_diff(fragment, compute), 1.0 / 255 + 1e-6);

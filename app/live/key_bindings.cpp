@@ -1,4 +1,4 @@
-#include "live/input.h"
+#include "live/key_bindings.h"
 #include "live/keyboard.h"
 
 #include <algorithm>

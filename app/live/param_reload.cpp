@@ -1,4 +1,4 @@
-#include "live/scene_params.h"
+#include "live/param_reload.h"
 
 #include <algorithm>
 

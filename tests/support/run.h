@@ -1,11 +1,14 @@
 // Runs the real marchstudio binary for integration tests and captures its
-// exit code, stdout and stderr.
+// exit code, stdout and stderr. Compiled into the CLI tests only: it needs
+// MARCH_BIN, the binary's path.
 #pragma once
 #include <sys/types.h>
 
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "files.h"
 
 namespace ms::test {
 
@@ -31,23 +34,5 @@ int count_files(const std::filesystem::path& dir, const std::string& prefix);
 // ends first (with `log`, a file under `dir`, in the message) or after 120 s.
 void wait_for_files(const std::filesystem::path& dir, const std::string& prefix, int n, pid_t pid,
                     const std::string& log = {});
-
-// A fresh empty directory under the system temp dir, removed by the destructor.
-class TempDir {
- public:
-  TempDir();
-  ~TempDir();
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-  // Names of every entry, for "nothing was left behind" assertions.
-  std::vector<std::string> entries() const;
-
- private:
-  std::filesystem::path path_;
-};
-
-std::filesystem::path source_dir();  // the repository root
-void write_file(const std::filesystem::path& p, const std::string& text);
-std::string read_file(const std::filesystem::path& p);
 
 }  // namespace ms::test
