@@ -1,5 +1,5 @@
-// --dispatch fragment|compute|auto and the hidden --compute-group WxH
-// (issue 18): parsed once here into render/compute_frame.h's Dispatch (auto
+// --dispatch fragment|compute|auto and the hidden --compute-group WxH,
+// parsed once here into render/compute_frame.h's Dispatch (auto
 // is chosen once a context exists: cli/dispatch_probe.h) and
 // shader/compute_wrap.h's ComputeGroup; what a job may not draw with compute.
 #pragma once

@@ -1,4 +1,4 @@
-// --dispatch auto (issue 18): the faster of the fragment pass and the
+// --dispatch auto: the faster of the fragment pass and the
 // compute dispatch on this device, and compute's work group, measured once
 // and kept. The first use on a device draws the job's own scene (its
 // passes, post and bloom as the job's) at the sizes and groups of
