@@ -11,6 +11,7 @@
 #include "cli/dispatch_flag.h"
 #include "cli/dispatch_probe.h"
 #include "cli/flag_checks.h"
+#include "cli/glslviewer_flags.h"
 #include "cli/input.h"
 #include "cli/shader_dir.h"
 #include "core/error.h"
@@ -144,6 +145,7 @@ live::ScriptedDrag parse_drag(const std::string& text, const fs::path& input, co
 }  // namespace
 
 int run_view(const ViewArgs& a) {
+  refuse_image_inputs({a.input});  // before any window, as render refuses it (cli/glslviewer_flags.h)
   live::ViewerOptions o;
   o.input = a.input;
   o.assemble = AssembleOptions{resolve_shader_dir(a.shader_dir), a.defines,

@@ -61,6 +61,12 @@ TEST(GlslViewerHabits, AnImageInputNamesTexture) {
     EXPECT_FALSE(fs::exists(dir / "out.png"));
     EXPECT_FALSE(fs::exists(dir / "batch"));
   }
+  // view refuses it the same way, before any window (no display is needed).
+  const RunResult v = run_marchstudio({"view", (dir / "tex.png").string()});
+  EXPECT_EQ(v.exit_code, 2) << v.err;
+  EXPECT_EQ(lines(v.err), 1) << v.err;
+  EXPECT_NE(v.err.find("tex.png: an image"), std::string::npos) << v.err;
+  EXPECT_NE(v.err.find("--texture"), std::string::npos) << v.err;
 }
 
 TEST(GlslViewerHabits, MouseXYSetsUMouse) {
