@@ -1,13 +1,13 @@
 #include "cli/glslviewer_flags.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <string_view>
 #include <vector>
 
 #include "core/error.h"
+#include "io/image_io.h"
 
 namespace ms {
 
@@ -27,19 +27,11 @@ std::string export_file(std::string_view v) {
   return std::string(comma == std::string_view::npos ? v : v.substr(comma + 1));
 }
 
-bool is_image_file(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (const char* e : {".png", ".jpg", ".jpeg", ".exr", ".hdr", ".tif", ".tiff", ".bmp", ".tga", ".gif", ".webp"})
-    if (ext == e) return true;
-  return false;
-}
-
 }  // namespace
 
 void refuse_image_inputs(const std::vector<std::string>& inputs) {
   for (const std::string& in : inputs)
-    if (is_image_file(in))
+    if (is_image_name(in))
       fail_input("an image, not a scene or a shader", in, 0, {}, "bind it to a glslViewer shader with --texture " + in);
 }
 

@@ -21,6 +21,18 @@ ImageFormat image_format_for(const std::filesystem::path& path);
 // True for formats stored as 8-bit display values (PNG, JPEG, TIFF).
 inline bool is_display_format(ImageFormat f) { return f != ImageFormat::exr; }
 
+// True when the name's extension (any case) is one of the image formats an
+// input may be read from, the ones VS Code's extension sorts as images.
+// Inline: the shader importers (and the parser-only fuzz build) use it
+// without linking the image readers.
+inline bool is_image_name(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  for (const char* e : {".png", ".jpg", ".jpeg", ".bmp", ".gif", ".webp", ".tga", ".tif", ".tiff", ".exr", ".hdr"})
+    if (ext == e) return true;
+  return false;
+}
+
 // Check before any rendering that `path` can be written: known extension,
 // existing directory, write permission, a name within the file system's
 // limit (NAME_MAX, PATH_MAX). Throws bad_input naming the path.

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "io/image_io.h"
 #include "shader/directive.h"
 #include "io/cube_faces.h"
 #include "io/input_file.h"
@@ -66,8 +67,7 @@ std::string lower_ext(const fs::path& p) {
 enum class FileKind { shader, image, audio, video };
 FileKind kind_of(const fs::path& p) {
   const std::string e = lower_ext(p);
-  for (const char* x : {".png", ".jpg", ".jpeg", ".bmp", ".gif", ".webp", ".tga", ".tif", ".tiff", ".exr", ".hdr"})
-    if (e == x) return FileKind::image;
+  if (is_image_name(p)) return FileKind::image;
   for (const char* x : {".mp3", ".wav", ".ogg", ".oga", ".flac", ".m4a", ".aac", ".opus"})
     if (e == x) return FileKind::audio;
   for (const char* x : {".mp4", ".webm", ".ogv", ".mov", ".mkv", ".avi"})
