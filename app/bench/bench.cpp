@@ -8,7 +8,7 @@
 
 #include "bench/clock.h"
 #include "core/error.h"
-#include "render/bloom.h"
+#include "pipeline/nonfinite.h"
 #include "render/frame.h"
 #include "render/gpu_timer.h"
 #include "render/uniforms.h"
@@ -41,19 +41,6 @@ void check_bench_settings(const BenchSettings& s) {
   if (s.frames < 1 || s.frames > 100000) fail_input("--frames must be in 1..100000", {}, 0, "--frames");
   if (s.warmup < 0 || s.warmup > 100000) fail_input("--warmup must be in 0..100000", {}, 0, "--warmup");
   if (s.spp < 1 || s.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
-}
-
-long long count_nonfinite_pixels(const Image& a, const Image* b) {
-  const size_t n = static_cast<size_t>(a.width) * static_cast<size_t>(a.height);
-  auto bad = [](const Image& img, size_t p) {
-    const size_t c = img.channels.size();
-    for (size_t i = 0; i < c; ++i)
-      if (!std::isfinite(img.pixels[p * c + i])) return true;
-    return false;
-  };
-  long long count = 0;
-  for (size_t p = 0; p < n; ++p) count += bad(a, p) || (b && !b->pixels.empty() && bad(*b, p));
-  return count;
 }
 
 BenchCost measure_cost(const Image& aovs) {
@@ -103,9 +90,10 @@ BenchCost count_frame_cost(SceneDrawer& drawer, const Program& counting, const P
   return count_cost(drawer, counting, post, posed, time, fp);
 }
 
-BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<PassSource>& passes,
-                      const ShaderSource* counting, const ShaderSource& post, const BenchSettings& s) {
+BenchResult run_bench(FrameSession& session, const PreparedFrame& p, const Scene& scene,
+                      const ShaderSource* counting, const BenchSettings& s) {
   check_bench_settings(s);
+  const Context& ctx = session.context();  // made by the caller, with its backend
   check_frame_size(ctx.info(), s.width, s.height, 6);  // the counting pass's AOV targets
   BenchResult r;
   r.backend = ctx.backend();
@@ -123,12 +111,13 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   // frames follow on, at its fps.
   int frame = 0;
   const double fps = scene.shadertoy.fps;
+  const bool stateful = p.in.stateful();
   auto next = [&]() {
     FrameInputs in;
     in.scene = &scene;
     in.time = s.time;
     std::copy(std::begin(scene.shadertoy.mouse), std::end(scene.shadertoy.mouse), in.mouse);
-    if (passes.size() > 1) {
+    if (stateful) {
       in.frame = frame;
       in.time = s.time + static_cast<float>(frame / fps);
       in.time_delta = static_cast<float>(1.0 / fps);
@@ -142,32 +131,21 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   const Clock::time_point t0 = Clock::now();
   const long long lookups0 = Program::gl_lookups();  // a process-wide count: only bench's own frames
   const long long sets0 = Program::gl_uniform_sets();
-  const std::string vs = fullscreen_vertex_source();
-  PassGraph graph(passes);
-  const Program post_prog(vs, post);
-  std::unique_ptr<BloomStage> bloom;  // render/bloom.h
-  if (s.bloom.size() == 2)
-    bloom = std::make_unique<BloomStage>(scene.bloom, std::make_shared<const Program>(vs, s.bloom[0]),
-                                         std::make_shared<const Program>(vs, s.bloom[1]));
-  fp.bloom = bloom.get();
-  DispatchChoice choice{s.dispatch, s.group};
-  if (choice.dispatch == Dispatch::automatic) {
-    StillFrame probe{next(), fp, fps};
-    frame = 0;
-    choice = s.choose ? s.choose(graph, post_prog, probe) : DispatchChoice{};
-  }
-  SceneDrawer renderer(ctx, graph, choice.dispatch, choice.group);
-  r.dispatch = renderer.dispatch();
+  session.load(p);  // the graph, post pass and bloom stage, compiled now
+  StillFrame probe{next(), fp, fps};
+  frame = 0;
+  const DispatchChoice choice = session.choose(s.dispatch, s.group, probe, s.verbose);
+  r.dispatch = session.drawer().dispatch();
   r.group = choice.group;
   r.link_ms = ms_since(t0);
   FrameParams tiny = fp;
   tiny.width = tiny.height = 1;
   tiny.spp = 1;
-  renderer.draw(graph, post_prog, next(), tiny);
+  session.submit(next(), tiny);
   glFinish();
   r.compile_link_ms = ms_since(t0);
   frame = 0;
-  renderer.draw(graph, post_prog, next(), fp);
+  session.submit(next(), fp);
   glFinish();
   r.first_frame_ms = ms_since(t0);
   r.lookups_first = Program::gl_lookups() - lookups0;
@@ -175,7 +153,7 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
 
   // Timed frames: the GPU timer brackets exactly the draw; wall time adds
   // the wait for completion (glFinish), which is what a user sees.
-  for (int i = 0; i < s.warmup; ++i) renderer.draw(graph, post_prog, next(), fp);
+  for (int i = 0; i < s.warmup; ++i) session.submit(next(), fp);
   glFinish();
   // Each timed frame of a multi-pass graph is followed by one timed pass by
   // pass, so the sum of the passes and the frame see the same machine load:
@@ -183,6 +161,7 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   // busy machine. A graph of one pass is its frame (the post pass goes with
   // the last pass): its pass time is the frame's wall time, and no second
   // frame is drawn, which halved bench's frames for every scene.
+  PassGraph& graph = session.graph();
   const bool by_pass = graph.size() > 1;
   GpuTimer timer;
   std::vector<double> gpu, wall, submit;
@@ -193,7 +172,7 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
     const long long sets_before = Program::gl_uniform_sets();
     const Clock::time_point w0 = Clock::now();
     timer.begin();
-    renderer.draw(graph, post_prog, in, fp);
+    session.submit(in, fp);
     submit.push_back(ms_since(w0));
     timed_sets += Program::gl_uniform_sets() - sets_before;
     timer.end();
@@ -202,7 +181,7 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
     gpu.push_back(timer.wait_ms());
     if (!by_pass) continue;
     graph.set_timing(true);
-    renderer.draw(graph, post_prog, next(), fp);
+    session.submit(next(), fp);
     graph.set_timing(false);
     for (size_t p = 0; p < graph.size(); ++p) per[p].push_back(graph.pass_ms()[p]);
   }
@@ -216,8 +195,9 @@ BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<
   for (size_t p = 0; p < graph.size(); ++p) r.passes.push_back({graph.name(p), summarize(per[p])});
 
   if (counting) {
-    const std::unique_ptr<Program> count_prog = renderer.program(*counting);
-    r.cost = count_frame_cost(renderer, *count_prog, post_prog, scene, s.time, fp);
+    const std::unique_ptr<Program> count_prog = session.drawer().program(*counting);
+    fp.bloom = session.bloom();  // as the timed frames drew
+    r.cost = count_frame_cost(session.drawer(), *count_prog, session.post(), scene, s.time, fp);
     r.has_cost = true;
   }
   return r;

@@ -1,15 +1,16 @@
 // `marchstudio bench`: how long a scene takes to compile and to render, and
 // what it costs in deterministic units (steps and map() calls per pixel).
-// Drives the same FrameRenderer as `render`; never forks the pipeline.
+// Draws through the frame pipeline's session, as `render` does (pipeline/frame_session.h).
 // Output format and schema: docs/bench.md.
 #pragma once
-#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bench/stats.h"
 #include "gl/context.h"
 #include "io/image.h"
+#include "pipeline/frame_session.h"
 #include "render/frame.h"
 #include "render/graph.h"
 #include "render/scene_drawer.h"
@@ -31,16 +32,15 @@ struct BenchSettings {
   // The main program writes the image itself (FrameParams::fused_post):
   // assembled with fused_post_defines(), for spp 1. Reported as passes 1.
   bool fused_post = false;
-  // [extract, blur] (shader/assemble.h assemble_bloom): the timed frames run
-  // the scene's [post.bloom] stage, with a post pass assembled with bloom.
-  std::vector<ShaderSource> bloom;
+  // The timed frames run the scene's [post.bloom] stage (the session's,
+  // pipeline/frame_session.h), with a post pass assembled with bloom.
+  bool bloom = false;
   // Which pass draws the scene (--dispatch): fragment or compute, or
-  // automatic, then `choose` decides once the programs exist (cli/ gives it
-  // cli/dispatch_probe.h's choose_dispatch), its group too. Buffer passes
-  // stay fragment.
+  // automatic, measured once the programs exist (pipeline/dispatch_probe.h);
+  // the group given, if any. Buffer passes stay fragment.
   Dispatch dispatch = Dispatch::fragment;
-  ComputeGroup group;
-  std::function<DispatchChoice(PassGraph& graph, const Program& post, const StillFrame& frame)> choose;
+  std::optional<ComputeGroup> group;
+  bool verbose = false;  // -v: what auto chose, and why
 };
 
 // The deterministic cost of one frame at spp 1, from the AOV counters.
@@ -56,10 +56,6 @@ struct BenchCost {
   double hit_fraction = 0;      // primary ray hit a surface
   long long nonfinite_pixels = 0;  // pixels with NaN/Inf in any channel of the counting pass (colour or AOV)
 };
-
-// Pixels of `a` (and of `b`, same size, when given) with a NaN or Inf in
-// any channel: the NaN/Inf guard of render and bench (docs/stability.md).
-long long count_nonfinite_pixels(const Image& a, const Image* b = nullptr);
 
 // Cost from FrameRenderer::read_aovs() of a spp-1 AOV frame (channels
 // steps, shadow_steps, reflection_steps, sdf_evals, step_cap, hit).
@@ -121,11 +117,12 @@ struct BenchResult {
 // context.
 void check_bench_settings(const BenchSettings& s);
 
-// Times the graph of `passes` (a scene's one pass, or a Shadertoy shader's
+// Times the graph of `p` (a scene's one pass, or a Shadertoy shader's
 // buffers and Image pass: frames follow on from one another, as a
-// sequence's), then each pass on its own, and, given `counting` (the scene
-// assembled with AOV_OUTPUTS 1), counts its steps; in the current context.
-BenchResult run_bench(const Context& ctx, const Scene& scene, const std::vector<PassSource>& passes,
-                      const ShaderSource* counting, const ShaderSource& post, const BenchSettings& s);
+// sequence's) drawn by `session` (its context made), `posed` at s.time,
+// then each pass on its own, and, given `counting` (the scene assembled
+// with AOV_OUTPUTS 1), counts its steps.
+BenchResult run_bench(FrameSession& session, const PreparedFrame& p, const Scene& posed, const ShaderSource* counting,
+                      const BenchSettings& s);
 
 }  // namespace ms

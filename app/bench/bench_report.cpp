@@ -74,9 +74,9 @@ std::string bench_table(const BenchSubject& subject, const BenchSettings& s, con
   std::snprintf(buf, sizeof buf,
                 "scene     %s (%s)\nsettings  %dx%d, spp %d, %d frames after %d warm-up, %s shader, %s, %s dispatch\n",
                 subject.scene_name.c_str(), subject.scene_file.c_str(), s.width, s.height, s.spp, s.frames,
-                s.warmup, subject.specialize.c_str(), s.fused_post        ? "one pass"
-                : !s.bloom.empty() ? "main, bloom and post passes"
-                                   : "main + post pass",
+                s.warmup, subject.specialize.c_str(), s.fused_post ? "one pass"
+                : s.bloom                                          ? "main, bloom and post passes"
+                                                                   : "main + post pass",
                 dispatch_name(r.dispatch));
   out += buf;
   std::snprintf(buf, sizeof buf, "machine   %s, %s, GL %s\n", r.backend.c_str(), r.gl_renderer.c_str(),

@@ -9,34 +9,23 @@
 
 #include "bench/suite_run.h"
 #include "gl/context.h"
-#include "render/bloom.h"
-#include "render/program_cache.h"
+#include "pipeline/frame_session.h"
 #include "render/still.h"
 #include "shader/assemble.h"
 
 namespace ms::suite_detail {
 
-// One backend's context and everything that shares it.
+// One backend's frame session and every case's programs in it.
 struct Gl {
-  explicit Gl(const Context& c) : ctx(c), cache(64), renderer(c) {}
+  explicit Gl(FrameSession& s) : session(s), ctx(s.context()) {}
+  FrameSession& session;
   const Context& ctx;
-  ProgramCache cache;
-  FrameRenderer renderer;
-  std::map<const PreparedCase*, std::unique_ptr<PassGraph>> graphs;  // programs shared through `cache`
-  const std::string vs = fullscreen_vertex_source();
-  std::shared_ptr<const Program> program(const ShaderSource& src) { return cache.get(vs, src); }
-  PassGraph& graph(const PreparedCase& pc) {
-    std::unique_ptr<PassGraph>& g = graphs[&pc];
-    if (!g) g = std::make_unique<PassGraph>(pc.passes, &cache);
-    return *g;
-  }
-  std::map<const PreparedCase*, std::unique_ptr<BloomStage>> blooms;
-  // The case's bloom stage, as render builds it; nullptr without bloom.
-  BloomStage* bloom(const PreparedCase& pc) {
-    if (pc.bloom.size() != 2) return nullptr;
-    std::unique_ptr<BloomStage>& b = blooms[&pc];
-    if (!b) b = std::make_unique<BloomStage>(pc.scene.bloom, program(pc.bloom[0]), program(pc.bloom[1]));
-    return b.get();
+  // Each case's programs for a dispatch, shared through the session's cache.
+  std::map<std::pair<const PreparedCase*, Dispatch>, std::unique_ptr<FramePrograms>> jobs;
+  // The case's programs with its scene pass drawn by `d` (fragment or compute), made once.
+  FramePrograms& job(const PreparedCase& pc, Dispatch d = Dispatch::fragment);
+  std::shared_ptr<const Program> program(const ShaderSource& src) {
+    return session.cache().get(fullscreen_vertex_source(), src);
   }
 };
 
@@ -48,7 +37,7 @@ struct FrameSpec {
 // The frames a case renders: its still, or frame f of a range at f / fps.
 std::vector<FrameSpec> frames_of(const PreparedCase& pc);
 // The still path's input for frame `f` of `posed` (the case's scene at f's time).
-StillFrame still_of(Gl& gl, const PreparedCase& pc, const Scene& posed, const FrameSpec& f);
+StillFrame still_of(const PreparedCase& pc, const Scene& posed, const FrameSpec& f);
 
 // The image checks of every frame, the --update writes and the report's
 // images (of the worst frame), into `r`.

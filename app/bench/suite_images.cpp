@@ -3,11 +3,11 @@
 #include <cstring>
 #include <optional>
 
-#include "io/flip.h"
 #include "bench/suite_gl.h"
 #include "bench/suite_html.h"
 #include "bench/suite_report.h"
 #include "core/version.h"
+#include "io/flip.h"
 #include "io/sequence.h"
 #include "io/stored_pixels.h"
 #include "render/scene_drawer.h"
@@ -57,33 +57,28 @@ long long differing_values(const Image& a, const Image& b) {
 
 void check_images(Gl& gl, const PreparedCase& pc, const RunOptions& opts, CaseResult& r) {
   const SuiteCase& c = *pc.spec;
-  PassGraph& graph = gl.graph(pc);
-  const auto post = gl.program(pc.post);
+  FramePrograms& job = gl.job(pc, opts.dispatch);  // test --dispatch compute: its scene pass (render/scene_drawer.h)
   for (const ImageCheck& ch : c.checks) r.checks.push_back({ch, 0.0, -1, Outcome::pass, {}});
   std::vector<std::string> problems;  // missing or mismatched references, one line each
   Image shown_ref, shown_got;
   bool shown = false;
   std::vector<bool> seen(r.checks.size(), false);  // a check has a value from some frame
   const std::vector<FrameSpec> frames = frames_of(pc);
-  std::optional<SceneDrawer> compute;  // test --dispatch compute (render/scene_drawer.h)
-  if (opts.dispatch == Dispatch::compute) compute.emplace(gl.ctx, graph, Dispatch::compute);
   for (const FrameSpec& f : frames) {
-    const Scene posed = animated(pc.scene, f.time);
-    const StillFrame sf = still_of(gl, pc, posed, f);
+    const Scene posed = animated(pc.frame.in.scene, f.time);
+    const StillFrame sf = still_of(pc, posed, f);
     // A stateful shader's frames follow on: the first is a still (frames
     // 0..first replayed), the rest each one frame more, as a sequence.
-    const bool from_start = &f == &frames.front() || !graph.stateful();
-    if (compute) from_start ? compute->draw_still(graph, *post, sf) : compute->draw(graph, *post, sf.in, sf.params);
-    const Still still = compute      ? compute->read(sf.params.aovs)
-                        : from_start ? render_still(gl.renderer, graph, *post, sf)
-                                     : render_frame(gl.renderer, graph, *post, sf.in, sf.params);
+    const bool from_start = &f == &frames.front() || !job.graph().stateful();
+    if (from_start) job.submit_still(sf);
+    else job.submit(sf.in, sf.params);
+    const Still still = job.read(sf.params.aovs);
     if (c.deterministic && &f == &frames.front()) {
       // From scratch: a fresh compile and fresh targets, as another run would.
-      PassGraph graph2(pc.passes);
-      const Program post2(gl.vs, pc.post);
-      SceneDrawer again(gl.ctx, graph2, opts.dispatch);
-      again.draw_still(graph2, post2, sf);
-      r.nondeterministic_values = differing_values(still.color, again.read(false).color);
+      ProgramCache fresh(8);
+      FramePrograms again(gl.ctx, fresh, pc.frame);
+      if (opts.dispatch == Dispatch::compute) again.choose(opts.dispatch, std::nullopt, sf, false);
+      r.nondeterministic_values = differing_values(still.color, again.draw(sf).color);
     }
     if (c.checks.empty()) continue;
     const Image got = stored_pixels(still.color, pc.format);

@@ -40,7 +40,16 @@ std::vector<FrameSpec> frames_of(const PreparedCase& pc) {
   return out;
 }
 
-StillFrame still_of(Gl& gl, const PreparedCase& pc, const Scene& posed, const FrameSpec& f) {
+FramePrograms& Gl::job(const PreparedCase& pc, Dispatch d) {
+  std::unique_ptr<FramePrograms>& j = jobs[{&pc, d}];
+  if (!j) {
+    j = std::make_unique<FramePrograms>(ctx, session.cache(), pc.frame);
+    if (d == Dispatch::compute) j->choose(d, std::nullopt, StillFrame{}, false);
+  }
+  return *j;
+}
+
+StillFrame still_of(const PreparedCase& pc, const Scene& posed, const FrameSpec& f) {
   StillFrame s;
   s.in.scene = &posed;
   s.in.time = f.time;
@@ -50,7 +59,6 @@ StillFrame still_of(Gl& gl, const PreparedCase& pc, const Scene& posed, const Fr
   s.fps = pc.spec->frames ? pc.spec->fps : pc.fps;  // a range's own fps, as `render --frames`
   s.params = pc.params;
   s.params.exposure = posed.render.exposure;  // keyframed exposure, as render poses it
-  s.params.bloom = gl.bloom(pc);
   return s;
 }
 
@@ -61,15 +69,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // Median frame time of `frames` draws after `warmup`, on `cpu` or wall time.
-double time_frames(Gl& gl, PassGraph& graph, const Program& post, const StillFrame& sf, int warmup, int frames,
-                   bool cpu, std::vector<double>& all) {
-  for (int i = 0; i < warmup; ++i) graph.draw(gl.renderer, post, sf.in, sf.params);
+double time_frames(FramePrograms& job, const StillFrame& sf, int warmup, int frames, bool cpu, std::vector<double>& all) {
+  for (int i = 0; i < warmup; ++i) job.submit(sf.in, sf.params);
   glFinish();
   std::vector<double> t;
   for (int i = 0; i < frames; ++i) {
     const Clock::time_point w0 = Clock::now();
     const double u0 = process_cpu_ms();
-    graph.draw(gl.renderer, post, sf.in, sf.params);  // one frame, as a sequence draws it
+    job.submit(sf.in, sf.params);  // one frame, as a sequence draws it
     glFinish();
     t.push_back(cpu ? process_cpu_ms() - u0 : ms_since(w0));
   }
@@ -114,17 +121,16 @@ void check_cost(const CostBudget& b, const BenchCost& cost, CaseResult& r) {
 void check_time(Gl& gl, const Suite& suite, const PreparedCase& pc, const PreparedCase& cal, CaseResult& r) {
   const TimeBudget& b = *pc.spec->time_budget;
   const bool cpu = suite.clock == SuiteClock::cpu || (suite.clock == SuiteClock::automatic && gl.ctx.info().software());
-  PassGraph& cal_graph = gl.graph(cal);
-  PassGraph& graph = gl.graph(pc);
-  const auto cal_post = gl.program(cal.post), post = gl.program(pc.post);
-  const Scene cal_posed = animated(cal.scene, frames_of(cal).front().time);
-  const Scene posed = animated(pc.scene, frames_of(pc).front().time);
-  const StillFrame cal_sf = still_of(gl, cal, cal_posed, frames_of(cal).front());
-  const StillFrame sf = still_of(gl, pc, posed, frames_of(pc).front());
+  FramePrograms& cal_job = gl.job(cal);
+  FramePrograms& job = gl.job(pc);
+  const Scene cal_posed = animated(cal.frame.in.scene, frames_of(cal).front().time);
+  const Scene posed = animated(pc.frame.in.scene, frames_of(pc).front().time);
+  const StillFrame cal_sf = still_of(cal, cal_posed, frames_of(cal).front());
+  const StillFrame sf = still_of(pc, posed, frames_of(pc).front());
   std::vector<double> ratios, cal_all, case_all;
   for (int i = 0; i < b.rounds; ++i) {
-    const double c = time_frames(gl, cal_graph, *cal_post, cal_sf, b.warmup, b.frames, cpu, cal_all);
-    const double t = time_frames(gl, graph, *post, sf, b.warmup, b.frames, cpu, case_all);
+    const double c = time_frames(cal_job, cal_sf, b.warmup, b.frames, cpu, cal_all);
+    const double t = time_frames(job, sf, b.warmup, b.frames, cpu, case_all);
     ratios.push_back(c > 0 ? t / c : 0.0);
   }
   FrameTime ft{summarize(case_all).median, summarize(cal_all).median, summarize(ratios).median, cpu ? "cpu" : "wall"};
@@ -156,19 +162,14 @@ CaseResult run_case(Gl& gl, const Suite& suite, const PreparedCase& pc, const Pr
   r.frames = c.frames ? c.frames->second - c.frames->first + 1 : 1;
   if (!c.renderer.empty() && r.renderer.find(c.renderer) == std::string::npos)
     fail_system("needs a GL_RENDERER with '" + c.renderer + "', this context is " + r.renderer + " (" + r.backend + ")");
-  check_frame_size(gl.ctx.info(), r.width, r.height, c.cost ? 6 : 2);
+  check_frame_size(gl.ctx.info(), r.width, r.height, frame_targets(c.cost.has_value()));
   if (!c.checks.empty() || c.deterministic) check_images(gl, pc, opts, r);
   if (c.cost) {
-    const auto counting = gl.program(pc.counting), post = gl.program(pc.post);
+    FramePrograms& job = gl.job(pc, opts.dispatch);
     const FrameSpec f = frames_of(pc).front();
-    FrameParams fp = pc.params;
-    fp.bloom = gl.bloom(pc);  // its post pass adds bloom
-    if (opts.dispatch == Dispatch::compute) {
-      SceneDrawer d(gl.ctx, gl.graph(pc), Dispatch::compute);
-      r.cost = count_frame_cost(d, *d.program(pc.counting), *post, animated(pc.scene, f.time), f.time, fp);
-    } else {
-      r.cost = count_frame_cost(gl.renderer, *counting, *post, animated(pc.scene, f.time), f.time, fp);
-    }
+    const FrameParams fp = job.with_bloom(pc.params);  // its post pass adds bloom
+    SceneDrawer& d = job.drawer();
+    r.cost = count_frame_cost(d, *d.program(pc.counting), job.post(), animated(pc.frame.in.scene, f.time), f.time, fp);
     check_cost(*c.cost, *r.cost, r);
   }
   if (c.time_budget && cal) check_time(gl, suite, pc, *cal, r);
@@ -248,16 +249,16 @@ SuiteResult run_suite(const Suite& suite, const std::vector<PreparedCase>& cases
   const int total = static_cast<int>(cases.size());
   int done = 0;
   for (const Backend be : backends) {
-    std::unique_ptr<Context> ctx;
+    FrameSession session;
     std::optional<ErrorInfo> no_context;
     try {
-      ctx = create_headless_context(be);
-      out.machines.emplace_back(ctx->backend(), ctx->info().renderer);
+      const Context& ctx = session.context(be);
+      out.machines.emplace_back(ctx.backend(), ctx.info().renderer);
     } catch (const Error& e) {
       no_context = e.info();
     }
     std::optional<Gl> gl;
-    if (ctx) gl.emplace(*ctx);
+    if (session.has_context()) gl.emplace(session);
     for (size_t i = 0; i < cases.size(); ++i) {
       const PreparedCase& pc = cases[i];
       if (pc.spec->backend != be) continue;

@@ -1,6 +1,6 @@
-// Running a suite: every selected case rendered through the same still
-// path as `render` (render/still.h), one GL context per backend in one
-// process, programs shared through a ProgramCache; then its image checks,
+// Running a suite: every selected case rendered through the frame pipeline
+// as `render` (pipeline/frame_session.h), one GL context per backend in one
+// process, programs shared through its ProgramCache; then its image checks,
 // cost budgets (bench's counting pass), frame-time ratio and determinism.
 // The caller loads and assembles each case (cli/test_cmd.cpp, as `render`
 // does) before any context exists; this file never parses flags.
@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "io/image.h"
 #include "io/image_io.h"
+#include "pipeline/prepare.h"
 #include "render/frame.h"
 #include "render/graph.h"
 #include "scene/scene.h"
@@ -27,13 +28,10 @@ namespace ms {
 // A case ready to render: what `render -o <reference>` would build.
 struct PreparedCase {
   const SuiteCase* spec = nullptr;
-  Scene scene;                // as loaded; posed per frame
-  std::vector<PassSource> passes;  // as render builds them for the reference's format
-  ShaderSource post;
+  PreparedFrame frame;        // pipeline/prepare.h, for the reference's format: its scene posed per frame
   double fps = 60.0;          // a still's frame rate: a shader's own (60), a scene's render --fps default
   ShaderSource counting;      // the AOV build, when spec->cost
   FrameParams params;         // size, spp, exposure, fused_post
-  std::vector<ShaderSource> bloom;  // [extract, blur] when the case blooms (render/bloom.h), else empty
   ImageFormat format = ImageFormat::png;  // the reference's (what the render is stored as)
   float time = 0.0f;          // of a still
   std::optional<ErrorInfo> error;  // could not be prepared (bad input): reported, not run

@@ -11,11 +11,11 @@
 #include <unordered_map>
 
 #include "cli/job_list.h"
-#include "cli/progress.h"
 #include "cli/render_cmd.h"
 #include "cli/sequence_cmd.h"
-#include "cli/still_job.h"
 #include "core/error.h"
+#include "pipeline/progress.h"
+#include "pipeline/still_job.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -124,7 +124,7 @@ int run_batch(const RenderArgs& a) {
     if (tty) progress.line(line.substr(std::string("marchstudio: ").size()));
     else std::fprintf(stderr, "%s\n", line.c_str());
   };
-  RenderSession session;
+  FrameSession session;
   Outputs outputs;
   int total = 0, failed = 0, worst = 0;
   const auto render = [&](const BatchEntry& e) {
@@ -160,7 +160,7 @@ int run_batch(const RenderArgs& a) {
   if (total == 0) fail_input("the batch has no jobs", a.jobs, 0, "--jobs", "one JSON object per line");
   if (a.verbose)
     std::fprintf(stderr, "marchstudio: batch: %d images, %ld programs compiled, %ld from the cache\n", total - failed,
-                 session.cache.misses(), session.cache.hits());
+                 session.cache().misses(), session.cache().hits());
   if (failed > 0)
     std::fprintf(stderr, "marchstudio: %d of %d job%s failed\n", failed, total, total == 1 ? "" : "s");
   return worst;

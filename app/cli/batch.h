@@ -1,6 +1,6 @@
 // `render A.toml B.toml ... --output-dir DIR` and `render --jobs FILE`: many
 // stills in one process, one GL context and one program cache
-// (cli/still_job.h), each written as the same file one `render` per image
+// (pipeline/still_job.h), each written as the same file one `render` per image
 // would write (docs/usage.md#batches).
 //
 // Positional inputs go to DIR/<stem>.<format> (DIR: the current directory

@@ -9,18 +9,20 @@
 
 #include "bench/bench.h"
 #include "bench/bench_report.h"
-#include "cli/bloom_setup.h"
 #include "cli/common_flags.h"
 #include "cli/dispatch_flag.h"
-#include "cli/dispatch_probe.h"
 #include "cli/flag_checks.h"
-#include "cli/input.h"
-#include "cli/shader_dir.h"
+#include "cli/input_flags.h"
 #include "core/error.h"
+#include "pipeline/bloom_setup.h"
+#include "pipeline/dispatch_probe.h"
+#include "pipeline/input.h"
+#include "pipeline/nonfinite.h"
+#include "pipeline/shader_dir.h"
 #include "render/aov.h"
-#include "scene/animation.h"
 #include "render/bounds_check.h"
 #include "render/uniforms.h"
+#include "scene/animation.h"
 #include "shader/assemble.h"
 
 namespace ms {
@@ -68,68 +70,64 @@ void set_shader_cache(bool allowed) {
 }  // namespace
 
 int run_bench_command(const BenchArgs& a) {
-  const Backend backend = a.backend;
-  AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
-  LoadedInput in = load_input_scene(a.input, a.disable, a.preset, a.overrides.set);
-  apply_shadertoy_flags(in, a.shadertoy);
+  FrameJob job;
+  job.label = a.input;
+  job.input = a.input;
+  job.spp = a.spp;
+  job.backend = a.backend;
+  job.shader_dir = resolve_shader_dir(a.shader_dir);
+  job.allow_include = parse_allow_include(a.allow_include);
+  job.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
+  job.disable = a.disable;
+  job.preset = a.preset;
+  job.set = a.overrides.set;
+  job.uniforms = a.overrides.uniforms;
+  job.shadertoy = a.shadertoy;
+  // Timed frames as render draws them to a PNG: one pass at spp 1, bloom
+  // as the scene says (docs/post.md).
+  const PreparedFrame p = prepare(job, true);
+  const LoadedInput& in = p.in;
   // The counting pass: the same scene with the AOV counters compiled in (a
   // Shadertoy shader has no step counters: its passes are timed only).
-  AssembleOptions count_opts = opts;
+  AssembleOptions count_opts = job.assemble_options();
   count_opts.defines = aov_defines();
   const std::optional<ShaderSource> counting =
       in.shadertoy ? std::nullopt : std::optional<ShaderSource>(assemble_scene(in.scene, count_opts));
-  const bool bloom = bloom_on(in, true);  // timed as a PNG render draws it (docs/post.md)
-  const ShaderSource post = assemble_post(in.scene.render.tonemap, !in.shadertoy, opts, in.shadertoy, bloom);
 
   BenchSettings s;
-  s.width = in.scene.render.width;
-  s.height = in.scene.render.height;
-  if (a.size.width > 0) {
-    s.width = a.size.width;
-    s.height = a.size.height;
-  }
-  s.spp = a.spp > 0 ? a.spp : in.scene.render.spp;
-  if (a.spp < 0) s.spp = a.spp;  // run_bench rejects it with the flag's name
+  s.width = a.size.width > 0 ? a.size.width : in.scene.render.width;
+  s.height = a.size.width > 0 ? a.size.height : in.scene.render.height;
+  s.spp = a.spp < 0 ? a.spp : p.fp.spp;  // run_bench rejects a negative one with the flag's name
   s.frames = a.frames;
   s.warmup = a.warmup;
   s.time = in.scene.render.time;
-  // Timed frames as render draws them: one pass at spp 1 (PNG output).
-  s.fused_post = fuse_post(in, s.spp, false, true, opts);
-  if (bloom) s.bloom = {assemble_bloom(false, opts), assemble_bloom(true, opts)};
-  assemble_input(in, opts);
+  s.fused_post = p.fp.fused_post;
+  s.bloom = in.scene.bloom.enabled;
   report_input_warnings(in.warnings, a.input, a.strict);
 
   s.shader_cache = a.shader_cache;
   s.dispatch = a.dispatch;
-  const std::optional<ComputeGroup> group = a.compute_group;
-  s.group = group.value_or(ComputeGroup{});
-  check_compute_input(s.dispatch, in, false);
+  s.group = a.compute_group;
+  s.verbose = a.verbose;
+  check_compute_input(s.dispatch, in);
   check_bench_settings(s);  // before the (slow) context
   set_shader_cache(s.shader_cache);
-  std::unique_ptr<Context> ctx = create_headless_context(backend);
+  FrameSession session;
+  session.context(job.backend);
   // Keyframed values at the benchmarked time, as render poses them.
   const Scene posed = animated(in.scene, s.time);
-  s.choose = [&](PassGraph& graph, const Program& post_prog, const StillFrame& f) {
-    return choose_dispatch(s.dispatch, graph, post_prog, f, *ctx, group, a.verbose);
-  };
-  const BenchResult r = run_bench(*ctx, posed, in.passes, counting ? &*counting : nullptr, post, s);
+  const BenchResult r = run_bench(session, p, posed, counting ? &*counting : nullptr, s);
   if (!in.shadertoy) {
-    const std::string bw = bounds_warning(a.input, check_bounds(posed, opts, [&](const Program& p) {  // render/bounds_check.h
-      set_scene_uniforms(p, posed, s.width, s.height, s.time, 0);
+    const std::string bw = bounds_warning(a.input, check_bounds(posed, p.opts, [&](const Program& prog) {  // render/bounds_check.h
+      set_scene_uniforms(prog, posed, s.width, s.height, s.time, 0);
     }));
     if (!bw.empty()) std::fprintf(stderr, "marchstudio: %s\n", bw.c_str());
   }
-  const BenchSubject subject{a.input, in.scene.name, a.disable, specialization_name(opts.specialize),
+  const BenchSubject subject{a.input, in.scene.name, a.disable, specialization_name(p.opts.specialize),
                              a.overrides.as_given};
   const std::string text = a.json ? bench_json(subject, s, r) : bench_table(subject, s, r);
   std::fputs(text.c_str(), stdout);
-  if (r.cost.nonfinite_pixels > 0) {
-    const std::string what = std::to_string(r.cost.nonfinite_pixels) + " of " + std::to_string(r.cost.pixels) +
-                             " pixels have NaN/Inf values";
-    if (a.strict) throw Error({Exit::threshold, a.input, 0, "--strict", what, {}, {}});
-    std::fprintf(stderr, "marchstudio: %s: warning: %s (--strict makes this an error)\n", a.input.c_str(),
-                 what.c_str());
-  }
+  guard_nonfinite({a.input, a.strict, {}, {}}, r.cost.nonfinite_pixels, r.cost.pixels);  // pipeline/nonfinite.h
   return 0;
 }
 

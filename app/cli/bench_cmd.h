@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/input.h"
 #include "cli/override_flags.h"
 #include "gl/context.h"
+#include "pipeline/input.h"
 #include "render/compute_frame.h"
 #include "shader/compute_wrap.h"
 
@@ -32,7 +32,7 @@ struct BenchArgs {
   bool no_specialize = false;  // time the generic shader (docs/specialization.md)
   bool strict = false;     // any NaN/Inf pixel in the counting pass is an error (exit 1)
   std::vector<std::string> allow_include;  // more directories #include may read
-  ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
+  ShadertoyOptions shadertoy;  // --media-dir, --missing-media, --mouse
   Overrides overrides;       // --set, --uniform (cli/override_flags.h)
   Dispatch dispatch = Dispatch::fragment;  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
   std::optional<ComputeGroup> compute_group;  // hidden --compute-group; none: 8x8, or auto's measured group

@@ -11,15 +11,15 @@
 #include <vector>
 
 #include "bench/outcome.h"
-#include "cli/render_cmd.h"
-#include "cli/view_cmd.h"
 #include "cli/bench_cmd.h"
 #include "cli/compare_cmd.h"
-#include "cli/info_cmd.h"
 #include "cli/flag_checks.h"
 #include "cli/glslviewer_flags.h"
+#include "cli/info_cmd.h"
+#include "cli/render_cmd.h"
 #include "cli/sweep_cmd.h"
 #include "cli/test_cmd.h"
+#include "cli/view_cmd.h"
 #include "core/error.h"
 #include "core/utf8.h"
 #include "core/version.h"

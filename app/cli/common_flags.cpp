@@ -2,6 +2,7 @@
 
 #include "cli/dispatch_flag.h"
 #include "cli/flag_checks.h"
+#include "cli/input_flags.h"
 #include "scene/quality.h"
 
 namespace ms {

@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "cli/input.h"
 #include "gl/context.h"
+#include "pipeline/input.h"
 #include "render/compute_frame.h"
 #include "shader/compute_wrap.h"
 

@@ -12,13 +12,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/compare.h"
-#include "io/flip.h"
 #include "bench/outcome.h"
 #include "cli/common_flags.h"
 #include "cli/exit_codes.h"
 #include "core/error.h"
 #include "core/version.h"
+#include "io/compare.h"
+#include "io/flip.h"
 #include "io/image_io.h"
 
 namespace ms {

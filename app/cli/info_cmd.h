@@ -1,5 +1,5 @@
 // `marchstudio info FILE...`: an image's size, channels, pixel type and
-// text attributes, and the fingerprint of what made it (cli/fingerprint.h),
+// text attributes, and the fingerprint of what made it (pipeline/fingerprint.h),
 // read from the header only. `--fingerprint` prints just the fingerprint,
 // for scripts; a file without one is exit 1 there. Bad files: exit 2.
 #pragma once

@@ -14,9 +14,10 @@
 #include <string_view>
 
 #include "cli/dispatch_flag.h"
-#include "cli/input.h"
+#include "cli/input_flags.h"
 #include "cli/override_flags.h"
 #include "cli/render_cmd.h"
+#include "pipeline/input.h"
 #include "scene/suggest.h"
 #include "shader/json_brief.h"
 
@@ -142,7 +143,7 @@ const std::map<std::string, Handler>& handlers() {
 }
 
 // One line's object over the defaults, then the same checks as the flags.
-RenderJob job_from_line(const std::string& line, const RenderArgs& defaults, const fs::path& base,
+FrameJob job_from_line(const std::string& line, const RenderArgs& defaults, const fs::path& base,
                         const DefaultOutput& default_output) {
   json obj;
   try {

@@ -38,7 +38,7 @@ struct RenderArgs;
 // One job of a batch, or why it cannot be one.
 struct BatchEntry {
   std::string label;             // "jobs.jsonl:3", or the input as given
-  std::optional<RenderJob> job;  // empty when `error` says why
+  std::optional<FrameJob> job;  // empty when `error` says why
   std::optional<Error> error;
 };
 

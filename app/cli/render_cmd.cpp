@@ -10,13 +10,14 @@
 #include "cli/common_flags.h"
 #include "cli/flag_checks.h"
 #include "cli/glslviewer_flags.h"
-#include "cli/input.h"
+#include "cli/input_flags.h"
 #include "cli/render_job.h"
 #include "cli/sequence_cmd.h"
-#include "cli/shader_dir.h"
-#include "cli/still_job.h"
 #include "core/error.h"
 #include "live/render_watch.h"
+#include "pipeline/input.h"
+#include "pipeline/shader_dir.h"
+#include "pipeline/still_job.h"
 #include "render/aov.h"
 
 namespace ms {
@@ -148,13 +149,13 @@ int run_render(const RenderArgs& args) {
   if (!a.format.empty() && !a.output.empty())
     fail_input("--format names outputs made from the input's stem, and -o names the file", {}, 0, "--format",
                "give the extension in -o");
-  const RenderJob job = make_render_job(a, a.input, a.output.empty() ? batch_output(a, a.input) : fs::path{});
+  const FrameJob job = make_render_job(a, a.input, a.output.empty() ? batch_output(a, a.input) : fs::path{});
   if (a.print_shader) {
     print_job_shader(job);
     return 0;
   }
   say_removed_temps({job.output});
-  RenderSession session;
+  FrameSession session;
   render_still_job(job, session);
   std::printf("%s\n", job.output.string().c_str());
   return 0;

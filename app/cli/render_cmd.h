@@ -6,10 +6,10 @@
 #include <utility>
 #include <vector>
 
-#include "cli/input.h"
 #include "cli/override_flags.h"
 #include "gl/context.h"
 #include "io/sequence.h"
+#include "pipeline/frame_job.h"
 #include "render/compute_frame.h"
 #include "render/tiles.h"
 #include "shader/compute_wrap.h"
@@ -20,10 +20,8 @@ class App;
 
 namespace ms {
 
-// The flags as given; cli/render_job.h turns them into RenderJobs, which is
+// The flags as given; cli/render_job.h turns them into FrameJobs, which is
 // all the still pipeline reads.
-// --fps's default for an SDF scene; a Shadertoy shader's is its [shadertoy] fps (60).
-inline constexpr double kSceneFps = 24.0;
 
 struct RenderArgs {
   std::vector<std::string> inputs;  // positional: one, or a batch of several (cli/batch.h)
@@ -51,7 +49,7 @@ struct RenderArgs {
   std::optional<ShardMode> shard_mode;  // none: stride
   std::string video;       // encode the frames with ffmpeg afterwards
   bool no_write = false;   // hidden: render but discard (throughput measurements)
-  bool force = false;      // a sequence renders every frame again (cli/sequence_state.h)
+  bool force = false;      // a sequence renders every frame again (pipeline/sequence_state.h)
   bool verbose = false;
   bool watch = false;       // re-render on every save of the scene or its includes (live/render_watch.h)
   std::vector<std::string> aov;      // AOVs to add to an .exr: depth, normal, steps, material, shadow, ao, cost, hit
@@ -64,7 +62,7 @@ struct RenderArgs {
   int tile_still = 0;        // hidden --tile-still: draw and stream the still in tiles of this side (tests); 0: past the limits only
   Dispatch dispatch = Dispatch::fragment;  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
   std::optional<ComputeGroup> compute_group;  // hidden --compute-group WxH; none: 8x8, or auto's measured group
-  ShadertoyFlags shadertoy;  // --media-dir, --missing-media, --mouse
+  ShadertoyOptions shadertoy;  // --media-dir, --missing-media, --mouse
   Overrides overrides;       // --set, --uniform (cli/override_flags.h)
 };
 

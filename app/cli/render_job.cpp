@@ -4,11 +4,12 @@
 #include <string_view>
 
 #include "cli/flag_checks.h"
+#include "cli/input_flags.h"
 #include "cli/render_cmd.h"
-#include "cli/shader_dir.h"
 #include "core/error.h"
 #include "io/image_io.h"
 #include "io/sequence.h"
+#include "pipeline/shader_dir.h"
 #include "render/aov.h"
 #include "scene/quality.h"
 #include "scene/suggest.h"
@@ -31,8 +32,8 @@ void check_one_of(const std::string& value, const std::vector<std::string>& name
 
 }  // namespace
 
-RenderJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::path& output) {
-  RenderJob job;
+FrameJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::path& output) {
+  FrameJob job;
   job.label = input.string();
   job.input = input;
   if (!std::isfinite(a.timeout) || a.timeout < 0)
@@ -67,9 +68,10 @@ RenderJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::
   job.strict = a.strict;
   job.verbose = a.verbose;
   job.shadertoy = a.shadertoy;
-  job.dispatch = a.dispatch;  // auto: chosen once the context exists (cli/dispatch_probe.h)
+  job.dispatch = a.dispatch;  // auto: chosen once the context exists (pipeline/dispatch_probe.h)
   job.compute_group = a.compute_group;
-  job.overrides = a.overrides;
+  job.set = a.overrides.set;
+  job.uniforms = a.overrides.uniforms;
 
   job.output = !output.empty()     ? output
                : !a.output.empty() ? fs::path(a.output)

@@ -9,18 +9,19 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/atomic_file.h"
 #include "bench/plot.h"
 #include "bench/sweep.h"
 #include "bench/sweep_report.h"
 #include "cli/common_flags.h"
 #include "cli/dispatch_flag.h"
-#include "cli/dispatch_probe.h"
 #include "cli/flag_checks.h"
-#include "cli/input.h"
-#include "cli/shader_dir.h"
+#include "cli/input_flags.h"
 #include "core/error.h"
+#include "io/atomic_file.h"
 #include "io/image_io.h"
+#include "pipeline/dispatch_probe.h"
+#include "pipeline/input.h"
+#include "pipeline/shader_dir.h"
 #include "scene/animation.h"
 #include "scene/quality.h"
 
@@ -129,7 +130,7 @@ int run_sweep_command(const SweepArgs& a) {
   s.dispatch = a.dispatch;
   const std::optional<ComputeGroup> group = a.compute_group;
   s.group = group.value_or(ComputeGroup{});
-  check_compute_input(s.dispatch, in, false);
+  check_compute_input(s.dispatch, in);
 
   std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.preset);
   if (!a.only.empty()) {
@@ -159,7 +160,7 @@ int run_sweep_command(const SweepArgs& a) {
   std::unique_ptr<Context> ctx = create_headless_context(backend);
   if (!a.time_by) s.clock = ctx->info().software() ? SweepClock::cpu : SweepClock::gpu;
   const Scene posed = animated(in.scene, s.time);
-  if (s.dispatch == Dispatch::automatic) {  // probed on the scene's own pass (cli/dispatch_probe.h)
+  if (s.dispatch == Dispatch::automatic) {  // probed on the scene's own pass (pipeline/dispatch_probe.h)
     PassGraph graph(in.passes);
     const Program post(fullscreen_vertex_source(), assemble_post(in.scene.render.tonemap, true, opts));
     StillFrame f;

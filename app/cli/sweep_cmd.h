@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/input.h"
 #include "bench/sweep.h"
 #include "bench/sweep_grid.h"
 #include "cli/override_flags.h"
 #include "gl/context.h"
+#include "pipeline/input.h"
 #include "render/compute_frame.h"
 #include "shader/compute_wrap.h"
 

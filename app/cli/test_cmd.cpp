@@ -19,15 +19,14 @@
 #include "cli/common_flags.h"
 #include "cli/dispatch_flag.h"
 #include "cli/exit_codes.h"
-#include "cli/input.h"
-#include "cli/progress.h"
-#include "cli/render_cmd.h"
-#include "cli/shader_dir.h"
 #include "core/error.h"
 #include "core/utf8.h"
+#include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/sequence.h"
-#include "io/atomic_file.h"
+#include "pipeline/prepare.h"
+#include "pipeline/progress.h"
+#include "pipeline/shader_dir.h"
 #include "render/aov.h"
 #include "render/tiles.h"
 #include "shader/assemble.h"
@@ -80,38 +79,45 @@ bool reference_size(const SuiteCase& c, int& w, int& h) {
 }
 
 // Loads and assembles a case exactly as `render -o <reference>` would:
-// load_input_scene() and assemble_still(), as cli/render_cmd.cpp calls them.
-PreparedCase prepare(const Suite& suite, const SuiteCase& c, const fs::path& shader_dir) {
+// the frame pipeline's prepare() (pipeline/prepare.h), as a still job.
+PreparedCase prepare_case(const Suite& suite, const SuiteCase& c, const fs::path& shader_dir) {
   PreparedCase pc;
   pc.spec = &c;
   try {
-    AssembleOptions opts{shader_dir, c.defines, c.allow_include};
-    opts.specialize = c.specialize ? Specialization::folded : Specialization::generic;
-    LoadedInput in = load_input_scene(c.input, c.disable, c.preset);
+    FrameJob job;
+    job.input = c.input;
+    job.shader_dir = shader_dir;
+    job.defines = c.defines;
+    job.allow_include = c.allow_include;
+    job.specialize = c.specialize ? Specialization::folded : Specialization::generic;
+    job.disable = c.disable;
+    job.preset = c.preset;
+    job.spp = c.spp;
+    pc.format = c.reference.empty() ? ImageFormat::png : image_format_for(c.reference);
+    PreparedFrame p = prepare(job, is_display_format(pc.format));
+    LoadedInput& in = p.in;
     if (c.cost && in.shadertoy)
       fail_input("case '" + c.name + "': [case.cost] needs an SDF scene, and a Shadertoy shader has no step counters",
                  suite.file.string(), c.line, "cost");
-    pc.format = c.reference.empty() ? ImageFormat::png : image_format_for(c.reference);
-    const bool display = is_display_format(pc.format);
     FrameParams& fp = pc.params;
+    fp = p.fp;
     fp.width = c.width;
     fp.height = c.height;
     if (fp.width == 0 && !reference_size(c, fp.width, fp.height)) {
       fp.width = in.scene.render.width;
       fp.height = in.scene.render.height;
     }
-    fp.spp = c.spp > 0 ? c.spp : in.scene.render.spp;
     fp.exposure = in.scene.render.exposure;
-    AssembleOptions count_opts = opts;
-    for (const auto& d : aov_defines()) count_opts.defines.push_back(d);
-    pc.post = assemble_still(in, opts, fp.spp, false, display, fp.fused_post);
-    if (in.scene.bloom.enabled) pc.bloom = {assemble_bloom(false, opts), assemble_bloom(true, opts)};  // docs/post.md
-    pc.passes = in.passes;
     pc.fps = in.shadertoy ? in.scene.shadertoy.fps : kSceneFps;  // as render's still
-    if (c.cost) pc.counting = assemble_scene(in.scene, count_opts);
+    if (c.cost) {
+      AssembleOptions count_opts = job.assemble_options();
+      for (const auto& d : aov_defines()) count_opts.defines.push_back(d);
+      pc.counting = assemble_scene(in.scene, count_opts);
+    }
     pc.time = c.time ? *c.time : in.scene.render.time;
-    check_frame_memory(frame_memory(fp.width, fp.height, c.cost ? 6 : 2, c.cost.has_value()), fp.width, fp.height);
-    pc.scene = std::move(in.scene);
+    check_frame_memory(frame_memory(fp.width, fp.height, frame_targets(c.cost.has_value()), c.cost.has_value()),
+                       fp.width, fp.height);
+    pc.frame = std::move(p);
   } catch (const Error& e) {
     pc.error = e.info();
   }
@@ -181,11 +187,11 @@ int run(const TestArgs& a, ExitCodes codes) {
   }
   const fs::path shader_dir = resolve_shader_dir(a.shader_dir);
   std::vector<PreparedCase> cases;
-  for (const SuiteCase* c : selected) cases.push_back(prepare(suite, *c, shader_dir));
+  for (const SuiteCase* c : selected) cases.push_back(prepare_case(suite, *c, shader_dir));
   std::optional<PreparedCase> calibration;
   const bool timed = std::any_of(selected.begin(), selected.end(), [](const SuiteCase* c) { return c->time_budget; });
   if (timed) {
-    calibration = prepare(suite, *suite.find(suite.calibration), shader_dir);
+    calibration = prepare_case(suite, *suite.find(suite.calibration), shader_dir);
     if (calibration->error) {
       ErrorInfo e = *calibration->error;
       e.what = "the calibration case '" + suite.calibration + "': " + e.what;

@@ -9,17 +9,18 @@
 
 #include "cli/common_flags.h"
 #include "cli/dispatch_flag.h"
-#include "cli/dispatch_probe.h"
 #include "cli/flag_checks.h"
 #include "cli/glslviewer_flags.h"
-#include "cli/input.h"
-#include "cli/shader_dir.h"
+#include "cli/input_flags.h"
 #include "core/error.h"
 #include "gl/context.h"
 #include "io/input_file.h"
 #include "io/sequence.h"
 #include "io/video.h"
 #include "live/viewer.h"
+#include "pipeline/dispatch_probe.h"
+#include "pipeline/input.h"
+#include "pipeline/shader_dir.h"
 #include "scene/animation.h"
 #include "scene/load.h"
 #include "scene/quality.h"
@@ -158,19 +159,8 @@ int run_view(const ViewArgs& a) {
   const fs::path input = a.input;
   const AssembleOptions opts = o.assemble;
   const SceneOverrides set = a.overrides.set;
-  // A .toml is only parsed here (the viewer assembles itself, and shows an
-  // include error in the window instead of exiting); a bare Shadertoy file
-  // goes through the same loader as `render`.
   // --set is applied to every read of the file: a save keeps the overrides.
-  o.load = [input, opts, set]() -> Scene {
-    check_input_file(input, input.extension() == ".toml" ? "scene file" : "input file");
-    if (input.extension() == ".toml") {
-      Scene s = load_scene(input, set);
-      if (!s.shadertoy_file.empty() || s.passes) request_zero_initialised_locals();  // as WebGL
-      return s;
-    }
-    return load_input(input, {}, opts, {}, set).scene;
-  };
+  o.set = set;
   // A bad --uniform is a bad flag: exit 2 now, not an error in the window.
   // (Other assembly errors are the window's to show, and fixed by a save.)
   if (!opts.uniforms.empty()) {
@@ -214,12 +204,7 @@ int run_view(const ViewArgs& a) {
   o.debounce_ms = a.debounce_ms;
   o.hide_panel = a.no_panel;
   o.dispatch.dispatch = a.dispatch;  // a bad name was refused as the flag was read
-  // auto: render's cached or measured choice for this device; -v's line on stderr says which.
-  o.dispatch.group = a.compute_group;
-  o.dispatch.choose = [group = o.dispatch.group](PassGraph& graph, const Program& post, const StillFrame& frame,
-                                                 const Context& ctx) {
-    return choose_dispatch(Dispatch::automatic, graph, post, frame, ctx, group, true);
-  };
+  o.dispatch.group = a.compute_group;  // auto: render's cached or measured choice (pipeline/dispatch_probe.h)
   return live::run_viewer(o);
 }
 

@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include "cli/input.h"
 #include "cli/override_flags.h"
 #include "io/sequence.h"
+#include "pipeline/input.h"
 #include "render/compute_frame.h"
 #include "shader/compute_wrap.h"
 

@@ -2,7 +2,7 @@
 // else ~/.cache/marchstudio, else a directory of our own in the temporary
 // directory ($TMPDIR/marchstudio-<uid>, mode 0700), else none. One home for
 // the irradiance cache (render/environment.h) and the dispatch choice
-// (cli/dispatch_probe.h).
+// (pipeline/dispatch_probe.h).
 //
 // A cache entry is only ever a hint: one that is not a regular file (a FIFO,
 // a device, a directory), too large or unreadable is a miss, read without

@@ -14,7 +14,7 @@
 //
 // `key` says what made the state (the passes' sources, size, fps, mouse): a
 // checkpoint of another shader or size has another name and is never read.
-// Each file also carries its frame's fingerprint (cli/fingerprint.h: the
+// Each file also carries its frame's fingerprint (pipeline/fingerprint.h: the
 // run and the frame number), checked on reading: a checkpoint copied over
 // another frame's, or left by another run under the same name, is not
 // trusted.

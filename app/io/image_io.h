@@ -46,7 +46,7 @@ using ImageMetadata = std::map<std::string, std::string>;
 // target or the temporary behind on failure.
 void write_image(const Image& image, const std::filesystem::path& path, const ImageMetadata& meta = {});
 
-// The fingerprint of what made an image (cli/fingerprint.h), in two places
+// The fingerprint of what made an image (pipeline/fingerprint.h), in two places
 // so that every format keeps it: the "marchstudio:fingerprint" attribute
 // (a PNG text chunk, an EXR header attribute) and a last
 // "fingerprint=<hex>" word of ImageDescription (which TIFF and JPEG keep).

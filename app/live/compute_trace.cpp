@@ -1,6 +1,7 @@
 #include "live/compute_trace.h"
 
 #include "core/error.h"
+#include "pipeline/dispatch_probe.h"
 
 namespace ms::live {
 
@@ -21,7 +22,7 @@ std::vector<std::string> ComputeTrace::update(PassGraph& graph, int generation, 
   }
   std::vector<std::string> notes;
   if (opts_.dispatch == Dispatch::automatic && !chosen_) {
-    chosen_ = opts_.choose ? opts_.choose(graph, post, frame(), ctx_) : DispatchChoice{};
+    chosen_ = choose_dispatch(Dispatch::automatic, graph, post, frame(), ctx_, opts_.group, true);
     notes.push_back(std::string("dispatch auto=") + dispatch_name(chosen_->dispatch));
     // A measured group other than the one src was wrapped with.
     if (chosen_->dispatch == Dispatch::compute) src = compute_source(graph.pass(graph.size() - 1), group());

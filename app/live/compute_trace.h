@@ -30,11 +30,9 @@ namespace ms::live {
 
 struct DispatchOptions {
   Dispatch dispatch = Dispatch::fragment;  // --dispatch
-  // auto: the cached or measured choice for this device (cli/dispatch_probe.h
-  // choose_dispatch, passed in by cli/); asked once a session, for the first
-  // program compute can run, with its work group. Unset: auto draws with
-  // fragment.
-  std::function<DispatchChoice(PassGraph&, const Program& post, const StillFrame&, const Context&)> choose;
+  // auto: the cached or measured choice for this device
+  // (pipeline/dispatch_probe.h), asked once a session, for the first
+  // program compute can run, with its work group; -v's line on stderr says which.
   // --compute-group: the work group compute traces with, and the only one
   // auto times. Unset: auto's measured group, else 8x8.
   std::optional<ComputeGroup> group;

@@ -3,10 +3,8 @@
 #include <chrono>
 
 #include "core/error.h"
-#include "render/environment.h"
-#include "render/project_passes.h"
+#include "pipeline/input.h"
 #include "scene/quality.h"
-#include "shader/shadertoy.h"
 
 namespace ms::live {
 namespace fs = std::filesystem;
@@ -38,7 +36,7 @@ Session::PreparedReload Session::prepare(bool from_disk) {
     if (from_disk || !disk_ok_) {
       Scene fresh;
       try {
-        fresh = opts_.load();
+        fresh = read_input_scene(opts_.input, opts_.assemble, opts_.set);  // pipeline/input.h
       } catch (const Error&) {
         disk_ok_ = false;
         throw;
@@ -63,20 +61,11 @@ Session::PreparedReload Session::prepare(bool from_disk) {
     p.fused = fuse_frame(scene_, accumulate_, view, shadertoy());  // render's one pass at spp 1
     if (p.fused)
       for (auto& d : fused_post_defines(scene_.render.tonemap, true)) opts.defines.push_back(std::move(d));
-    // The same passes `render` builds (cli/input.cpp): a scene's one pass,
-    // or a Shadertoy shader's buffers and Image pass, media found.
-    if (shadertoy()) {
-      const fs::path wrapper = has_toml() ? scene_.file : fs::path{};
-      const ShaderProject project =
-          scene_.passes ? *scene_.passes : load_shadertoy_file(scene_.shadertoy_file, opts, wrapper);
-      p.passes = shadertoy_passes(project, scene_.shadertoy, opts, wrapper, p.warnings);
-    } else {
-      PassSource pass;
-      pass.name = scene_.name;
-      pass.source = specialized ? assemble_scene(scene_, opts, features_) : assemble_scene(scene_, opts);
-      attach_environment(scene_, pass);  // [sky] environment (render/environment.h)
-      p.passes.push_back(std::move(pass));
-    }
+    // The same passes `render` builds (pipeline/input.h), with the viewer's
+    // own features when specialized.
+    ShaderProject project;
+    p.passes = assemble_passes(scene_, has_toml() ? scene_.file : fs::path{}, opts, project, p.warnings,
+                               specialized ? &features_ : nullptr);
     deps_.clear();  // preprocessing worked: these are the files now
     for (const PassSource& ps : p.passes)
       deps_.insert(deps_.end(), ps.source.dependencies.begin(), ps.source.dependencies.end());

@@ -1,14 +1,13 @@
 // What the viewer shows, and how it gets rebuilt: the scene (as last read
 // from disk and as edited in the panel), the pass graph and post program
 // (the last GOOD ones: a failed reload keeps them; a good one keeps the
-// buffers' state), the scene's own parameters, and the files to watch. Loading and assembly are the same as
-// `render`'s (the caller passes cli/'s loader in); only the compiled
-// programs are kept here. Needs the GL context current for reload().
+// buffers' state), the scene's own parameters, and the files to watch.
+// Loading and assembly are the frame pipeline's, as `render`'s
+// (pipeline/input.h); only the compiled programs are kept here. Needs the GL context current for reload().
 #pragma once
 #include <chrono>
 #include <exception>
 #include <filesystem>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,15 +20,16 @@
 #include "render/program.h"
 #include "render/program_cache.h"
 #include "scene/features.h"
+#include "scene/overrides.h"
 #include "scene/scene.h"
 #include "shader/assemble.h"
 
 namespace ms::live {
 
 struct SessionOptions {
-  // Reads the input (.toml scene or Shadertoy .glsl) from disk; throws ms::Error.
-  std::function<Scene()> load;
-  AssembleOptions assemble;  // the shader dir; DEBUG_VIEW is added per reload
+  std::filesystem::path input;  // the .toml scene or Shadertoy .glsl, read from disk on each save
+  SceneOverrides set;           // --set, applied to every read: a save keeps the overrides
+  AssembleOptions assemble;     // the shader dir; DEBUG_VIEW is added per reload
 };
 
 struct ReloadResult {

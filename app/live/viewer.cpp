@@ -22,14 +22,15 @@
 #include "live/compile_worker.h"
 #include "live/key_bindings.h"
 #include "live/keyboard.h"
-#include "live/live_values.h"
 #include "live/live_log.h"
+#include "live/live_values.h"
 #include "live/overlay.h"
 #include "live/panel.h"
 #include "live/recording.h"
 #include "live/session.h"
 #include "live/viewer_frame.h"
 #include "live/watcher.h"
+#include "pipeline/input.h"
 #include "render/frame.h"
 #include "render/gpu_timer.h"
 #include "render/tiles.h"
@@ -195,7 +196,7 @@ void Viewer::write_values() {
 }
 
 int Viewer::run() {
-  const Scene first = o_.load();  // bad input fails here, before any window
+  const Scene first = read_input_scene(o_.input, o_.assemble, o_.set);  // bad input fails here, before any window
   int w = o_.width, h = o_.height;
   if (w <= 0 || h <= 0) {
     const double fit = std::min({1.0, 1280.0 / first.render.width, 720.0 / first.render.height});

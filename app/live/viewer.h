@@ -5,21 +5,21 @@
 // panel, overlay and input each have their own file.
 #pragma once
 #include <filesystem>
-#include <functional>
 #include <optional>
 #include <string>
 
 #include "live/compute_trace.h"
 #include "live/live_values.h"
 #include "live/recording.h"
+#include "scene/overrides.h"
 #include "scene/scene.h"
 #include "shader/assemble.h"
 
 namespace ms::live {
 
 struct ViewerOptions {
-  std::filesystem::path input;       // .toml or Shadertoy .glsl, for titles and names
-  std::function<Scene()> load;       // reads the input from disk (cli/input.h); throws ms::Error
+  std::filesystem::path input;       // .toml or Shadertoy .glsl, read on every save
+  SceneOverrides set;                // --set, applied to every read of the input (pipeline/input.h)
   AssembleOptions assemble;          // the shader dir
   int width = 0, height = 0;         // window size; 0: the scene's, at most 1280x720
   int debug_view = 0;                // DEBUG_VIEW at start (0 = lit)

@@ -58,7 +58,7 @@ struct Compiling {
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& o)
-      : o_(o), log_(o.log_file), session_(SessionOptions{o.load, o.assemble}), drag_(o.drag), recorder_(o.record) {}
+      : o_(o), log_(o.log_file), session_(SessionOptions{o.input, o.set, o.assemble}), drag_(o.drag), recorder_(o.record) {}
   int run();
 
  private:

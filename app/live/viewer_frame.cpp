@@ -53,7 +53,7 @@ void FrameDrawer::sync_trace() {
   std::vector<std::string> notes;
   try {
     notes = trace_.update(*graph, session_.generation(), *post, [&] {
-      StillFrame f;  // auto's probe (cli/dispatch_probe.h) draws the scene as it stands, small
+      StillFrame f;  // auto's probe (pipeline/dispatch_probe.h) draws the scene as it stands, small
       f.in = inputs(view, nullptr);
       f.params.width = rw_;
       f.params.height = rh_;

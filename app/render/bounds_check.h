@@ -5,7 +5,7 @@
 // (sdf_shaders/bounds_probe.glsl: a 64 x 64 grid per box face, or as many
 // points spiralled over a sphere) and reports where the field is negative
 // there, ignoring points inside a declared plane's solid side. Called by
-// `render` (cli/bounds_report.h), `bench` and the viewer; needs a current GL
+// `render` (pipeline/bounds_report.h), `bench` and the viewer; needs a current GL
 // context.
 //
 //   const BoundsCheck c = check_bounds(posed_scene, assemble_opts, set_uniforms);

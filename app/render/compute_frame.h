@@ -31,7 +31,7 @@ enum class Dispatch { fragment, compute, automatic };
 const char* dispatch_name(Dispatch d);
 
 // What draws a job: the dispatch, and the work group when it is compute
-// (cli/dispatch_probe.h's auto measures both).
+// (pipeline/dispatch_probe.h's auto measures both).
 struct DispatchChoice {
   Dispatch dispatch = Dispatch::fragment;
   ComputeGroup group;

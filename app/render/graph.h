@@ -12,7 +12,7 @@
 // buffer (or Cube A) some pass reads and none writes is made too, and
 // stays 0, as on Shadertoy.
 //
-//   std::vector<PassSource> specs = ...;       // cli/input.h: no GL yet
+//   std::vector<PassSource> specs = ...;       // pipeline/input.h: no GL yet
 //   PassGraph g(specs);                        // compiles, uploads textures
 //   g.draw(renderer, post, frame, params);     // buffers, then the frame
 //   g.reset();                                 // the next draw is frame 0
@@ -31,9 +31,9 @@
 #include "render/frame.h"
 #include "render/program.h"
 #include "render/program_cache.h"
+#include "scene/project.h"
 #include "scene/scene.h"
 #include "shader/preprocess.h"
-#include "scene/project.h"
 
 namespace ms {
 

@@ -1,7 +1,7 @@
 // A Shadertoy project's passes as render/graph.h takes them, before any GL
 // context: each pass assembled, each texture found (the scene's path, or
 // /media/a/<name> in the media directory by its file name) and decoded
-// (io/), missing media refused or stood in for. `render` (cli/input.h) and
+// (io/), missing media refused or stood in for. `render` (pipeline/input.h) and
 // the viewer (live/session.h) load through this one function.
 #pragma once
 #include <cstdint>
@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "render/graph.h"
-#include "shader/assemble.h"
 #include "scene/project.h"
+#include "shader/assemble.h"
 #include "shader/shadertoy_media.h"
 
 namespace ms {

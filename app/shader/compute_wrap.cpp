@@ -1,6 +1,7 @@
 #include "shader/compute_wrap.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <regex>
 #include <string>
 #include <vector>
@@ -15,6 +16,17 @@ std::string group_name(const ComputeGroup& g) {
   if (g.stripe > 0) s += "/" + std::to_string(g.stripe);
   return s;
 }
+
+std::optional<ComputeGroup> parse_group_name(const std::string& text) {
+  ComputeGroup g;
+  char x = 0, slash = 0, extra = 0;
+  const int n = std::sscanf(text.c_str(), "%d%c%d%c%d%c", &g.x, &x, &g.y, &slash, &g.stripe, &extra);
+  if ((n != 3 && n != 5) || (x != 'x' && x != 'X') || (n == 5 && slash != '/') || g.x < 1 || g.y < 1 ||
+      g.x * g.y > 1024 || g.stripe < 0 || g.stripe > 1024)
+    return std::nullopt;
+  return g;
+}
+
 namespace {
 
 // The text with comments blanked (newlines kept), for scans that must not

@@ -16,6 +16,7 @@
 // main.frag declares them. The work group is MS_GROUP_X x MS_GROUP_Y, in
 // the order MS_STRIPE gives (ComputeGroup).
 #pragma once
+#include <optional>
 #include <string>
 
 #include "shader/preprocess.h"
@@ -32,6 +33,9 @@ struct ComputeGroup {
 
 // "8x8", "16x8/4" (a stripe order): --compute-group's form.
 std::string group_name(const ComputeGroup& g);
+// group_name()'s inverse: "WxH" (each >= 1, W x H <= 1024) or "WxH/N"
+// (stripe 0..1024); none for anything else.
+std::optional<ComputeGroup> parse_group_name(const std::string& text);
 
 // The first derivative function (dFdx, dFdy, fwidth and their Fine/Coarse
 // forms) the text calls outside comments, or "" when there is none: a

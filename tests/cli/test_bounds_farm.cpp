@@ -1,4 +1,4 @@
-// The [bounds] check on the paths a farm runs (cli/bounds_report.h): a
+// The [bounds] check on the paths a farm runs (pipeline/bounds_report.h): a
 // plain `render`, a --jobs batch and a --frames sequence warn when map()
 // crosses the bounds, once per scene; --strict makes it exit 1 with no file.
 #include <gtest/gtest.h>

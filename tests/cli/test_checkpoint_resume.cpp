@@ -1,5 +1,5 @@
 // A sequence of a shader with buffers never stalls on its checkpoints
-// (io/checkpoint.h, cli/sequence_state.h): a corrupt one is passed over
+// (io/checkpoint.h, pipeline/sequence_state.h): a corrupt one is passed over
 // with a warning and the frames replay (exit 0, the same frames as a clean
 // run); one copied over another frame's is not trusted (each carries its
 // frame's fingerprint); a checkpoint's temporary left by a killed run is

@@ -1,4 +1,4 @@
-// Fingerprinted frames (cli/fingerprint.h): a rerun keeps a frame only when
+// Fingerprinted frames (pipeline/fingerprint.h): a rerun keeps a frame only when
 // it carries this run's fingerprint for it; others render again with one
 // summary line; --force renders everything; `info` reads it back.
 #include <gtest/gtest.h>

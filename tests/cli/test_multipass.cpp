@@ -234,7 +234,7 @@ TEST(Multipass, BadInputIsAOneLineErrorAndNoFile) {
   EXPECT_NE(r.err.find("Image iChannel2 is sampled but nothing is bound to it"), std::string::npos) << r.err;
 }
 
-TEST(Multipass, ShadertoyFlagsOnAnSdfSceneAreErrors) {
+TEST(Multipass, ShadertoyOptionsOnAnSdfSceneAreErrors) {
   TempDir dir;
   const std::string seed = (source_dir() / "scenes/seed.toml").string();
   const std::vector<std::vector<std::string>> flags = {

@@ -1,11 +1,11 @@
-// bench/dispatch_plan.h: --dispatch auto's sizes and groups, with made-up
+// pipeline/dispatch_plan.h: --dispatch auto's sizes and groups, with made-up
 // timings (the GL side is tests/cli/test_dispatch_paths.cpp).
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "bench/dispatch_plan.h"
+#include "pipeline/dispatch_plan.h"
 
 namespace ms {
 namespace {

@@ -5,7 +5,7 @@
 #pragma once
 #include <memory>
 
-#include "cli/input.h"
+#include "pipeline/input.h"
 #include "render/bloom.h"
 #include "render/program_cache.h"
 

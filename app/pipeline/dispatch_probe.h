@@ -2,7 +2,7 @@
 // compute dispatch on this device, and compute's work group, measured once
 // and kept. The first use on a device draws the job's own scene (its
 // passes, post and bloom as the job's) at the sizes and groups of
-// bench/dispatch_plan.h's plan (256x144 first, larger while a frame is too
+// pipeline/dispatch_plan.h's plan (256x144 first, larger while a frame is too
 // short to measure; compute's other groups when it wins at 8x8), a warm-up
 // frame and kProbeFrames timed frames each, glFinish around each (wall
 // clock: the GPU timer reads 0 on some drivers), and keeps the fastest by
@@ -28,6 +28,14 @@
 #include "render/still.h"
 
 namespace ms {
+
+struct LoadedInput;
+
+// With `d` compute, whether the input's frame pass can run as one
+// (compute_source: derivatives and implicit-LOD lookups of a mipmapped
+// input are refused at their file:line); buffer and Cube A passes stay
+// fragment passes. Before the context: nothing is drawn or written first.
+void check_compute_input(Dispatch d, const LoadedInput& in);
 
 // cache_dir()/dispatch; empty when there is no cache (io/cache_dir.h).
 std::filesystem::path dispatch_cache_path();

@@ -1,4 +1,4 @@
-#include "cli/dispatch_probe.h"
+#include "pipeline/dispatch_probe.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,10 +9,10 @@
 #include <sstream>
 #include <vector>
 
-#include "bench/dispatch_plan.h"
-#include "cli/dispatch_flag.h"
 #include "core/error.h"
 #include "io/cache_dir.h"
+#include "pipeline/dispatch_plan.h"
+#include "pipeline/input.h"
 #include "render/scene_drawer.h"
 
 namespace ms {
@@ -35,11 +35,7 @@ std::optional<DispatchChoice> parse_choice(const std::string& text) {
   if (text == "fragment") return DispatchChoice{Dispatch::fragment, {}};
   if (text == "compute") return DispatchChoice{Dispatch::compute, {}};
   if (text.rfind("compute ", 0) != 0) return std::nullopt;
-  try {
-    if (const std::optional<ComputeGroup> g = parse_compute_group(text.substr(8)))
-      return DispatchChoice{Dispatch::compute, *g};
-  } catch (const Error&) {
-  }
+  if (const std::optional<ComputeGroup> g = parse_group_name(text.substr(8))) return DispatchChoice{Dispatch::compute, *g};
   return std::nullopt;
 }
 
@@ -92,6 +88,10 @@ double median_frame_ms(SceneDrawer& drawer, PassGraph& graph, const Program& pos
 fs::path dispatch_cache_path() {
   const fs::path dir = cache_dir();
   return dir.empty() ? fs::path() : dir / "dispatch";
+}
+
+void check_compute_input(Dispatch d, const LoadedInput& in) {
+  if (d == Dispatch::compute) (void)compute_source(in.passes.back());
 }
 
 DispatchChoice choose_dispatch(Dispatch requested, PassGraph& graph, const Program& post, const StillFrame& frame,

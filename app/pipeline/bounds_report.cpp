@@ -1,4 +1,4 @@
-#include "cli/bounds_report.h"
+#include "pipeline/bounds_report.h"
 
 #include <cstdio>
 

@@ -12,10 +12,13 @@
 // the size, samples, exposure, AOVs, frame rate and iMouse, and the
 // program's version; a frame adds its number and its time.
 #pragma once
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "cli/input.h"
+#include "io/image_io.h"
+#include "pipeline/input.h"
 #include "render/frame.h"
 #include "shader/preprocess.h"
 
@@ -24,5 +27,11 @@ namespace ms {
 std::string job_fingerprint(const LoadedInput& in, const FrameParams& fp, const ShaderSource& post,
                             const std::vector<std::string>& aovs, double fps);
 std::string frame_fingerprint(const std::string& job, int frame, float time);
+
+// What every image the pipeline writes carries: Software, "<input file>
+// t=<time> spp=<spp>" (" frame=<n>" for a sequence's frame) and the
+// fingerprint of what made it.
+ImageMetadata frame_metadata(const std::filesystem::path& input, float time, int spp,
+                             const std::string& fingerprint, std::optional<int> frame = std::nullopt);
 
 }  // namespace ms

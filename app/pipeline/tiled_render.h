@@ -9,16 +9,17 @@
 // the temporary before the process ends.
 //
 //   StillTiling t = plan_render_tiling(in, fp, targets, forced, max_w, max_h);
-//   if (t.tiled()) render_tiled_file(job, renderer, graph, post, still, t);
+//   if (t.tiled()) render_tiled_file(file, session, still, t);
 #pragma once
 #include <filesystem>
-#include <functional>
 #include <string>
 #include <vector>
 
-#include "cli/input.h"
 #include "core/deadline.h"
 #include "io/image_io.h"
+#include "pipeline/frame_session.h"
+#include "pipeline/input.h"
+#include "pipeline/nonfinite.h"
 #include "render/still.h"
 #include "render/tiled_still.h"
 #include "render/tiles.h"
@@ -39,15 +40,13 @@ struct TiledFile {
   ImageMetadata meta;
   Watchdog* watchdog = nullptr;  // re-armed to remove the temporary before it ends the process
   const Deadline* deadline = nullptr;
-  // Called with the NaN/Inf pixels counted over every band, before the
+  // The NaN/Inf pixels counted over every band are checked before the
   // file is finished: a throw (--strict) leaves no file.
-  std::function<void(long long)> check_nonfinite;
-  // Draws one tile's still; empty: render_still() with the renderer and
-  // graph given (the fragment pass). --dispatch compute: ComputeStill.
-  StillFn draw_tile;
+  NonfiniteGuard nonfinite;
 };
 
-void render_tiled_file(const TiledFile& job, FrameRenderer& renderer, PassGraph& graph, const Program& post,
-                       const StillFrame& still, const StillTiling& tiling);
+// Each tile drawn by the session's dispatch (pipeline/frame_session.h).
+void render_tiled_file(const TiledFile& job, FrameSession& session, const StillFrame& still,
+                       const StillTiling& tiling);
 
 }  // namespace ms

@@ -1,4 +1,4 @@
-#include "cli/shader_dir.h"
+#include "pipeline/shader_dir.h"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "cli/bloom_setup.h"
+#include "pipeline/bloom_setup.h"
 
 #include "shader/assemble.h"
 

@@ -1,15 +1,14 @@
-#include "cli/tiled_render.h"
+#include "pipeline/tiled_render.h"
 
 #include <unistd.h>
 
 #include <chrono>
 
-#include "bench/bench.h"
-#include "cli/progress.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/image_stream.h"
 #include "io/temp_cleanup.h"
+#include "pipeline/progress.h"
 #include "render/aov.h"
 #include "render/tiled_still.h"
 
@@ -37,8 +36,8 @@ StillTiling plan_render_tiling(const LoadedInput& in, const FrameParams& fp, int
   return {};
 }
 
-void render_tiled_file(const TiledFile& job, FrameRenderer& renderer, PassGraph& graph, const Program& post,
-                       const StillFrame& still, const StillTiling& tiling) {
+void render_tiled_file(const TiledFile& job, FrameSession& session, const StillFrame& still,
+                       const StillTiling& tiling) {
   const FrameParams& fp = still.params;
   std::vector<std::string> channels = {"R", "G", "B", "A"};
   channels.insert(channels.end(), job.aov_names.begin(), job.aov_names.end());
@@ -65,11 +64,8 @@ void render_tiled_file(const TiledFile& job, FrameRenderer& renderer, PassGraph&
   } end_bar{progress};
   auto last = std::chrono::steady_clock::now();
   long long nonfinite = 0;
-  const StillFn draw_tile = job.draw_tile ? job.draw_tile : StillFn([&](const StillFrame& piece) {
-    return render_still(renderer, graph, post, piece);
-  });
   render_still_tiled(
-      draw_tile, graph, still, tiling,
+      [&](const StillFrame& piece) { return session.draw(piece); }, session.graph(), still, tiling,
       [&](StillBand& band) {
         Still& s = band.pixels;
         nonfinite += count_nonfinite_pixels(s.color, fp.aovs ? &s.aovs : nullptr) + s.flagged;
@@ -83,7 +79,7 @@ void render_tiled_file(const TiledFile& job, FrameRenderer& renderer, PassGraph&
       });
   progress.finish();
   if (job.watchdog) job.watchdog->disarm();  // the rename must not be cut short
-  if (job.check_nonfinite) job.check_nonfinite(nonfinite);
+  guard_nonfinite(job.nonfinite, nonfinite, static_cast<long long>(fp.width) * fp.height);
   out.finish();
 }
 

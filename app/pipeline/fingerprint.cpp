@@ -1,4 +1,4 @@
-#include "cli/fingerprint.h"
+#include "pipeline/fingerprint.h"
 
 #include <sstream>
 
@@ -48,6 +48,15 @@ std::string job_fingerprint(const LoadedInput& in, const FrameParams& fp, const 
 
 std::string frame_fingerprint(const std::string& job, int frame, float time) {
   return Hash128().add(job).add(frame).add(time).hex();
+}
+
+ImageMetadata frame_metadata(const std::filesystem::path& input, float time, int spp, const std::string& fingerprint,
+                             std::optional<int> frame) {
+  std::string description = input.filename().string() + " t=" + std::to_string(time) + " spp=" + std::to_string(spp);
+  if (frame) description += " frame=" + std::to_string(*frame);
+  ImageMetadata meta{{"Software", kSoftware}, {"ImageDescription", description}};
+  add_fingerprint(meta, fingerprint);
+  return meta;
 }
 
 }  // namespace ms

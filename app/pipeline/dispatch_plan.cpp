@@ -1,4 +1,4 @@
-#include "bench/dispatch_plan.h"
+#include "pipeline/dispatch_plan.h"
 
 #include <algorithm>
 #include <cstdio>

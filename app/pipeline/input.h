@@ -15,10 +15,6 @@
 #include "shader/assemble.h"
 #include "shader/preprocess.h"
 
-namespace CLI {
-class App;
-}
-
 namespace ms {
 
 struct LoadedInput {
@@ -37,7 +33,7 @@ struct LoadedInput {
 };
 
 // Shadertoy flags over a scene file's [shadertoy] (empty/negative: keep).
-struct ShadertoyFlags {
+struct ShadertoyOptions {
   std::string media_dir;
   std::optional<MissingMedia> missing_media;  // none: the scene's
   std::vector<float> mouse;   // 4 values
@@ -46,46 +42,20 @@ struct ShadertoyFlags {
 };
 // On an SDF scene, --media-dir, --missing-media and --mouse are errors: they
 // would do nothing.
-void apply_shadertoy_flags(LoadedInput& in, const ShadertoyFlags& f);
-// --media-dir, --missing-media and --mouse on a subcommand (--fps is its own).
-void add_shadertoy_flags(CLI::App* cmd, ShadertoyFlags& f);
+void apply_shadertoy_options(LoadedInput& in, const ShadertoyOptions& f);
 // Prints each of in.warnings as "marchstudio: <input>: warning: ..."; with
 // `strict` the first is an error (exit 1) instead. Also the channels a
 // pass samples with nothing bound, once the graph exists.
 void report_input_warnings(const std::vector<std::string>& warnings, const std::string& input, bool strict);
 // The warnings of a graph's channels sampled with nothing bound.
 std::vector<std::string> unbound_warnings(const PassGraph& graph);
-// "X,Y,Z,W" as iMouse, or "X,Y" (glslViewer's u_mouse; Z and W 0). Throws
-// bad_input naming --mouse.
-std::vector<float> parse_mouse_flag(const std::string& text);
-// "error", "noise" or "black" (--missing-media). Throws bad_input naming
-// the flag, with a did-you-mean.
-MissingMedia parse_missing_media(const std::string& text);
-// One --texture: "NAME=FILE" binds NAME, "FILE" binds u_tex<unnamed_before>;
-// the file made absolute (it is checked when applied).
-NamedTexture parse_texture_flag(const std::string& text, int unnamed_before);
 
-// A "WxH" flag value (render/bench --size, view --size/--shot-size); each
-// side at least 1. Whether the GL can make it is checked later, with a context.
+// An image's size in pixels (cli/input_flags.h parses "WxH"); 0x0 where
+// a job means "the scene's".
 struct ImageSize {
   int width = 0;
   int height = 0;
 };
-ImageSize parse_size_flag(const std::string& text, const std::string& flag = "--size");
-
-// "NAME" or "NAME=VALUE" flags as (name, value) #defines; NAME must be a
-// GLSL identifier, VALUE one line. Throws bad_input naming -D.
-std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector<std::string>& flags);
-
-// --allow-include DIR flags: each an existing directory, made canonical
-// (AssembleOptions::allow_include). Throws bad_input naming the flag.
-std::vector<std::filesystem::path> parse_allow_include(const std::vector<std::string>& flags);
-
-// The assembler's options from the flags bench, sweep and sequences share:
-// --shader-dir, --allow-include, --no-specialize (otherwise folded to the
-// scene; animated values stay uniforms) and the --uniform values.
-AssembleOptions assemble_options(const std::string& shader_dir, const std::vector<std::string>& allow_include,
-                                 bool no_specialize, const std::vector<UniformValue>& uniforms);
 
 // `disable`: effects switched off (shadows, reflections, ao, checker-filter, bloom).
 // `preset`: a quality preset replacing the scene file's (scene/quality.h);
@@ -102,6 +72,22 @@ LoadedInput load_input(const std::filesystem::path& input, const std::vector<std
 LoadedInput load_input_scene(const std::filesystem::path& input, const std::vector<std::string>& disable,
                              const std::string& preset = {}, const SceneOverrides& overrides = {});
 void assemble_input(LoadedInput& in, const AssembleOptions& opts);
+
+// The passes of `scene` read from `input`: an SDF scene's one pass (its
+// [sky] environment attached; `features`: a specialized build's own, else
+// derived), or a Shadertoy shader's buffers and Image pass with its media
+// (`project` receives what it is; a .toml input confines its includes to
+// its directory). The environment fills scene.sky.irradiance. What
+// assemble_input() and the viewer's rebuilds call.
+std::vector<PassSource> assemble_passes(Scene& scene, const std::filesystem::path& input,
+                                        const AssembleOptions& opts, ShaderProject& project,
+                                        std::vector<std::string>& warnings, const FeatureSet* features = nullptr);
+
+// What the viewer reads on each save: a .toml scene parsed only (its
+// shaders are assembled by each rebuild, whose errors show in the window),
+// a bare Shadertoy file loaded as load_input() does. Throws ms::Error.
+Scene read_input_scene(const std::filesystem::path& input, const AssembleOptions& opts,
+                       const SceneOverrides& overrides);
 
 // Frames of one sample without AOVs need no accumulation buffer and no post
 // pass: for an SDF scene, adds fused_post_defines() (shader/assemble.h) to

@@ -1,6 +1,6 @@
 // --dispatch auto's measuring plan, without the GL: which frame
 // sizes and work groups the probe times, and what it picks. The caller
-// gives the timer (cli/dispatch_probe.h draws the job's scene with it), so
+// gives the timer (pipeline/dispatch_probe.h draws the job's scene with it), so
 // the plan is tested with made-up timings (tests/unit/test_dispatch_plan.cpp).
 //
 //   - Size: from kProbeWidth x kProbeHeight each side doubles (the last step

@@ -1,4 +1,4 @@
-#include "cli/sequence_state.h"
+#include "pipeline/sequence_state.h"
 
 #include <algorithm>
 #include <cstdio>

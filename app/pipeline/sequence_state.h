@@ -1,7 +1,7 @@
 // What a rerun of a sequence finds on disk, and what it renders again.
 //
 // Every frame: a frame file is kept only when it is complete and carries
-// this run's fingerprint for that frame (cli/fingerprint.h); --force keeps
+// this run's fingerprint for that frame (pipeline/fingerprint.h); --force keeps
 // none. Missing, broken and stale frames render again.
 //
 // Sequences of a shader with buffers: frame f follows from frame f-1, so

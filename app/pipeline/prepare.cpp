@@ -1,0 +1,38 @@
+#include "pipeline/prepare.h"
+
+#include "core/error.h"
+#include "render/aov.h"
+
+namespace ms {
+
+AssembleOptions FrameJob::assemble_options() const {
+  AssembleOptions opts{shader_dir, defines, allow_include};
+  if (aovs())
+    for (const auto& d : aov_defines()) opts.defines.push_back(d);
+  opts.specialize = specialize;
+  opts.uniforms = uniforms;
+  return opts;
+}
+
+PreparedFrame prepare(const FrameJob& job, bool display) {
+  PreparedFrame p;
+  p.display = display;
+  p.opts = job.assemble_options();
+  p.in = load_input_scene(job.input, job.disable, job.preset, job.set);
+  if (job.aovs() && p.in.shadertoy)
+    fail_input("--aov needs a scene: a Shadertoy shader has no AOV outputs", job.input.string(), 0, "--aov");
+  apply_shadertoy_options(p.in, job.shadertoy);
+  if (job.fps) p.in.scene.shadertoy.fps = *job.fps;
+  const Scene& scene = p.in.scene;
+  p.fp.width = job.size.width > 0 ? job.size.width : scene.render.width;
+  p.fp.height = job.size.height > 0 ? job.size.height : scene.render.height;
+  p.fp.spp = job.spp > 0 ? job.spp : scene.render.spp;
+  p.fp.aovs = job.aovs();
+  p.fp.tile_size = job.tile_size;
+  p.post_src = assemble_still(p.in, p.opts, p.fp.spp, job.aovs(), display, p.fp.fused_post);
+  return p;
+}
+
+int buffer_targets(const LoadedInput& in) { return 2 * (static_cast<int>(in.passes.size()) - 1); }
+
+}  // namespace ms
