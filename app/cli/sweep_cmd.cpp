@@ -20,6 +20,7 @@
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "pipeline/dispatch_probe.h"
+#include "pipeline/frame_session.h"
 #include "pipeline/input.h"
 #include "pipeline/shader_dir.h"
 #include "scene/animation.h"
@@ -157,22 +158,26 @@ int run_sweep_command(const SweepArgs& a) {
   // Cold, repeatable compile times, as bench (the driver reads these at context creation).
   ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
   ::setenv("__GL_SHADER_DISK_CACHE", "0", 1);
-  std::unique_ptr<Context> ctx = create_headless_context(backend);
-  if (!a.time_by) s.clock = ctx->info().software() ? SweepClock::cpu : SweepClock::gpu;
+  FrameSession session;
+  const Context& ctx = session.context(backend);
+  if (!a.time_by) s.clock = ctx.info().software() ? SweepClock::cpu : SweepClock::gpu;
   const Scene posed = animated(in.scene, s.time);
   if (s.dispatch == Dispatch::automatic) {  // probed on the scene's own pass (pipeline/dispatch_probe.h)
-    PassGraph graph(in.passes);
-    const Program post(fullscreen_vertex_source(), assemble_post(in.scene.render.tonemap, true, opts));
+    PreparedFrame probe;
+    probe.in = in;
+    probe.in.scene.bloom.enabled = false;  // the rows draw without bloom
+    probe.opts = opts;
+    probe.post_src = assemble_post(in.scene.render.tonemap, true, opts);
     StillFrame f;
     f.in.scene = &posed;
     f.in.time = s.time;
     f.params.exposure = posed.render.exposure;
-    const DispatchChoice c = choose_dispatch(s.dispatch, graph, post, f, *ctx, group, !a.quiet);
+    const DispatchChoice c = session.load(probe).choose(s.dispatch, group, f, !a.quiet);
     s.dispatch = c.dispatch;
     s.group = c.group;
   }
   const size_t n = configs.size();
-  const SweepResult r = run_sweep(*ctx, posed, configs, opts, s, [&](size_t i, const std::string& name) {
+  const SweepResult r = run_sweep(ctx, posed, configs, opts, s, [&](size_t i, const std::string& name) {
     if (a.quiet) return;
     if (i == 0) std::fprintf(stderr, "sweep: %s\n", name.c_str());
     else std::fprintf(stderr, "sweep: [%zu/%zu] %s\n", i, n, name.c_str());
