@@ -7,11 +7,15 @@ This reads each library's symbols instead (nm): a symbol one library needs
 and another defines (strongly: not an inline or template copy) must be
 defined in the same module or one below it.
 
-  check-layers.py --nm nm core=libmarch_core.a: gl=libmarch_gl.a:core ...
+  check-layers.py --nm nm [--forbid=cli:render:REGEX] core=libmarch_core.a: gl=libmarch_gl.a:core ...
 
 Each argument is module=archive:comma-separated modules it may use.
+--forbid=M:N:REGEX also fails on any call from M to a symbol of N whose
+mangled name matches REGEX, below or not (cli/ may not draw: it goes
+through pipeline/).
 """
 import argparse
+import re
 import subprocess
 import sys
 
@@ -37,6 +41,7 @@ def symbols(nm, archive):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--nm", default="nm")
+    ap.add_argument("--forbid", action="append", default=[])
     ap.add_argument("modules", nargs="+")
     args = ap.parse_args()
     below, defs, needs = {}, {}, {}
@@ -61,9 +66,15 @@ def main():
             if owners and not any(o in ok for o in owners):
                 print(f"{m}: {obj} calls {owners[0]}'s {sym} (a module not below it)")
                 bad += 1
+    for rule in args.forbid:
+        m, n, pattern = rule.split(":", 2)
+        for sym, obj in sorted(needs.get(m, {}).items()):
+            if sym in defs.get(n, {}) and re.search(pattern, sym):
+                print(f"{m}: {obj} calls {n}'s {sym} (forbidden: {pattern})")
+                bad += 1
     if bad:
         sys.exit(1)
-    print(f"layers: {len(needs)} libraries, no upward calls")
+    print(f"layers: {len(needs)} libraries, no upward calls, {len(args.forbid)} forbidden uses checked")
 
 
 if __name__ == "__main__":
