@@ -15,7 +15,7 @@
 #include "render/graph.h"
 #include "render/scene_drawer.h"
 #include "scene/scene.h"
-#include "shader/preprocess.h"
+#include "preprocess/preprocess.h"
 
 namespace ms {
 

@@ -98,7 +98,7 @@ class Outputs {
 bool wants_batch(const RenderArgs& a) { return a.inputs.size() > 1 || !a.output_dir.empty() || !a.jobs.empty(); }
 
 fs::path batch_output(const RenderArgs& a, const fs::path& input) {
-  const std::string name = input.stem().string() + "." + (a.format.empty() ? std::string("png") : a.format);
+  const std::string name = input.stem().string() + "." + format_extension(a.format.value_or(ImageFormat::png));
   return a.output_dir.empty() ? fs::path(name) : fs::path(a.output_dir) / name;
 }
 

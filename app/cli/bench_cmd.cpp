@@ -75,14 +75,7 @@ int run_bench_command(const BenchArgs& a) {
   job.input = a.input;
   job.spp = a.spp;
   job.backend = a.backend;
-  job.shader_dir = resolve_shader_dir(a.shader_dir);
-  job.allow_include = parse_allow_include(a.allow_include);
-  job.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  job.disable = a.disable;
-  job.preset = a.preset;
-  job.set = a.overrides.set;
-  job.uniforms = a.overrides.uniforms;
-  job.shadertoy = a.shadertoy;
+  set_input_fields(job, a);
   // Timed frames as render draws them to a PNG: one pass at spp 1, bloom
   // as the scene says (docs/post.md).
   const PreparedFrame p = prepare(job, true);

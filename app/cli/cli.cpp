@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/outcome.h"
+#include "suite/outcome.h"
 #include "cli/bench_cmd.h"
 #include "cli/compare_cmd.h"
 #include "cli/flag_checks.h"

@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bench/outcome.h"
+#include "suite/outcome.h"
 #include "cli/common_flags.h"
 #include "cli/exit_codes.h"
 #include "core/error.h"
@@ -28,14 +28,8 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& a) {
       "compare", "Compare image B against reference A; exit 0 within the threshold, 1 over it");
   cmd->add_option("a", a.a, "Reference image (e.g. a golden)")->required();
   cmd->add_option("b", a.b, "Image to check")->required();
-  cmd->add_option("--metric", a.metric,
-                  "Metric the threshold applies to: psnr, mae, max, fraction, flip (default psnr)")
-      ->check(CLI::Validator(
-          [](std::string& v) {
-            (void)parse_metric(v);  // a bad name: its one-line error, as the flag is read
-            return std::string();
-          },
-          "{psnr, mae, max, fraction, flip}"));
+  add_enum_flag(cmd, "--metric", a.metric, parse_metric, "{psnr, mae, max, fraction, flip}",
+                "Metric the threshold applies to: psnr, mae, max, fraction, flip (default psnr)");
   cmd->add_option("--threshold", a.threshold,
                   "psnr: fail when PSNR (dB) < X; mae, max, fraction: fail when value > X "
                   "(default: the images must match exactly)")
@@ -221,7 +215,7 @@ void print_text(const CompareArgs& a, const Image& ia, const CompareMetrics& m, 
 }
 
 int compare(const CompareArgs& a, ExitCodes codes) {
-  const Metric metric = parse_metric(a.metric);
+  const Metric metric = a.metric;
   check_args(a, metric);
   check_warn(a, metric, a.threshold_set ? a.threshold : default_threshold(metric));
   if (!a.diff.empty()) {

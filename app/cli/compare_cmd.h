@@ -5,7 +5,8 @@
 #pragma once
 #include <string>
 
-#include "bench/outcome.h"
+#include "io/compare.h"
+#include "suite/outcome.h"
 
 namespace CLI {
 class App;
@@ -16,7 +17,7 @@ namespace ms {
 struct CompareArgs {
   std::string a;                  // the reference (a golden)
   std::string b;                  // the candidate
-  std::string metric = "psnr";    // psnr | mae | max | fraction
+  Metric metric = Metric::psnr;   // --metric psnr | mae | max | fraction | flip, parsed as read
   double threshold = 0.0;         // meaningful only when threshold_set
   bool threshold_set = false;     // unset: exact match required
   double pixel_threshold = 1.0 / 255.0;
@@ -24,7 +25,7 @@ struct CompareArgs {
   bool warn_set = false;
   std::string diff;               // heat map output; empty: none written
   bool json = false;
-  ExitCodes exit_codes = ExitCodes::standard;  // --exit-codes default | idiff (bench/outcome.h)
+  ExitCodes exit_codes = ExitCodes::standard;  // --exit-codes default | idiff (suite/outcome.h)
 };
 
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args);

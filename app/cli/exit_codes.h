@@ -4,7 +4,7 @@
 #pragma once
 #include <functional>
 
-#include "bench/outcome.h"
+#include "suite/outcome.h"
 
 namespace ms {
 

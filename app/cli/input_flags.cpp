@@ -9,7 +9,7 @@
 #include "core/error.h"
 #include "pipeline/shader_dir.h"
 #include "scene/suggest.h"
-#include "shader/glsl_scan.h"
+#include "preprocess/glsl_scan.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -20,6 +20,24 @@ namespace {
 const std::vector<std::string> kMissingMediaNames = {"error", "noise", "black"};
 
 }  // namespace
+
+DisabledEffects parse_disabled(const std::vector<std::string>& names) {
+  DisabledEffects d;
+  for (const std::string& n : names) {
+    if (n == "shadows") d.shadows = true;
+    else if (n == "reflections") d.reflections = true;
+    else if (n == "ao") d.ao = true;
+    else if (n == "checker-filter") d.checker_filter = true;
+    else if (n == "bloom") d.bloom = true;
+    else {
+      std::vector<std::string_view> views(kEffectNames.begin(), kEffectNames.end());
+      std::string list;
+      for (const auto& e : kEffectNames) list += (list.empty() ? "" : ", ") + e;
+      fail_input("'" + n + "' is not one of " + list, {}, 0, "--disable", did_you_mean(n, views));
+    }
+  }
+  return d;
+}
 
 ImageSize parse_size_flag(const std::string& text, const std::string& flag) {
   static const std::regex re(R"(^\s*(\d{1,9})\s*[xX]\s*(\d{1,9})\s*$)");

@@ -10,7 +10,9 @@
 #include <utility>
 #include <vector>
 
+#include "pipeline/frame_job.h"
 #include "pipeline/input.h"
+#include "pipeline/shader_dir.h"
 #include "shader/assemble.h"
 
 namespace CLI {
@@ -31,6 +33,11 @@ MissingMedia parse_missing_media(const std::string& text);
 // the file made absolute (it is checked when applied).
 NamedTexture parse_texture_flag(const std::string& text, int unnamed_before);
 
+// --disable's names (each one of kEffectNames, cli/flag_checks.h) as the
+// effects they switch off. Throws bad_input naming --disable, with a
+// did-you-mean, for another name.
+DisabledEffects parse_disabled(const std::vector<std::string>& names);
+
 // A "WxH" flag value (render/bench --size, view --size/--shot-size); each
 // side at least 1. Whether the GL can make it is checked later, with a context.
 ImageSize parse_size_flag(const std::string& text, const std::string& flag = "--size");
@@ -48,5 +55,21 @@ std::vector<std::filesystem::path> parse_allow_include(const std::vector<std::st
 // scene; animated values stay uniforms) and the --uniform values.
 AssembleOptions assemble_options(const std::string& shader_dir, const std::vector<std::string>& allow_include,
                                  bool no_specialize, const std::vector<UniformValue>& uniforms);
+
+// What to load, from the flags of these names that render, its
+// sequences and bench share: --shader-dir (resolved), --allow-include,
+// --no-specialize, --disable, --preset, --set, --uniform and Shadertoy's
+// options, each parsed or checked here.
+template <class Args>
+void set_input_fields(FrameJob& job, const Args& a) {
+  job.shader_dir = resolve_shader_dir(a.shader_dir);
+  job.allow_include = parse_allow_include(a.allow_include);
+  job.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
+  job.disable = parse_disabled(a.disable);
+  job.preset = a.preset;
+  job.set = a.overrides.set;
+  job.uniforms = a.overrides.uniforms;
+  job.shadertoy = a.shadertoy;
+}
 
 }  // namespace ms

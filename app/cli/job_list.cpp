@@ -19,7 +19,7 @@
 #include "cli/render_cmd.h"
 #include "pipeline/input.h"
 #include "scene/suggest.h"
-#include "shader/json_brief.h"
+#include "importers/json_brief.h"
 
 namespace ms {
 namespace fs = std::filesystem;

@@ -35,7 +35,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                   "Render every input, in one process, to DIR/<stem>.<format>; a --jobs line's relative \"output\" "
                   "is under DIR too (docs/usage.md#batches)")
       ->check(not_empty());
-  cmd->add_option("--format", a.format, "Extension of outputs named from the input: png (default), exr, tif, jpg")
+  cmd->add_option_function<std::string>(
+         "--format", [&a](const std::string& v) { a.format = image_format_for("x." + v); },
+         "Extension of outputs named from the input: png (default), exr, tif, jpg")
       ->check(one_of({"png", "exr", "tif", "jpg"}));
   cmd->add_option("--jobs", a.jobs,
                   "Render the stills listed in FILE, one JSON object per line with \"scene\", \"output\" and any "
@@ -121,7 +123,7 @@ static int run_render_watch(const RenderArgs& a) {
                          parse_allow_include(a.allow_include)};
     opts.uniforms = a.overrides.uniforms;
     std::vector<fs::path> files = {a.input};
-    for (const PassSource& pass : load_input(a.input, a.disable, opts, a.preset, a.overrides.set).passes)
+    for (const PassSource& pass : load_input(a.input, parse_disabled(a.disable), opts, a.preset, a.overrides.set).passes)
       for (const fs::path& p : pass.source.dependencies) files.push_back(p);
     return files;
   };
@@ -140,13 +142,13 @@ int run_render(const RenderArgs& args) {
     fail_input("--timeout must be a number of seconds >= 0 (0: no limit)", {}, 0, "--timeout");
   if (a.watch) return run_render_watch(a);
   if (wants_sequence(a)) {
-    if (!a.format.empty()) fail_input("--format names a still's output; a sequence's is -o PATTERN", {}, 0, "--format");
+    if (a.format) fail_input("--format names a still's output; a sequence's is -o PATTERN", {}, 0, "--format");
     return run_sequence(a);
   }
   if (a.force)
     fail_input("--force needs --frames: a still always replaces its file", {}, 0, "--force",
                "it makes a sequence render again the frames it would keep");
-  if (!a.format.empty() && !a.output.empty())
+  if (a.format && !a.output.empty())
     fail_input("--format names outputs made from the input's stem, and -o names the file", {}, 0, "--format",
                "give the extension in -o");
   const FrameJob job = make_render_job(a, a.input, a.output.empty() ? batch_output(a, a.input) : fs::path{});

@@ -8,6 +8,7 @@
 
 #include "cli/override_flags.h"
 #include "gl/context.h"
+#include "io/image_io.h"
 #include "io/sequence.h"
 #include "pipeline/frame_job.h"
 #include "render/compute_frame.h"
@@ -28,7 +29,7 @@ struct RenderArgs {
   std::string input;      // the one input of a still, a sequence or --watch (inputs[0])
   std::string output;     // empty: <input stem>.png in the current directory
   std::string output_dir; // a batch's DIR/<stem>.<format>
-  std::string format;     // png (empty), exr, tif or jpg: outputs named from the input
+  std::optional<ImageFormat> format;  // --format: outputs named from the input; none: png
   std::string jobs;       // --jobs FILE: JSON lines, one still each (cli/job_list.h)
   ImageSize size;         // --size WxH; 0x0: the scene's
   double time = 0.0;      // seconds; explicit default 0, never the wall clock
@@ -56,7 +57,7 @@ struct RenderArgs {
   bool no_specialize = false;  // build the generic shader (docs/specialization.md)
   bool print_shader = false;   // print the assembled scene shader and exit
   bool strict = false;         // any NaN/Inf pixel (colour or AOV) is an error: exit 1, nothing written
-  std::vector<std::string> allow_include;  // more directories #include may read (shader/preprocess.h)
+  std::vector<std::string> allow_include;  // more directories #include may read (preprocess/preprocess.h)
   double timeout = 0.0;      // seconds per image (each frame of --frames); 0: none (core/deadline.h)
   int tile_size = kTileSize; // hidden --tile-size: largest square per draw (render/tiles.h); 0: whole frame
   int tile_still = 0;        // hidden --tile-still: draw and stream the still in tiles of this side (tests); 0: past the limits only

@@ -55,23 +55,16 @@ FrameJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::p
   job.tile_still = a.tile_still;
   job.backend = a.backend;
   job.size = a.size;
-  for (const std::string& d : a.disable) check_one_of(d, kEffectNames, "--disable");
-  job.disable = a.disable;
+  // A --jobs line's names arrive without the flags' validators: checked here.
   if (!a.preset.empty()) check_one_of(a.preset, quality_preset_names(), "--preset");
-  job.preset = a.preset;
   for (const std::string& n : a.aov) check_one_of(n, kAovNames, "--aov");
+  set_input_fields(job, a);
   if (!a.aov.empty()) job.aov_channels = aov_channels(a.aov);
   job.defines = a.defines;
-  job.allow_include = parse_allow_include(a.allow_include);
-  job.shader_dir = resolve_shader_dir(a.shader_dir);
-  job.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
   job.strict = a.strict;
   job.verbose = a.verbose;
-  job.shadertoy = a.shadertoy;
   job.dispatch = a.dispatch;  // auto: chosen once the context exists (pipeline/dispatch_probe.h)
   job.compute_group = a.compute_group;
-  job.set = a.overrides.set;
-  job.uniforms = a.overrides.uniforms;
 
   job.output = !output.empty()     ? output
                : !a.output.empty() ? fs::path(a.output)

@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "bench/plot.h"
-#include "bench/sweep.h"
-#include "bench/sweep_report.h"
+#include "sweep/plot.h"
+#include "sweep/sweep.h"
+#include "sweep/sweep_report.h"
 #include "cli/common_flags.h"
 #include "cli/dispatch_flag.h"
 #include "cli/flag_checks.h"

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "bench/sweep.h"
-#include "bench/sweep_grid.h"
+#include "sweep/sweep.h"
+#include "sweep/sweep_grid.h"
 #include "cli/override_flags.h"
 #include "gl/context.h"
 #include "pipeline/input.h"

@@ -11,14 +11,15 @@
 #include <filesystem>
 #include <optional>
 
-#include "bench/outcome.h"
-#include "bench/suite.h"
-#include "bench/suite_html.h"
-#include "bench/suite_report.h"
-#include "bench/suite_run.h"
+#include "suite/outcome.h"
+#include "suite/suite.h"
+#include "suite/suite_html.h"
+#include "suite/suite_report.h"
+#include "suite/suite_run.h"
 #include "cli/common_flags.h"
 #include "cli/dispatch_flag.h"
 #include "cli/exit_codes.h"
+#include "cli/input_flags.h"
 #include "core/error.h"
 #include "core/utf8.h"
 #include "io/atomic_file.h"
@@ -90,7 +91,7 @@ PreparedCase prepare_case(const Suite& suite, const SuiteCase& c, const fs::path
     job.defines = c.defines;
     job.allow_include = c.allow_include;
     job.specialize = c.specialize ? Specialization::folded : Specialization::generic;
-    job.disable = c.disable;
+    job.disable = parse_disabled(c.disable);  // checked names (suite/suite_load.cpp)
     job.preset = c.preset;
     job.spp = c.spp;
     pc.format = c.reference.empty() ? ImageFormat::png : image_format_for(c.reference);

@@ -1,12 +1,12 @@
 // `marchstudio test SUITE.toml`: image, cost and frame-time tests of a
-// user's own scenes and shaders, in one process (bench/suite*.h), with a
+// user's own scenes and shaders, in one process (suite/suite*.h), with a
 // line per case on the terminal and JUnit XML, JSON and an HTML report for
 // CI. docs/testing.md.
 #pragma once
 #include <string>
 #include <vector>
 
-#include "bench/outcome.h"
+#include "suite/outcome.h"
 #include "render/compute_frame.h"
 
 namespace CLI {

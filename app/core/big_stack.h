@@ -8,7 +8,7 @@
 // a 20,000-term sum overflowed the 8 MiB main-thread stack and killed the
 // process with SIGSEGV. A thread's stack size is set here, independent of
 // `ulimit -s`; the memory is reserved, not used, until a deep compile
-// touches it. shader/macro_engine.h refuses expressions deeper than what
+// touches it. preprocess/macro_engine.h refuses expressions deeper than what
 // this stack holds with room to spare (max_expression_depth, 50,000 levels:
 // at most about 34 MiB of the 256 MiB).
 #pragma once

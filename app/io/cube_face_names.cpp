@@ -1,5 +1,5 @@
 // cube_faces.h's file naming, apart from the image reading: the parsers
-// (shader/vscode.cpp) name a cubemap's faces without linking the codecs,
+// (importers/vscode.cpp) name a cubemap's faces without linking the codecs,
 // and so does the fuzz build (tests/fuzz).
 #include <string>
 

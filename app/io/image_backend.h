@@ -11,7 +11,7 @@
 //   image_backend().write(img, path, meta);  // waits for the load if needed
 //
 // The callers are io/image_io.cpp, io/image_stream.cpp, io/stored_pixels.cpp,
-// io/sequence.cpp, io/compare.cpp and bench/plot.cpp; nothing else calls
+// io/sequence.cpp, io/compare.cpp and sweep/plot.cpp; nothing else calls
 // the backend, and nothing but io/oiio/ includes an OpenImageIO header.
 #pragma once
 #include <filesystem>
@@ -29,7 +29,7 @@
 
 namespace ms {
 
-// An RGB float picture to draw on (bench/plot.cpp's sweep plot), drawn
+// An RGB float picture to draw on (sweep/plot.cpp's sweep plot), drawn
 // with OpenImageIO's ImageBufAlgo. Coordinates in pixels, top row 0.
 class ImageCanvas {
  public:

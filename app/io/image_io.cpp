@@ -27,6 +27,16 @@ ImageFormat image_format_for(const fs::path& path) {
              "use .png, .jpg, .tif or .exr");
 }
 
+const char* format_extension(ImageFormat f) {
+  switch (f) {
+    case ImageFormat::png: return "png";
+    case ImageFormat::jpeg: return "jpg";
+    case ImageFormat::tiff: return "tif";
+    case ImageFormat::exr: return "exr";
+  }
+  return "png";
+}
+
 void check_output_path(const fs::path& path) {
   image_format_for(path);
   if (path.filename().empty()) fail_input("output path names no file", path.string(), 0, "-o");

@@ -18,6 +18,8 @@ enum class ImageFormat { png, jpeg, tiff, exr };
 
 // From the file extension, case-insensitive. Throws bad_input on an unknown one.
 ImageFormat image_format_for(const std::filesystem::path& path);
+// The extension a file of the format is named with, without the dot: png, jpg, tif, exr.
+const char* format_extension(ImageFormat f);
 // True for formats stored as 8-bit display values (PNG, JPEG, TIFF).
 inline bool is_display_format(ImageFormat f) { return f != ImageFormat::exr; }
 

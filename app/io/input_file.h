@@ -14,7 +14,7 @@
 namespace ms {
 
 // Text inputs (scenes, shaders) beyond this are refused before reading:
-// the preprocessor's own budget is smaller (shader/macro_engine.h).
+// the preprocessor's own budget is smaller (preprocess/macro_engine.h).
 inline constexpr std::size_t kMaxTextInput = std::size_t{64} << 20;
 // Image inputs, compressed.
 inline constexpr std::size_t kMaxImageInput = std::size_t{4} << 30;

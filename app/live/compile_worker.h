@@ -32,7 +32,7 @@
 #include "gl/context.h"
 #include "render/compute_frame.h"
 #include "render/program.h"
-#include "shader/preprocess.h"
+#include "preprocess/preprocess.h"
 
 struct GLFWwindow;
 

@@ -20,7 +20,7 @@
 #include "io/image_io.h"
 #include "pipeline/input.h"
 #include "render/frame.h"
-#include "shader/preprocess.h"
+#include "preprocess/preprocess.h"
 
 namespace ms {
 

@@ -46,7 +46,7 @@ struct FrameJob {
   std::optional<double> fps;         // > 0; empty: the scene's (a Shadertoy shader's 60)
   Backend backend = Backend::automatic;
   std::filesystem::path shader_dir;  // resolved: holds main.frag
-  std::vector<std::string> disable;  // effect names, each one of kEffectNames
+  DisabledEffects disable;           // --disable
   std::string preset;                // a quality preset name, checked; empty: the scene's
   std::vector<std::pair<std::string, std::string>> defines;  // -D, parsed
   std::vector<std::filesystem::path> allow_include;          // canonical directories

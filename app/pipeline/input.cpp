@@ -16,26 +16,24 @@
 #include "scene/load.h"
 #include "scene/quality.h"
 #include "scene/suggest.h"
-#include "shader/glsl_scan.h"
-#include "shader/shadertoy.h"
+#include "preprocess/glsl_scan.h"
+#include "importers/shadertoy.h"
 
 namespace ms {
 namespace fs = std::filesystem;
 
 namespace {
 
-void apply_disable(Quality& q, const std::vector<std::string>& off) {
-  for (const std::string& name : off) {
-    if (name == "shadows") q.shadows = false;
-    if (name == "reflections") q.reflections = false;
-    if (name == "ao") q.ao = false;
-    if (name == "checker-filter") q.checker_filter = false;
-  }
+void apply_disable(Quality& q, const DisabledEffects& off) {
+  if (off.shadows) q.shadows = false;
+  if (off.reflections) q.reflections = false;
+  if (off.ao) q.ao = false;
+  if (off.checker_filter) q.checker_filter = false;
 }
 
 }  // namespace
 
-LoadedInput load_input_scene(const fs::path& input, const std::vector<std::string>& disable,
+LoadedInput load_input_scene(const fs::path& input, const DisabledEffects& disable,
                              const std::string& preset, const SceneOverrides& overrides) {
   check_input_file(input, input.extension() == ".toml" ? "scene file" : "input file");
   LoadedInput in;
@@ -69,7 +67,7 @@ LoadedInput load_input_scene(const fs::path& input, const std::vector<std::strin
     in.scene.quality = with_preset(in.scene.quality, preset);  // the file's explicit keys still win
   }
   apply_disable(in.scene.quality, disable);
-  if (std::find(disable.begin(), disable.end(), "bloom") != disable.end()) in.scene.bloom.enabled = false;
+  if (disable.bloom) in.scene.bloom.enabled = false;
   return in;
 }
 
@@ -140,7 +138,7 @@ std::vector<std::string> unbound_warnings(const PassGraph& graph) {
   return out;
 }
 
-LoadedInput load_input(const fs::path& input, const std::vector<std::string>& disable, const AssembleOptions& opts,
+LoadedInput load_input(const fs::path& input, const DisabledEffects& disable, const AssembleOptions& opts,
                        const std::string& preset, const SceneOverrides& overrides) {
   LoadedInput in = load_input_scene(input, disable, preset, overrides);
   assemble_input(in, opts);

@@ -13,9 +13,14 @@
 #include "scene/overrides.h"
 #include "scene/scene.h"
 #include "shader/assemble.h"
-#include "shader/preprocess.h"
+#include "preprocess/preprocess.h"
 
 namespace ms {
+
+// Effects a job switches off (--disable): each false keeps the scene's.
+struct DisabledEffects {
+  bool shadows = false, reflections = false, ao = false, checker_filter = false, bloom = false;
+};
 
 struct LoadedInput {
   std::filesystem::path path;  // the input as given
@@ -57,19 +62,19 @@ struct ImageSize {
   int height = 0;
 };
 
-// `disable`: effects switched off (shadows, reflections, ao, checker-filter, bloom).
+// `disable`: the effects switched off.
 // `preset`: a quality preset replacing the scene file's (scene/quality.h);
 // empty keeps the file's. The file's explicit [quality] keys still apply.
 // `overrides`: --set (cli/override_flags.h), a .toml scene only; --uniform
 // values travel in opts.uniforms.
-LoadedInput load_input(const std::filesystem::path& input, const std::vector<std::string>& disable,
+LoadedInput load_input(const std::filesystem::path& input, const DisabledEffects& disable,
                        const AssembleOptions& opts, const std::string& preset = {},
                        const SceneOverrides& overrides = {});
 
 // load_input() in two steps, for callers whose shader depends on the scene
 // (fuse_post) or who apply flags to it: the scene alone (no passes), then
 // its passes (for a Shadertoy input: the project read, media found).
-LoadedInput load_input_scene(const std::filesystem::path& input, const std::vector<std::string>& disable,
+LoadedInput load_input_scene(const std::filesystem::path& input, const DisabledEffects& disable,
                              const std::string& preset = {}, const SceneOverrides& overrides = {});
 void assemble_input(LoadedInput& in, const AssembleOptions& opts);
 

@@ -23,7 +23,7 @@
 #include "render/still.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
-#include "shader/glsl_scan.h"
+#include "preprocess/glsl_scan.h"
 
 namespace ms {
 namespace fs = std::filesystem;

@@ -4,7 +4,7 @@
 #include "io/image_io.h"
 #include "io/input_file.h"
 #include "render/project_passes.h"
-#include "shader/confine.h"
+#include "preprocess/confine.h"
 
 namespace ms {
 namespace fs = std::filesystem;

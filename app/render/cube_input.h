@@ -21,7 +21,7 @@ namespace ms {
 // unless --missing-media stands in (noise or black on every face, with a
 // warning). Faces that are not square or not all one size are an error
 // naming the file. Each of the six candidate files must lie inside `roots`
-// (shader/confine.h's media_roots), symlinks resolved, or bad_input naming
+// (preprocess/confine.h's media_roots), symlinks resolved, or bad_input naming
 // the face. `cache` reads a cubemap used twice once.
 std::shared_ptr<const CubeFaces> load_cube_input(const ProjectInput& in, const ShadertoySettings& s,
                                                  const std::vector<std::filesystem::path>& roots,

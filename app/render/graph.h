@@ -33,7 +33,7 @@
 #include "render/program_cache.h"
 #include "scene/project.h"
 #include "scene/scene.h"
-#include "shader/preprocess.h"
+#include "preprocess/preprocess.h"
 
 namespace ms {
 

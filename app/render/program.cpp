@@ -13,7 +13,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.h"
-#include "shader/log_map.h"
+#include "preprocess/log_map.h"
 
 namespace ms {
 namespace {

@@ -1,6 +1,6 @@
 // A linked GL program built from preprocessed sources. Compile and link
 // errors become one ms::Error naming the original file:line (via
-// shader/log_map.h), never a line of the assembled text.
+// preprocess/log_map.h), never a line of the assembled text.
 #pragma once
 #include <string>
 #include <unordered_map>
@@ -9,7 +9,7 @@
 #include <glm/fwd.hpp>
 
 #include "gl/gl.h"
-#include "shader/preprocess.h"
+#include "preprocess/preprocess.h"
 
 namespace ms {
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "render/program.h"
-#include "shader/preprocess.h"
+#include "preprocess/preprocess.h"
 
 namespace ms {
 

@@ -12,10 +12,10 @@
 #include "io/input_file.h"
 #include "io/video_input.h"
 #include "render/cube_input.h"
-#include "shader/confine.h"
-#include "shader/glslviewer.h"
-#include "shader/shadertoy.h"
-#include "shader/shadertoy_media.h"
+#include "preprocess/confine.h"
+#include "importers/glslviewer.h"
+#include "importers/shadertoy.h"
+#include "importers/shadertoy_media.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -25,7 +25,7 @@ namespace {
 // Where media may come from, and how errors name the input.
 struct MediaPlace {
   const ShadertoySettings& s;
-  std::vector<fs::path> roots;  // shader/confine.h's media_roots
+  std::vector<fs::path> roots;  // preprocess/confine.h's media_roots
   std::string origin;           // the file errors name
 };
 

@@ -12,13 +12,13 @@
 #include "render/graph.h"
 #include "scene/project.h"
 #include "shader/assemble.h"
-#include "shader/shadertoy_media.h"
+#include "importers/shadertoy_media.h"
 
 namespace ms {
 
 // `scene_file`: the .toml that wraps the project (empty for a bare file).
 // Media are looked up in s.media_dir, else the folder of the scene (or the
-// bare file), and read only inside shader/confine.h's media_roots.
+// bare file), and read only inside preprocess/confine.h's media_roots.
 // Warnings (stand-ins, a second shader in a JSON array) go to `warnings`.
 // Throws bad_input: a missing texture names the pass, the channel and the
 // src; so does a volume that is not one of Shadertoy's two noise volumes

@@ -24,7 +24,7 @@ struct Still {
   Image color;  // R, G, B, A, top row first; alpha 1
   Image aovs;   // FrameRenderer::read_aovs() when params.aovs, else empty
   // Pixels a Shadertoy Image pass wrote a NaN or Inf into, each channel
-  // already converted as a float-to-unorm write does (shader/shadertoy.h);
+  // already converted as a float-to-unorm write does (importers/shadertoy.h);
   // the NaN/Inf guard adds them to what it counts.
   long long flagged = 0;
 };

@@ -1,7 +1,7 @@
 // The camera's look-at frame: where the primary rays of a pinhole camera
 // point. Computed once per frame on the host and handed to
 // sdf_shaders/camera.glsl as uniforms (uCamBasis, uCamTanHalfFov), so no
-// pixel recomputes it; the CPU references (bench/sweep_exact.h) use it too.
+// pixel recomputes it; the CPU references (sweep/sweep_exact.h) use it too.
 #pragma once
 #include <glm/vec3.hpp>
 

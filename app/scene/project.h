@@ -1,6 +1,6 @@
 // A Shadertoy-style program as data: a Common source, buffer passes A..D
 // and the Image pass, each with up to four typed inputs. Loaded from
-// Shadertoy's JSON (shader/project_json.h), a scene's [[passes]]
+// Shadertoy's JSON (importers/project_json.h), a scene's [[passes]]
 // (scene/load_passes.h) or a bare .glsl (one Image pass); run by
 // render/graph.h. No GL and no file reading here.
 //
@@ -17,7 +17,7 @@ namespace ms {
 // Sampler state of one input, Shadertoy's names and defaults (a texture's:
 // mipmap, repeat, vflip; a buffer's: linear, clamp).
 enum class TexFilter { nearest, linear, mipmap };
-enum class TexWrap { clamp, repeat, mirror };  // mirror: the VS Code extension's "Mirror" (shader/vscode.h)
+enum class TexWrap { clamp, repeat, mirror };  // mirror: the VS Code extension's "Mirror" (importers/vscode.h)
 struct Sampler {
   TexFilter filter = TexFilter::linear;
   TexWrap wrap = TexWrap::clamp;
@@ -77,7 +77,7 @@ struct ShaderProject {
   // Buffer passes in the order Shadertoy runs them (A, B, C, D), then
   // Cube A, then the Image pass, last.
   std::vector<ProjectPass> passes;
-  bool glslviewer = false;           // a glslViewer file (shader/glslviewer.h): main(), gl_FragColor, u_* uniforms
+  bool glslviewer = false;           // a glslViewer file (importers/glslviewer.h): main(), gl_FragColor, u_* uniforms
   bool has_sound = false;            // a Sound pass was present and is not run (it never changes the image)
   std::vector<std::string> warnings; // for the caller to print: "x.json holds 2 shaders; rendering the first"
 
@@ -99,12 +99,12 @@ struct NamedTexture {
 // Shadertoy settings of a scene file's [shadertoy] table or the flags.
 struct ShadertoySettings {
   std::filesystem::path media_dir;        // where "/media/a/<hash>.png" is looked up by file name
-  std::filesystem::path media_dir_flag;   // --media-dir: also a directory media may be read from (shader/confine.h)
+  std::filesystem::path media_dir_flag;   // --media-dir: also a directory media may be read from (preprocess/confine.h)
   MissingMedia missing_media = MissingMedia::error;
   float mouse[4] = {0, 0, 0, 0};          // iMouse, Shadertoy's semantics
   double fps = 60.0;                      // a still of a stateful shader runs round(time * fps) + 1 frames
   std::filesystem::path common_file;      // [[passes]]: the Common source
-  std::vector<NamedTexture> textures;     // --texture: a glslViewer shader's u_tex0.. (shader/glslviewer.h)
+  std::vector<NamedTexture> textures;     // --texture: a glslViewer shader's u_tex0.. (importers/glslviewer.h)
 };
 
 // "A".."D" for 0..3.

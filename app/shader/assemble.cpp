@@ -6,7 +6,7 @@
 #include <system_error>
 
 #include "core/error.h"
-#include "shader/glsl_scan.h"
+#include "preprocess/glsl_scan.h"
 #include "shader/specialize.h"
 
 namespace ms {

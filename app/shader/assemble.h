@@ -9,7 +9,7 @@
 
 #include "scene/features.h"
 #include "scene/scene.h"
-#include "shader/preprocess.h"
+#include "preprocess/preprocess.h"
 #include "shader/scene_params.h"
 #include "shader/specialize.h"
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "shader/log_map.h"
+#include "preprocess/log_map.h"
 
 namespace ms {
 
@@ -56,7 +56,7 @@ const std::regex& derivative_re() {
 }
 
 // The file:line of byte `pos` of the assembled text, by the last #line
-// directive before it (shader/preprocess.h's encoding, log_map.h decodes it).
+// directive before it (preprocess/preprocess.h's encoding, log_map.h decodes it).
 SourceLocation location_at(const ShaderSource& src, size_t pos) {
   static const std::regex line_re(R"((^|\n)#line\s+([0-9]+)(\s+([0-9]+))?[^\n]*\n)");
   long long line = 1, string_no = 0;

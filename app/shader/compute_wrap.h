@@ -19,7 +19,7 @@
 #include <optional>
 #include <string>
 
-#include "shader/preprocess.h"
+#include "preprocess/preprocess.h"
 
 namespace ms {
 

@@ -230,7 +230,7 @@ TEST_F(Bloom, BadValuesAreOneLineErrors) {
   EXPECT_NE(r.err.find("did you mean 'bloom'"), std::string::npos) << r.err;
 }
 
-// `test` (bench/suite_run.cpp) draws the same bloom stage: a case on the
+// `test` (suite/suite_run.cpp) draws the same bloom stage: a case on the
 // scene equals render's image exactly (max 0), and the same case with
 // disable = ["bloom"] fails against it (exit 1).
 TEST_F(Bloom, TestCaseBloomsAsRenderDoes) {

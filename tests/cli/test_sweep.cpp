@@ -12,9 +12,9 @@
 #include <set>
 #include <sstream>
 
-#include "bench/sweep.h"
-#include "bench/sweep_exact.h"
-#include "bench/sweep_grid.h"
+#include "sweep/sweep.h"
+#include "sweep/sweep_exact.h"
+#include "sweep/sweep_grid.h"
 #include "core/error.h"
 #include "cpu_tracer.h"
 #include "io/image_io.h"

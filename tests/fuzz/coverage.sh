@@ -20,8 +20,8 @@ LIB_SOURCES=("$SRC"/app/core/*.cpp "$SRC"/app/scene/*.cpp "$SRC"/app/shader/*.cp
 # What each target is about (the rest of the library is linked, not measured).
 declare -A FILES=(
   [scene]="app/scene/load.cpp app/scene/load_geometry.cpp app/scene/quality.cpp app/scene/toml_read.cpp app/scene/toml_guard.cpp app/scene/animation.cpp"
-  [preprocess]="app/shader/preprocess.cpp app/shader/log_map.cpp app/shader/scene_params.cpp"
-  [shadertoy]="app/shader/shadertoy.cpp app/shader/preprocess.cpp"
+  [preprocess]="app/preprocess/preprocess.cpp app/preprocess/log_map.cpp app/shader/scene_params.cpp"
+  [shadertoy]="app/importers/shadertoy.cpp app/preprocess/preprocess.cpp"
   [animation]="app/scene/animation.cpp"
 )
 objs=()

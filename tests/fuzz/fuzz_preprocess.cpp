@@ -18,8 +18,8 @@
 #include "core/error.h"
 #include "fuzz_util.h"
 #include "live/param_reload.h"
-#include "shader/log_map.h"
-#include "shader/preprocess.h"
+#include "preprocess/log_map.h"
+#include "preprocess/preprocess.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace ms;

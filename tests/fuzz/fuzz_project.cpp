@@ -1,4 +1,4 @@
-// The Shadertoy JSON loader (shader/project_json.h) on any text: the API's
+// The Shadertoy JSON loader (importers/project_json.h) on any text: the API's
 // and the export's forms, then check_project() and, for every pass, the
 // desktop-keyword renaming. Only ms::Error may escape; the renaming keeps
 // every line where it was (error lines map back) and is idempotent (a
@@ -11,9 +11,9 @@
 
 #include "core/error.h"
 #include "fuzz_util.h"
-#include "shader/es_compat.h"
+#include "importers/es_compat.h"
 #include "scene/project.h"
-#include "shader/project_json.h"
+#include "importers/project_json.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace ms;

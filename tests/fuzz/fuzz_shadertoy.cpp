@@ -9,7 +9,7 @@
 
 #include "core/error.h"
 #include "fuzz_util.h"
-#include "shader/shadertoy.h"
+#include "importers/shadertoy.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace ms;

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "scene/features.h"
-#include "shader/preprocess.h"
+#include "preprocess/preprocess.h"
 
 namespace ms::test {
 namespace {

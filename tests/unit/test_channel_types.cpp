@@ -7,8 +7,8 @@
 #include <set>
 
 #include "render/project_passes.h"
-#include "shader/project_json.h"
-#include "shader/shadertoy_media.h"
+#include "importers/project_json.h"
+#include "importers/shadertoy_media.h"
 
 namespace ms {
 namespace {

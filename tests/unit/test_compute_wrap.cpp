@@ -1,7 +1,7 @@
 // shader/compute_wrap.h's text rewrite, without GL: implicit-LOD lookups
 // become their Lod forms (nested calls, the offset forms), gl_FragCoord the
 // invocation's coordinate, and refusals name the file:line of the call
-// through the #line encoding of shader/preprocess.h.
+// through the #line encoding of preprocess/preprocess.h.
 #include <gtest/gtest.h>
 
 #include <string>

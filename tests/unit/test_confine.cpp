@@ -1,4 +1,4 @@
-// Include confinement (shader/preprocess.h PreprocessOptions::roots,
+// Include confinement (preprocess/preprocess.h PreprocessOptions::roots,
 // AssembleOptions::allow_include): an #include may only read files under
 // the scene's directory and the shader library, judged on canonical paths.
 // Attacks: an absolute path (/etc/passwd), "../.." out of the scene, a
@@ -15,8 +15,8 @@
 #include "core/error.h"
 #include "files.h"
 #include "shader/assemble.h"
-#include "shader/preprocess.h"
-#include "shader/shadertoy.h"
+#include "preprocess/preprocess.h"
+#include "importers/shadertoy.h"
 
 namespace ms {
 namespace {

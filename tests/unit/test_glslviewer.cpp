@@ -1,9 +1,9 @@
-// glslViewer files (shader/glslviewer.h): what is recognised, the passes a
+// glslViewer files (importers/glslviewer.h): what is recognised, the passes a
 // file becomes, and refusals at their line. No GL.
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "shader/glslviewer.h"
+#include "importers/glslviewer.h"
 
 namespace ms {
 namespace {

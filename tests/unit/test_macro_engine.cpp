@@ -1,4 +1,4 @@
-// shader/macro_engine.h: the model of the driver's preprocessor. Expansion
+// preprocess/macro_engine.h: the model of the driver's preprocessor. Expansion
 // is checked through `#if`: a case holds when `#if <expansion> == <value>`
 // reaches its `#error`. The C17 6.10.3 rules each get a case, then the
 // conditionals, the budgets and the expression depth.
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "shader/macro_engine.h"
+#include "preprocess/macro_engine.h"
 
 namespace ms {
 namespace {

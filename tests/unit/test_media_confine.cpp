@@ -1,5 +1,5 @@
 // The pieces media confinement and ffmpeg's paths are made of:
-// media_roots and confine_media (shader/confine.h), the VS Code cube
+// media_roots and confine_media (preprocess/confine.h), the VS Code cube
 // wildcard's six files (io/cube_faces.h) and ffmpeg_file_url (io/video.h).
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -12,7 +12,7 @@
 #include "files.h"
 #include "io/cube_faces.h"
 #include "io/video.h"
-#include "shader/confine.h"
+#include "preprocess/confine.h"
 
 namespace ms {
 namespace {

@@ -1,4 +1,4 @@
-// preprocess() with the driver model on (shader/macro_engine.h): include
+// preprocess() with the driver model on (preprocess/macro_engine.h): include
 // diamonds stop at the size budget, include guards and #pragma once make
 // them linear, includes in dead #if groups are not read, a live #error
 // fails, and a user's #line renumbers its own file.
@@ -11,8 +11,8 @@
 
 #include "core/error.h"
 #include "files.h"
-#include "shader/log_map.h"
-#include "shader/preprocess.h"
+#include "preprocess/log_map.h"
+#include "preprocess/preprocess.h"
 
 namespace ms {
 namespace {

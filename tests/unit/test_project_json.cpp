@@ -1,4 +1,4 @@
-// shader/project_json.h on hand-written files: the API form and the site's
+// importers/project_json.h on hand-written files: the API form and the site's
 // export form with every field, Shadertoy's pass order and sampler
 // defaults, and each kind of bad input with its line and key.
 #include <gtest/gtest.h>
@@ -6,8 +6,8 @@
 #include <string>
 
 #include "core/error.h"
-#include "shader/es_compat.h"
-#include "shader/project_json.h"
+#include "importers/es_compat.h"
+#include "importers/project_json.h"
 
 namespace ms {
 namespace {

@@ -9,8 +9,8 @@
 
 #include "core/error.h"
 #include "shader/assemble.h"
-#include "shader/log_map.h"
-#include "shader/shadertoy.h"
+#include "preprocess/log_map.h"
+#include "importers/shadertoy.h"
 #include "test_shader_util.h"
 
 namespace ms {

@@ -2,8 +2,8 @@
 // driver location -> file:line through the #line directives preprocess() emits.
 #include <gtest/gtest.h>
 
-#include "shader/log_map.h"
-#include "shader/preprocess.h"
+#include "preprocess/log_map.h"
+#include "preprocess/preprocess.h"
 #include "test_shader_util.h"
 
 namespace ms {

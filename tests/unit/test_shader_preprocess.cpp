@@ -6,7 +6,7 @@
 #include <regex>
 
 #include "core/error.h"
-#include "shader/preprocess.h"
+#include "preprocess/preprocess.h"
 #include "test_shader_util.h"
 
 namespace ms {

@@ -10,11 +10,11 @@
 #include <fstream>
 
 #include "core/error.h"
-#include "shader/glsl_scan.h"
-#include "shader/log_map.h"
-#include "shader/project_json.h"
+#include "preprocess/glsl_scan.h"
+#include "preprocess/log_map.h"
+#include "importers/project_json.h"
 #include "shader/scene_params.h"
-#include "shader/vscode.h"
+#include "importers/vscode.h"
 
 namespace ms {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 #include "scene/project.h"
-#include "shader/project_json.h"
+#include "importers/project_json.h"
 
 namespace ms {
 namespace {

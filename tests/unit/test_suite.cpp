@@ -1,4 +1,4 @@
-// Suite files (bench/suite.h): every key, relative paths, globs and backend
+// Suite files (suite/suite.h): every key, relative paths, globs and backend
 // lists, [defaults], and each mistake as one file:line:key error with a
 // did-you-mean, as scene files give. No GL.
 #include <gtest/gtest.h>
@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "bench/outcome.h"
-#include "bench/suite.h"
+#include "suite/outcome.h"
+#include "suite/suite.h"
 #include "core/error.h"
 #include "minimal_suite.h"
 
@@ -270,7 +270,7 @@ TEST(SuiteLoad, AMissingFileIsBadInputNamingIt) {
   EXPECT_THROW(load_suite(kSource / "tests"), Error);  // a directory
 }
 
-// The two exit-code conventions (bench/outcome.h).
+// The two exit-code conventions (suite/outcome.h).
 TEST(Outcome, ExitCodes) {
   EXPECT_EQ(exit_code_for(ExitCodes::standard, Outcome::pass), 0);
   EXPECT_EQ(exit_code_for(ExitCodes::standard, Outcome::warn), 0);

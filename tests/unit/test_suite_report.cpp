@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "bench/suite_html.h"
-#include "bench/suite_report.h"
+#include "suite/suite_html.h"
+#include "suite/suite_report.h"
 #include "core/error.h"
 #include "files.h"
 #include "io/image_io.h"

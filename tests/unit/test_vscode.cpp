@@ -1,4 +1,4 @@
-// VS Code Shader Toy extension files (shader/vscode.h): detection, each
+// VS Code Shader Toy extension files (importers/vscode.h): detection, each
 // directive and channel setting, the extension's pass order, "self", the
 // keyboard, #iUniform, and refusals at their line. Files in a temp dir; no GL.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 
 #include "core/error.h"
 #include "shader/scene_params.h"
-#include "shader/vscode.h"
+#include "importers/vscode.h"
 
 namespace ms {
 namespace {

@@ -1,5 +1,5 @@
 // The VS Code loader's four-buffer limit applies while it walks the files
-// (shader/vscode.cpp): a chain of buffer files naming each other stops at
+// (importers/vscode.cpp): a chain of buffer files naming each other stops at
 // the fifth, unread, so 20,000 such files cost five reads, not 20,000.
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "core/error.h"
-#include "shader/vscode.h"
+#include "importers/vscode.h"
 
 namespace ms {
 namespace {
