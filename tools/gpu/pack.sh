@@ -37,6 +37,10 @@ libc=$(path libc.so.6)
 loader=$(awk '$1 ~ /ld-linux-x86-64\.so\.2$/ { print $1 }' <<<"$deps")
 [[ -n $libc && -n $loader ]] || die "ldd found no glibc for $bin"
 libdir=$(dirname "$libc")
+# Nothing beyond what is packed below (and the kernel's vDSO): a codec or
+# GLFW linked in by mistake would fail only on the GPU machine.
+extra=$(awk '$1 !~ /^(linux-vdso|libtomlplusplus|libEGL|libGLdispatch|libc|libm|libdl|libpthread|librt|libstdc\+\+|libgcc_s)\.so/ && $1 !~ /ld-linux-x86-64\.so\.2$/ { print $1 }' <<<"$deps" | tr '\n' ' ')
+[[ -z $extra ]] || die "$bin needs libraries the pack does not carry: $extra"
 
 tmp=$dest.tmp
 rm -rf "$tmp"
