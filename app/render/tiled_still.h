@@ -4,7 +4,7 @@
 // sets uResolution / iResolution to the whole image and uPixelOffset to the
 // tile's corner, so floor(gl_FragCoord.xy) + uPixelOffset + uJitter, the
 // camera ray and the jitter are those of one whole draw: the image is
-// bit-identical. Each finished band goes to `sink` (cli/ streams it to the
+// bit-identical. Each finished band goes to `sink` (pipeline/ streams it to the
 // file), so only a band is ever held. Stateless graphs only: a graph with
 // buffers needs them whole-frame.
 //

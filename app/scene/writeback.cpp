@@ -9,12 +9,14 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <variant>
 
 #include <toml++/toml.h>
 
 #include "io/atomic_file.h"
 #include "io/input_file.h"
 #include "core/error.h"
+#include "scene/quality_fields.h"
 #include "scene/toml_guard.h"
 
 namespace ms {
@@ -241,26 +243,20 @@ struct Differ {
   void vec(const char* key, glm::vec3 a, glm::vec3 b) {
     if (a != b) out.push_back({table, index, key, toml_vec3(b)});
   }
+  // A field of any of the types a TOML table holds (scene/toml_read.h's Field).
+  void any(std::string_view key, float a, float b) { num(std::string(key).c_str(), a, b); }
+  void any(std::string_view key, int a, int b) { count(std::string(key).c_str(), a, b); }
+  void any(std::string_view key, bool a, bool b) { flag(std::string(key).c_str(), a, b); }
+  void any(std::string_view key, glm::vec3 a, glm::vec3 b) { vec(std::string(key).c_str(), a, b); }
 };
 
 }  // namespace
 
 std::vector<TomlEdit> scene_value_edits(const Scene& before, const Scene& after) {
   std::vector<TomlEdit> out;
-  const Quality &qa = before.quality, &qb = after.quality;
   Differ q{out, "quality"};
-  q.count("max_steps", qa.max_steps, qb.max_steps);
-  q.num("max_distance", qa.max_distance, qb.max_distance);
-  q.num("hit_tolerance", qa.hit_tolerance, qb.hit_tolerance);
-  q.num("hit_epsilon", qa.hit_epsilon, qb.hit_epsilon);
-  q.num("lipschitz", qa.lipschitz, qb.lipschitz);
-  q.count("shadow_steps", qa.shadow_steps, qb.shadow_steps);
-  q.count("ao_taps", qa.ao_taps, qb.ao_taps);
-  q.count("bounces", qa.bounces, qb.bounces);
-  q.flag("shadows", qa.shadows, qb.shadows);
-  q.flag("ao", qa.ao, qb.ao);
-  q.flag("reflections", qa.reflections, qb.reflections);
-  q.flag("checker_filter", qa.checker_filter, qb.checker_filter);
+  for (const Field<Quality>& f : kQualityFields)  // every [quality] key, as the loader reads them
+    std::visit([&](auto member) { q.any(f.key, before.quality.*member, after.quality.*member); }, f.member);
   Differ sky{out, "sky"};
   sky.vec("horizon", before.sky.horizon, after.sky.horizon);
   sky.vec("zenith", before.sky.zenith, after.sky.zenith);

@@ -4,6 +4,9 @@
 // atomically and only when the new text passes the check.
 #include <gtest/gtest.h>
 
+#include <type_traits>
+#include <variant>
+
 #include <unistd.h>
 
 #include <cmath>
@@ -13,6 +16,7 @@
 #include "core/error.h"
 #include "files.h"
 #include "scene/load.h"
+#include "scene/quality_fields.h"
 #include "scene/writeback.h"
 
 namespace ms {
@@ -135,6 +139,27 @@ TEST(Writeback, SceneValueEditsOnlyWhatChanged) {
   EXPECT_EQ(e[2].index, 1);
   EXPECT_EQ(e[3].key, "reflectivity");
   EXPECT_EQ(camera_edits(Camera{}).size(), 4u);
+}
+
+// Every [quality] key the loader reads is one the viewer can write back
+// (omega, bounds and analytic_planes too, when a preset changed them).
+TEST(Writeback, SceneValueEditsCoverEveryQualityKey) {
+  const Scene a;
+  for (const Field<Quality>& f : kQualityFields) {
+    Scene b = a;
+    std::visit(
+        [&](auto member) {
+          using V = std::remove_reference_t<decltype(b.quality.*member)>;
+          if constexpr (std::is_same_v<V, bool>) b.quality.*member = !(a.quality.*member);
+          else if constexpr (std::is_same_v<V, glm::vec3>) b.quality.*member += glm::vec3(1.0f);
+          else b.quality.*member = a.quality.*member + V(1);
+        },
+        f.member);
+    const std::vector<TomlEdit> e = scene_value_edits(a, b);
+    ASSERT_EQ(e.size(), 1u) << f.key;
+    EXPECT_EQ(e[0].table, "quality");
+    EXPECT_EQ(e[0].key, f.key);
+  }
 }
 
 class WritebackFile : public ::testing::Test {
