@@ -86,9 +86,10 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   add_size_flag(cmd, "--shot-size", a.shot_size, "Screenshot size WxH, re-rendered (default: the window's)");
   cmd->add_option("--shot-frame", a.shot_frame, "Take both screenshots after frame N (scripts)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--drag", a.drag,
-                  "Drag TARGET (an animation target, e.g. materials[0].color) to V (x or x,y,z) over frames A..B, "
-                  "as the panel would (scripts)")
+  cmd->add_option_function<std::string>(
+         "--drag", [&a](const std::string& v) { a.drag = parse_drag_flag(v); },
+         "Drag TARGET (an animation target, e.g. materials[0].color) to V (x or x,y,z) over frames A..B, "
+         "as the panel would (scripts)")
       ->check(not_empty());
   cmd->add_option("--exit-after", a.exit_after, "Quit after this many seconds")->check(non_negative());
   cmd->add_option("--max-frames", a.max_frames, "Quit after this many frames")->check(non_negative());
@@ -108,38 +109,47 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   return cmd;
 }
 
-namespace {
-
-// --drag TARGET=V@A..B: checked against the scene as read now.
-live::ScriptedDrag parse_drag(const std::string& text, const fs::path& input, const SceneOverrides& set) {
+DragFlag parse_drag_flag(const std::string& text) {
   static const std::regex form(R"(^([^=@]+)=([^@]+)@(\d{1,9})\.\.(\d{1,9})$)");
   std::smatch m;
   auto bad = [&](const std::string& why, const std::string& hint) {
     fail_input("invalid --drag '" + text + "': " + why, {}, 0, "--drag", hint);
   };
   if (!std::regex_match(text, m, form)) bad("not TARGET=V@A..B", "e.g. materials[0].color=1,0,0@5..15");
-  live::ScriptedDrag d;
-  d.target = m[1];
-  d.first = std::stol(m[3]);
-  d.last = std::stol(m[4]);
-  if (d.last < d.first) bad("frame " + std::string(m[4]) + " is before " + std::string(m[3]), "A..B with A <= B");
-  std::vector<double> v;
+  DragFlag f;
+  f.text = text;
+  f.drag.target = m[1];
+  f.drag.first = std::stol(m[3]);
+  f.drag.last = std::stol(m[4]);
+  if (f.drag.last < f.drag.first)
+    bad("frame " + std::string(m[4]) + " is before " + std::string(m[3]), "A..B with A <= B");
   std::stringstream in(m[2].str());
   for (std::string part; std::getline(in, part, ',');) {
     char* end = nullptr;
     const double x = std::strtod(part.c_str(), &end);
     if (part.empty() || *end != '\0' || !std::isfinite(x)) bad("'" + part + "' is not a number", "V is x or x,y,z");
-    v.push_back(x);
+    f.values.push_back(x);
   }
+  return f;
+}
+
+namespace {
+
+// --drag's target and values against the scene as read now.
+live::ScriptedDrag check_drag(const DragFlag& f, const fs::path& input, const SceneOverrides& set) {
+  auto bad = [&](const std::string& why, const std::string& hint) {
+    fail_input("invalid --drag '" + f.text + "': " + why, {}, 0, "--drag", hint);
+  };
   if (input.extension() != ".toml") bad("it drags a value of a scene file", "a scene .toml");
   Scene scene = load_scene(input, set);
   std::array<double, 3> cur{};
   int arity = 0;
+  live::ScriptedDrag d = f.drag;
   const std::string error = target_value(scene, d.target, &cur, &arity, false);
   if (!error.empty()) bad(error, "a light, material or sky value, as [[animation]] targets");
-  if (static_cast<int>(v.size()) != arity)
+  if (static_cast<int>(f.values.size()) != arity)
     bad(d.target + " takes " + std::to_string(arity) + (arity == 1 ? " value" : " values"), "V is x or x,y,z");
-  for (size_t i = 0; i < v.size(); ++i) d.to[i] = v[i];
+  for (size_t i = 0; i < f.values.size(); ++i) d.to[i] = f.values[i];
   return d;
 }
 
@@ -198,7 +208,7 @@ int run_view(const ViewArgs& a) {
   o.capture_dir = a.capture_dir;
   o.shot_dir = a.shot_dir;
   o.shot_frame = a.shot_frame;
-  if (!a.drag.empty()) o.drag = parse_drag(a.drag, input, set);
+  if (a.drag) o.drag = check_drag(*a.drag, input, set);
   o.exit_after = a.exit_after;
   o.max_frames = a.max_frames;
   o.debounce_ms = a.debounce_ms;

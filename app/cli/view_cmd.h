@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/override_flags.h"
+#include "live/live_values.h"
 #include "io/sequence.h"
 #include "pipeline/input.h"
 #include "render/compute_frame.h"
@@ -17,6 +18,17 @@ class App;
 }
 
 namespace ms {
+
+// --drag TARGET=V@A..B as read: its target, values and frames. Whether
+// the target exists and takes that many values is checked against the
+// scene when the viewer starts.
+struct DragFlag {
+  std::string text;            // as given, for the messages of that check
+  live::ScriptedDrag drag;     // target and frames; `to` set from `values` by the check
+  std::vector<double> values;  // x, or x,y,z
+};
+// Throws bad_input naming --drag for anything but TARGET=V@A..B with A <= B.
+DragFlag parse_drag_flag(const std::string& text);
 
 struct ViewArgs {
   std::string input;
@@ -38,7 +50,7 @@ struct ViewArgs {
   std::string shot_dir = ".";
   ImageSize shot_size;       // --shot-size WxH; 0x0: the window's
   long shot_frame = -1;
-  std::string drag;          // --drag TARGET=V@A..B (scripts): a panel drag
+  std::optional<DragFlag> drag;  // --drag TARGET=V@A..B (scripts): a panel drag
   double exit_after = 0.0;
   long max_frames = 0;
   int debounce_ms = 10;

@@ -43,8 +43,11 @@ TEST(TypedFlags, ABadValueIsRefusedBeforeTheInputIsRead) {
       {"render", missing, "--frames", "0..3", "--compute-group", "64x64", "-o", (dir / "f_%d.png").string()},
       {"bench", missing, "--size", "9"},
       {"sweep", missing, "--dispatch", "gpu"},
+      {"render", missing, "--format", "jpeg", "--output-dir", (dir / "out").string()},
+      {"view", missing, "--shader-dir", (dir / "none").string(), "--drag", "materials[0].color=1,0,0@9..3"},
   };
-  const std::vector<std::string> flags = {"--size", "--dispatch", "--compute-group", "--size", "--dispatch"};
+  const std::vector<std::string> flags = {"--size", "--dispatch", "--compute-group", "--size",
+                                          "--dispatch", "--format", "invalid --drag"};
   for (size_t i = 0; i < cases.size(); ++i) {
     const RunResult r = run_marchstudio(cases[i]);
     EXPECT_EQ(r.exit_code, 2) << cases[i][3] << ": " << r.err;
