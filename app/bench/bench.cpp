@@ -55,39 +55,17 @@ BenchCost measure_cost(const Image& aovs) {
   return c;
 }
 
-namespace {
-
-void draw_main(FrameRenderer& r, const Program& main, const UniformFn& u, const Program& post, const FrameParams& p) {
-  r.draw(main, u, post, p);
-}
-void draw_main(SceneDrawer& d, const Program& main, const UniformFn& u, const Program& post, const FrameParams& p) {
-  d.draw_program(main, u, post, p);
-}
-
-template <class Renderer>
-BenchCost count_cost(Renderer& renderer, const Program& counting, const Program& post, const Scene& posed, float time,
-                     FrameParams fp) {
+BenchCost count_frame_cost(FramePrograms& job, const ShaderSource& counting, const Scene& posed, float time,
+                           FrameParams fp) {
   fp.spp = 1;
   fp.aovs = true;
   fp.fused_post = false;
-  draw_main(renderer, counting,
-            [&](const Program& p) { set_scene_uniforms(p, posed, fp.width, fp.height, time, 0); }, post, fp);
-  const Image aovs = renderer.read_aovs(), colour = renderer.read_color();
+  const std::unique_ptr<Program> prog = job.program(counting);
+  job.draw_program(*prog, [&](const Program& p) { set_scene_uniforms(p, posed, fp.width, fp.height, time, 0); }, fp);
+  const Image aovs = job.read_aovs(), colour = job.read_color();
   BenchCost c = measure_cost(aovs);
   c.nonfinite_pixels = count_nonfinite_pixels(colour, &aovs);
   return c;
-}
-
-}  // namespace
-
-BenchCost count_frame_cost(FrameRenderer& renderer, const Program& counting, const Program& post,
-                           const Scene& posed, float time, FrameParams fp) {
-  return count_cost(renderer, counting, post, posed, time, fp);
-}
-
-BenchCost count_frame_cost(SceneDrawer& drawer, const Program& counting, const Program& post, const Scene& posed,
-                           float time, FrameParams fp) {
-  return count_cost(drawer, counting, post, posed, time, fp);
 }
 
 BenchResult run_bench(FrameSession& session, const PreparedFrame& p, const Scene& scene,
@@ -135,7 +113,7 @@ BenchResult run_bench(FrameSession& session, const PreparedFrame& p, const Scene
   StillFrame probe{next(), fp, fps};
   frame = 0;
   const DispatchChoice choice = session.choose(s.dispatch, s.group, probe, s.verbose);
-  r.dispatch = session.drawer().dispatch();
+  r.dispatch = session.job().dispatch();
   r.group = choice.group;
   r.link_ms = ms_since(t0);
   FrameParams tiny = fp;
@@ -195,9 +173,7 @@ BenchResult run_bench(FrameSession& session, const PreparedFrame& p, const Scene
   for (size_t p = 0; p < graph.size(); ++p) r.passes.push_back({graph.name(p), summarize(per[p])});
 
   if (counting) {
-    const std::unique_ptr<Program> count_prog = session.drawer().program(*counting);
-    fp.bloom = session.bloom();  // as the timed frames drew
-    r.cost = count_frame_cost(session.drawer(), *count_prog, session.post(), scene, s.time, fp);
+    r.cost = count_frame_cost(session.job(), *counting, scene, s.time, fp);
     r.has_cost = true;
   }
   return r;

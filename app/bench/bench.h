@@ -57,20 +57,18 @@ struct BenchCost {
   long long nonfinite_pixels = 0;  // pixels with NaN/Inf in any channel of the counting pass (colour or AOV)
 };
 
-// Cost from FrameRenderer::read_aovs() of a spp-1 AOV frame (channels
+// Cost from the AOVs read back from a spp-1 AOV frame (channels
 // steps, shadow_steps, reflection_steps, sdf_evals, step_cap, hit).
 BenchCost measure_cost(const Image& aovs);
 
 // The counting pass: one frame of `counting` (the scene assembled with
-// AOV_OUTPUTS 1) at one sample per pixel centre, so the counts are those of
-// the image's primary rays and nothing random; `fp` gives the size and
+// AOV_OUTPUTS 1), compiled for the job's dispatch and drawn with its post
+// pass and bloom, at one sample per pixel centre, so the counts are those
+// of the image's primary rays and nothing random; `fp` gives the size and
 // exposure (spp, AOVs and fusing are set here). bench and test both count
 // with it.
-BenchCost count_frame_cost(FrameRenderer& renderer, const Program& counting, const Program& post,
-                           const Scene& posed, float time, FrameParams fp);
-// The same drawn by `drawer`'s dispatch, `counting` from drawer.program().
-BenchCost count_frame_cost(SceneDrawer& drawer, const Program& counting, const Program& post, const Scene& posed,
-                           float time, FrameParams fp);
+BenchCost count_frame_cost(FramePrograms& job, const ShaderSource& counting, const Scene& posed, float time,
+                           FrameParams fp);
 
 // One pass of the graph, timed on its own (glFinish before and after).
 struct PassTiming {

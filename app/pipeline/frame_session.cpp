@@ -17,6 +17,14 @@ FramePrograms::FramePrograms(const Context& ctx, ProgramCache& cache, const Prep
   drawer_ = std::make_unique<SceneDrawer>(ctx, *graph_, Dispatch::fragment);
 }
 
+FramePrograms::~FramePrograms() = default;
+
+Still FramePrograms::read(bool aovs) const { return drawer_->read(aovs); }
+std::unique_ptr<Program> FramePrograms::program(const ShaderSource& src) const { return drawer_->program(src); }
+Image FramePrograms::read_color() const { return drawer_->read_color(); }
+Image FramePrograms::read_aovs() const { return drawer_->read_aovs(); }
+Dispatch FramePrograms::dispatch() const { return drawer_->dispatch(); }
+
 DispatchChoice FramePrograms::choose(Dispatch requested, std::optional<ComputeGroup> group, const StillFrame& probe,
                                      bool verbose) {
   StillFrame f = probe;
@@ -39,6 +47,10 @@ void FramePrograms::submit_still(const StillFrame& f) {
   StillFrame g = f;
   g.params = with_bloom(f.params);
   drawer_->draw_still(*graph_, *post_, g);
+}
+
+void FramePrograms::draw_program(const Program& main, const UniformFn& set_uniforms, const FrameParams& fp) {
+  drawer_->draw_program(main, set_uniforms, *post_, with_bloom(fp));
 }
 
 Still FramePrograms::draw(const StillFrame& f) {

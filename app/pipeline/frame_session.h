@@ -37,6 +37,7 @@ class FramePrograms {
   FramePrograms(const Context& ctx, ProgramCache& cache, const PreparedFrame& p);
   FramePrograms(const FramePrograms&) = delete;
   FramePrograms& operator=(const FramePrograms&) = delete;
+  ~FramePrograms();
 
   // The dispatch of the scene pass: `requested` (with `group`, or 8x8), or
   // for auto the cached or measured choice on `probe` (pipeline/dispatch_probe.h).
@@ -48,10 +49,20 @@ class FramePrograms {
   // A still: a stateless graph draws once, one with buffers replays frames 0..N (render/still.h).
   void submit_still(const StillFrame& f);
   // The last frame's colour (flagged pixels counted) and AOVs.
-  Still read(bool aovs) const { return drawer_->read(aovs); }
+  Still read(bool aovs) const;
   // submit_still(), then read().
   Still draw(const StillFrame& f);
 
+  // A program of the caller's drawn as the scene pass, with this job's post
+  // pass and bloom (bench's counting pass): `src`, a scene fragment
+  // shader, compiled for this job's dispatch.
+  std::unique_ptr<Program> program(const ShaderSource& src) const;
+  void draw_program(const Program& main, const UniformFn& set_uniforms, const FrameParams& fp);
+  // The last draw's colour as drawn (flagged pixels not yet counted) and AOVs.
+  Image read_color() const;
+  Image read_aovs() const;
+
+  Dispatch dispatch() const;  // fragment or compute, as chosen
   PassGraph& graph() { return *graph_; }
   const Program& post() const { return *post_; }
   SceneDrawer& drawer() { return *drawer_; }

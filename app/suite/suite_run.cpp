@@ -167,9 +167,7 @@ CaseResult run_case(Gl& gl, const Suite& suite, const PreparedCase& pc, const Pr
   if (c.cost) {
     FramePrograms& job = gl.job(pc, opts.dispatch);
     const FrameSpec f = frames_of(pc).front();
-    const FrameParams fp = job.with_bloom(pc.params);  // its post pass adds bloom
-    SceneDrawer& d = job.drawer();
-    r.cost = count_frame_cost(d, *d.program(pc.counting), job.post(), animated(pc.frame.in.scene, f.time), f.time, fp);
+    r.cost = count_frame_cost(job, pc.counting, animated(pc.frame.in.scene, f.time), f.time, pc.params);
     check_cost(*c.cost, *r.cost, r);
   }
   if (c.time_budget && cal) check_time(gl, suite, pc, *cal, r);
