@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <climits>
+#include <cmath>
+#include <type_traits>
+#include <variant>
 #include <string>
 
 #include <imgui.h>
@@ -12,6 +16,30 @@
 #include "shader/assemble.h"
 
 namespace ms::live {
+
+QualityWidget quality_widget(const Field<Quality>& f) {
+  QualityWidget w;
+  if (std::holds_alternative<bool Quality::*>(f.member)) return w;
+  w.integer = std::holds_alternative<int Quality::*>(f.member);
+  const Range& r = f.range;
+  // An open end moves inside by one step of the widget's type.
+  const double max = w.integer ? static_cast<double>(INT_MAX) : static_cast<double>(FLT_MAX);
+  const auto inside = [&](double x, double toward) {
+    return w.integer ? x + (toward > x ? 1.0 : -1.0)
+                     : static_cast<double>(std::nextafter(static_cast<float>(x), static_cast<float>(toward)));
+  };
+  w.lo = std::isfinite(r.lo) ? (r.lo_open ? inside(r.lo, max) : r.lo) : -max;
+  if (std::isfinite(r.lo) && std::isfinite(r.hi)) {
+    w.kind = QualityWidget::slider;
+    w.hi = r.hi_open ? inside(r.hi, r.lo) : r.hi;
+    w.log = w.lo > 0 && w.hi / w.lo >= 1000.0;
+  } else {
+    w.kind = QualityWidget::drag;
+    w.hi = max;
+  }
+  return w;
+}
+
 namespace {
 
 // A quality value is a #define: re-assemble once the widget lets go.
@@ -46,6 +74,11 @@ void time_and_view(ViewState& s, Session& session) {
   }
 }
 
+// Typed-in values are clamped too: the panel never sets a value the file could not hold.
+ImGuiSliderFlags slider_flags(const QualityWidget& w) {
+  return ImGuiSliderFlags_AlwaysClamp | (w.log ? ImGuiSliderFlags_Logarithmic : 0);
+}
+
 void quality(ViewState& s, Session& session) {
   Quality& q = session.scene().quality;
   // The presets `render --preset` has (scene/quality.h), by the same names.
@@ -57,27 +90,36 @@ void quality(ViewState& s, Session& session) {
       }
     ImGui::EndCombo();
   }
-  if (ImGui::Checkbox("shadows", &q.shadows)) s.want_reassemble = true;
-  ImGui::SameLine();
-  if (ImGui::Checkbox("reflections", &q.reflections)) s.want_reassemble = true;
-  ImGui::SameLine();
-  if (ImGui::Checkbox("AO", &q.ao)) s.want_reassemble = true;
-  ImGui::SameLine();
-  if (ImGui::Checkbox("checker filter", &q.checker_filter)) s.want_reassemble = true;
-  ImGui::SliderInt("max_steps", &q.max_steps, 1, 2048, "%d", ImGuiSliderFlags_Logarithmic);
-  define_changed(s);
-  ImGui::SliderFloat("max_distance", &q.max_distance, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic);
-  define_changed(s);
-  ImGui::SliderFloat("hit_tolerance", &q.hit_tolerance, 0.0f, 4.0f, "%.3f");
-  define_changed(s);
-  ImGui::SliderFloat("lipschitz", &q.lipschitz, 1.0f, 8.0f, "%.2f");
-  define_changed(s);
-  ImGui::SliderInt("shadow_steps", &q.shadow_steps, 0, 512);
-  define_changed(s);
-  ImGui::SliderInt("ao_taps", &q.ao_taps, 0, 64);
-  define_changed(s);
-  ImGui::SliderInt("bounces", &q.bounces, 0, 16);
-  define_changed(s);
+  for (const Field<Quality>& f : kQualityFields) {
+    const QualityWidget w = quality_widget(f);
+    const std::string label(f.key);
+    std::visit(
+        [&](auto member) {
+          auto& v = q.*member;
+          using V = std::remove_reference_t<decltype(v)>;
+          if constexpr (std::is_same_v<V, bool>) {
+            if (ImGui::Checkbox(label.c_str(), &v)) s.want_reassemble = true;
+            return;
+          } else if constexpr (std::is_same_v<V, int>) {
+            const int lo = static_cast<int>(w.lo), hi = static_cast<int>(std::min<double>(w.hi, INT_MAX));
+            if (w.kind == QualityWidget::slider)
+              ImGui::SliderInt(label.c_str(), &v, lo, hi, "%d", slider_flags(w));
+            else
+              ImGui::DragInt(label.c_str(), &v, 1.0f, lo, hi, "%d", ImGuiSliderFlags_AlwaysClamp);
+          } else if constexpr (std::is_same_v<V, float>) {
+            const float lo = static_cast<float>(w.lo), hi = static_cast<float>(std::min<double>(w.hi, FLT_MAX));
+            if (w.kind == QualityWidget::slider)
+              ImGui::SliderFloat(label.c_str(), &v, lo, hi, "%.3f", slider_flags(w));
+            else
+              ImGui::DragFloat(label.c_str(), &v, std::max(0.001f, std::abs(v) * 0.01f), lo, hi, "%.4g",
+                               ImGuiSliderFlags_AlwaysClamp);
+          } else {
+            ImGui::DragFloat3(label.c_str(), &v.x, 0.01f);
+          }
+          define_changed(s);  // a #define: re-assembled when the widget is let go
+        },
+        f.member);
+  }
 }
 
 void camera(ViewState& s, const Session& session) {

@@ -10,6 +10,7 @@
 
 #include "live/session.h"
 #include "live/view_state.h"
+#include "scene/quality_fields.h"
 
 namespace ms {
 struct GlInfo;
@@ -28,6 +29,19 @@ struct PanelLayout {
   bool collapsed = false;
 };
 PanelLayout panel_layout(float width, float height);
+
+// How the panel shows one [quality] key (scene/quality_fields.h), from its
+// type and range alone, so a key added there appears here: a checkbox; a
+// slider over a closed range (logarithmic past three decades; an open end
+// stays inside); or a drag from the range's lower end, unbounded above.
+// Every value a widget can set is one the scene loader accepts.
+struct QualityWidget {
+  enum Kind { checkbox, slider, drag } kind = checkbox;
+  bool integer = false;
+  double lo = 0.0, hi = 0.0;  // slider: both ends; drag: lo (and hi = the type's largest)
+  bool log = false;
+};
+QualityWidget quality_widget(const Field<Quality>& f);
 
 // The scene parameters' current values as GLSL declarations with their
 // annotations, ready to paste back into the map file.
