@@ -15,6 +15,7 @@
 #include "suite/outcome.h"
 #include "cli/common_flags.h"
 #include "cli/exit_codes.h"
+#include "core/format.h"
 #include "core/error.h"
 #include "core/version.h"
 #include "io/compare.h"
@@ -181,14 +182,9 @@ std::string psnr_text(const CompareMetrics& m) {
 }
 
 std::string value_text(Metric metric, double v) {
-  char buf[40];
-  if (metric == Metric::psnr) {
-    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    std::snprintf(buf, sizeof buf, "%.2f dB", v);
-  } else {
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-  }
-  return buf;
+  if (metric != Metric::psnr) return printf_number("%.6g", v);
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  return printf_number("%.2f dB", v);
 }
 
 void print_text(const CompareArgs& a, const Image& ia, const CompareMetrics& m, const Verdict& v) {

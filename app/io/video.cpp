@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "core/format.h"
 #include "core/error.h"
 
 
@@ -82,8 +83,7 @@ bool encode_video(const VideoJob& job) {
   const fs::path tmp = through ? job.output : temp_path_for(job.output, ::getpid(), true);
   std::error_code mk;
   if (!job.output.parent_path().empty()) fs::create_directories(job.output.parent_path(), mk);
-  char fps[64];
-  std::snprintf(fps, sizeof fps, "%.17g", job.fps);
+  const std::string fps = printf_number("%.17g", job.fps);  // exact: ffmpeg reads the rate back
   // yuv420p: what players accept; it needs even sizes, hence the pad.
   std::vector<std::string> args = {job.ffmpeg.string(), "-hide_banner", "-loglevel", "error", "-nostdin", "-y",
                                    "-protocol_whitelist", "file", "-framerate", fps, "-start_number",

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "core/format.h"
 #include "gl/gl.h"
 
 namespace ms {
@@ -11,11 +12,7 @@ namespace {
 
 constexpr int kProbeN = 64;  // sdf_shaders/bounds_probe.glsl's kBoundsProbeN
 
-std::string num(float v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
+std::string num(float v) { return printf_number("%.3g", v); }
 
 // The caller's GL state (the viewer draws on afterwards).
 struct SavedState {
