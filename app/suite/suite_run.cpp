@@ -10,6 +10,7 @@
 
 #include "bench/clock.h"
 #include "bench/stats.h"
+#include "core/format.h"
 #include "suite/suite_gl.h"
 #include "suite/suite_report.h"
 #include "gl/context.h"
@@ -135,11 +136,7 @@ void check_time(Gl& gl, const Suite& suite, const PreparedCase& pc, const Prepar
   }
   FrameTime ft{summarize(case_all).median, summarize(cal_all).median, summarize(ratios).median, cpu ? "cpu" : "wall"};
   r.frame_time = ft;
-  auto two = [](double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.2f", v);
-    return std::string(buf);
-  };
+  auto two = [](double v) { return printf_number("%.2f", v); };
   const std::string what = "frame time " + two(ft.ratio) + "x " + suite.calibration + "'s (" + two(ft.case_ms) +
                            " ms vs " + two(ft.calibration_ms) + " ms of " + ft.clock + " time)";
   if (ft.ratio > b.max_ratio)
