@@ -32,6 +32,15 @@ std::string joined(const std::vector<std::string>& names) {
 
 }  // namespace
 
+void fail_not_one_of(const std::string& value, const std::vector<std::string>& names, const std::string& flag) {
+  std::vector<std::string_view> views(names.begin(), names.end());
+  fail_input("'" + value + "' is not one of " + joined(names), {}, 0, flag, did_you_mean(value, views));
+}
+
+void check_one_of(const std::string& value, const std::vector<std::string>& names, const std::string& flag) {
+  if (std::find(names.begin(), names.end(), value) == names.end()) fail_not_one_of(value, names, flag);
+}
+
 CLI::Validator one_of(std::vector<std::string> names) {
   const std::string desc = "{" + joined(names) + "}";
   return CLI::Validator(

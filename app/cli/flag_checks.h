@@ -16,6 +16,12 @@ extern const std::vector<std::string> kEffectNames;   // what --disable takes
 
 // A value from `names`, with a did-you-mean for a near miss.
 CLI::Validator one_of(std::vector<std::string> names);
+// one_of()'s check for a value that arrives without CLI11 (a --jobs
+// line's): throws bad_input naming `flag`, with the same message.
+void check_one_of(const std::string& value, const std::vector<std::string>& names, const std::string& flag);
+// That error, for a value known not to be one of `names`.
+[[noreturn]] void fail_not_one_of(const std::string& value, const std::vector<std::string>& names,
+                                  const std::string& flag);
 // Not the empty string (`--frames ''` is a mistake, not "no frames").
 CLI::Validator not_empty();
 // A time in seconds: finite and within a 32-bit float, as the scene file's.

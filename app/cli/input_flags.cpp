@@ -29,12 +29,7 @@ DisabledEffects parse_disabled(const std::vector<std::string>& names) {
     else if (n == "ao") d.ao = true;
     else if (n == "checker-filter") d.checker_filter = true;
     else if (n == "bloom") d.bloom = true;
-    else {
-      std::vector<std::string_view> views(kEffectNames.begin(), kEffectNames.end());
-      std::string list;
-      for (const auto& e : kEffectNames) list += (list.empty() ? "" : ", ") + e;
-      fail_input("'" + n + "' is not one of " + list, {}, 0, "--disable", did_you_mean(n, views));
-    }
+    else fail_not_one_of(n, kEffectNames, "--disable");
   }
   return d;
 }
@@ -87,8 +82,7 @@ std::vector<fs::path> parse_allow_include(const std::vector<std::string>& flags)
 MissingMedia parse_missing_media(const std::string& text) {
   for (size_t i = 0; i < kMissingMediaNames.size(); ++i)
     if (text == kMissingMediaNames[i]) return static_cast<MissingMedia>(i);
-  std::vector<std::string_view> views(kMissingMediaNames.begin(), kMissingMediaNames.end());
-  fail_input("'" + text + "' is not one of error, noise, black", {}, 0, "--missing-media", did_you_mean(text, views));
+  fail_not_one_of(text, kMissingMediaNames, "--missing-media");
 }
 
 NamedTexture parse_texture_flag(const std::string& text, int unnamed_before) {

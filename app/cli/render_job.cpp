@@ -1,7 +1,6 @@
 #include "cli/render_job.h"
 
 #include <cmath>
-#include <string_view>
 
 #include "cli/flag_checks.h"
 #include "cli/input_flags.h"
@@ -12,25 +11,9 @@
 #include "pipeline/shader_dir.h"
 #include "render/aov.h"
 #include "scene/quality.h"
-#include "scene/suggest.h"
 
 namespace ms {
 namespace fs = std::filesystem;
-
-namespace {
-
-// The flags' validators run on the command line; a --jobs line arrives
-// without them, so every named value is checked again here.
-void check_one_of(const std::string& value, const std::vector<std::string>& names, const std::string& flag) {
-  std::vector<std::string_view> views(names.begin(), names.end());
-  for (const auto& n : names)
-    if (n == value) return;
-  std::string list;
-  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-  fail_input("'" + value + "' is not one of " + list, {}, 0, flag, did_you_mean(value, views));
-}
-
-}  // namespace
 
 FrameJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::path& output) {
   FrameJob job;

@@ -64,12 +64,10 @@ class FramePrograms {
 
   Dispatch dispatch() const;  // fragment or compute, as chosen
   PassGraph& graph() { return *graph_; }
-  const Program& post() const { return *post_; }
-  SceneDrawer& drawer() { return *drawer_; }
-  BloomStage* bloom() const { return bloom_.get(); }
-  FrameParams with_bloom(FrameParams fp) const;
 
  private:
+  FrameParams with_bloom(FrameParams fp) const;  // fp.bloom: this job's stage
+
   const Context& ctx_;
   std::unique_ptr<PassGraph> graph_;
   std::shared_ptr<const Program> post_;
@@ -105,9 +103,6 @@ class FrameSession {
   Still read(bool aovs) const { return job_->read(aovs); }
   Still draw(const StillFrame& f) { return job_->draw(f); }
   PassGraph& graph() { return job_->graph(); }
-  const Program& post() const { return job_->post(); }
-  SceneDrawer& drawer() { return job_->drawer(); }
-  BloomStage* bloom() const { return job_->bloom(); }
 
  private:
   std::unique_ptr<Context> context_;
