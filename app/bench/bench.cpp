@@ -72,7 +72,7 @@ BenchResult run_bench(FrameSession& session, const PreparedFrame& p, const Scene
                       const ShaderSource* counting, const BenchSettings& s) {
   check_bench_settings(s);
   const Context& ctx = session.context();  // made by the caller, with its backend
-  check_frame_size(ctx.info(), s.width, s.height, 6);  // the counting pass's AOV targets
+  check_frame_size(ctx.info(), s.width, s.height, frame_targets(true));  // the counting pass's AOV targets
   BenchResult r;
   r.backend = ctx.backend();
   r.gl_renderer = ctx.info().renderer;

@@ -50,7 +50,7 @@ std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector
 // (AssembleOptions::allow_include). Throws bad_input naming the flag.
 std::vector<std::filesystem::path> parse_allow_include(const std::vector<std::string>& flags);
 
-// The assembler's options from the flags bench, sweep and sequences share:
+// The assembler's options from sweep's flags (it loads no FrameJob):
 // --shader-dir, --allow-include, --no-specialize (otherwise folded to the
 // scene; animated values stay uniforms) and the --uniform values.
 AssembleOptions assemble_options(const std::string& shader_dir, const std::vector<std::string>& allow_include,

@@ -109,7 +109,7 @@ PreparedCase prepare_case(const Suite& suite, const SuiteCase& c, const fs::path
       fp.height = in.scene.render.height;
     }
     fp.exposure = in.scene.render.exposure;
-    pc.fps = in.shadertoy ? in.scene.shadertoy.fps : kSceneFps;  // as render's still
+    pc.fps = still_fps(job, in);  // as render's still
     if (c.cost) {
       AssembleOptions count_opts = job.assemble_options();
       for (const auto& d : aov_defines()) count_opts.defines.push_back(d);

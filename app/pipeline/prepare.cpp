@@ -33,6 +33,10 @@ PreparedFrame prepare(const FrameJob& job, bool display) {
   return p;
 }
 
+double still_fps(const FrameJob& job, const LoadedInput& in) {
+  return in.shadertoy || job.fps ? in.scene.shadertoy.fps : kSceneFps;
+}
+
 int buffer_targets(const LoadedInput& in) { return 2 * (static_cast<int>(in.passes.size()) - 1); }
 
 }  // namespace ms

@@ -29,6 +29,11 @@ PreparedFrame prepare(const FrameJob& job, bool display);
 // four with AOVs (render/frame.h).
 inline int frame_targets(bool aovs) { return aovs ? 6 : 2; }
 
+// The frame rate a still's frame number is counted at, as Shadertoy at
+// 1 s has drawn 60: the job's fps (prepare() made it the scene's), else a
+// shader's own, else kSceneFps. render's stills and test's cases alike.
+double still_fps(const FrameJob& job, const LoadedInput& in);
+
 // Each buffer pass's two textures: what a graph of these passes holds
 // across frames on top of frame_targets().
 int buffer_targets(const LoadedInput& in);

@@ -54,7 +54,7 @@ StillClock still_clock(const FrameJob& job, const LoadedInput& in) {
   const Scene& scene = in.scene;
   StillClock c;
   c.time = job.time ? *job.time : scene.render.time;
-  c.fps = in.shadertoy || job.fps ? scene.shadertoy.fps : kSceneFps;
+  c.fps = still_fps(job, in);
   c.frame = job.frame.value_or(still_frame_number(c.time, c.fps));
   if (in.stateful() && c.frame != still_frame_number(c.time, c.fps))
     fail_input("--frame " + std::to_string(c.frame) + " conflicts with a shader that has buffers: its still replays "
