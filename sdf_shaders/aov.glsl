@@ -8,6 +8,9 @@
 #ifndef AOV_OUTPUTS
 #define AOV_OUTPUTS 0          // 1: main.frag also writes outGeom, outMisc, outCost
 #endif
+#ifndef MS_COST_PRIMS
+#define MS_COST_PRIMS 0        // 1: the sdf_evals output counts a scene graph's primitives instead
+#endif
 #ifndef DEBUG_VIEW
 #define DEBUG_VIEW 0           // 0 off; 1 steps, 2 normals, 3 depth, 4 AO, 5 shadow, 6 material id
 #endif
@@ -25,10 +28,13 @@
 // signatures must not change). Reset by main() for each sample.
 int msSdfEvals = 0;      // every map() call: trace, normals, shadow, AO, reflections
 int msShadowSteps = 0;   // shadow-ray steps over all lights and bounces
+int msPrimEvals = 0;     // a scene graph's primitives evaluated, over every map() call
 #define MS_COUNT_SDF(n) msSdfEvals += (n)
+#define MS_COUNT_PRIMS(n) msPrimEvals += (n)
 #define MS_COUNT_SHADOW_STEP() ++msShadowSteps
 #else
 #define MS_COUNT_SDF(n)
+#define MS_COUNT_PRIMS(n)
 #define MS_COUNT_SHADOW_STEP()
 #endif
 

@@ -232,8 +232,13 @@ void main() {
   outColor = vec4(max(c, vec3(0.0)), msPrimary.hit ? 1.0 : 0.0);
   outGeom = vec4(nonFinite ? uintBitsToFloat(0x7fc00000u) : msPrimary.depth, msPrimary.n);
   outMisc = vec4(float(primarySteps), float(msPrimary.mat), msPrimary.shadow, msPrimary.ao);
+#if MS_COST_PRIMS  // bench's second counting pass of a graph scene: primitives instead of map() calls
+  outCost = vec4(float(msShadowSteps), float(msPrimary.reflSteps), float(msPrimEvals),
+                 msPrimary.capped ? 1.0 : 0.0);
+#else
   outCost = vec4(float(msShadowSteps), float(msPrimary.reflSteps), float(msSdfEvals),
                  msPrimary.capped ? 1.0 : 0.0);
+#endif
 #elif FUSED_POST
   outColor = nonFinite ? nonFiniteOutput() : vec4(outputColor(max(c, vec3(0.0)), uExposure), 1.0);
 #else

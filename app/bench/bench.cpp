@@ -55,6 +55,18 @@ BenchCost measure_cost(const Image& aovs) {
   return c;
 }
 
+void count_graph_cost(FramePrograms& job, const PreparedFrame& p, const Scene& posed, const BenchSettings& s,
+                      AssembleOptions count_opts, BenchResult& r) {
+  count_opts.defines.push_back({"MS_COST_PRIMS", "1"});
+  FrameParams fp = p.fp;
+  fp.width = s.width;
+  fp.height = s.height;
+  r.primitive_evals = count_frame_cost(job, assemble_scene(posed, count_opts), posed, s.time, fp).sdf_evals;
+  const GraphField* f = job.field();
+  r.graph_eval = !f ? "inline" : f->summary().empty() ? "interpreter" : "interpreter, pruned: " + f->summary();
+  r.prune_ms = f ? f->build_ms() : 0.0;
+}
+
 BenchCost count_frame_cost(FramePrograms& job, const ShaderSource& counting, const Scene& posed, float time,
                            FrameParams fp) {
   fp.spp = 1;

@@ -107,6 +107,11 @@ struct BenchResult {
   // a graph of one pass: the frame's wall time, no second frame drawn.
   std::vector<PassTiming> passes;
   bool has_cost = false;  // an SDF scene: its counting pass ran
+  // A graph scene: primitives evaluated per pixel over every map() call
+  // (a second counting pass), the pruning pass's time and its grid.
+  std::optional<CountStats> primitive_evals;
+  double prune_ms = 0.0;
+  std::string graph_eval;  // "inline", "interpreter" or "interpreter, pruned: grid ..."
   BenchCost cost;
 };
 
@@ -120,6 +125,12 @@ void check_bench_settings(const BenchSettings& s);
 // sequence's) drawn by `session` (its context made), `posed` at s.time,
 // then each pass on its own, and, given `counting` (the scene assembled
 // with AOV_OUTPUTS 1), counts its steps.
+// A graph scene's figures (BenchResult::primitive_evals, prune_ms,
+// graph_eval): a second counting pass that counts primitives, with
+// `count_opts` (the counting pass's options).
+void count_graph_cost(FramePrograms& job, const PreparedFrame& p, const Scene& posed, const BenchSettings& s,
+                      AssembleOptions count_opts, BenchResult& r);
+
 BenchResult run_bench(FrameSession& session, const PreparedFrame& p, const Scene& posed, const ShaderSource* counting,
                       const BenchSettings& s);
 

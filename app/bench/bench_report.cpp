@@ -65,6 +65,12 @@ std::string bench_json(const BenchSubject& subject, const BenchSettings& s, cons
                {"step_cap_fraction", c.step_cap_fraction},
                {"hit_fraction", c.hit_fraction},
                {"nonfinite_pixels", c.nonfinite_pixels}};
+  if (r.primitive_evals) {  // a graph scene's (docs/scene-graph.md); absent for a map()
+    j["cost"]["primitive_evals"] = to_json(*r.primitive_evals);
+    j["graph"] = {{"eval", r.graph_eval},
+                  {"prune_ms", r.prune_ms},
+                  {"primitives_per_map_call", c.sdf_evals.mean > 0 ? r.primitive_evals->mean / c.sdf_evals.mean : 0.0}};
+  }
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
@@ -126,11 +132,17 @@ std::string bench_table(const BenchSubject& subject, const BenchSettings& s, con
   row("shadow steps", c.shadow_steps);
   row("reflection steps", c.reflection_steps);
   row("sdf evaluations", c.sdf_evals);
+  if (r.primitive_evals) row("primitive evals", *r.primitive_evals);
   std::snprintf(buf, sizeof buf, "  step-cap pixels    %13.3f%%\n  hit pixels         %13.1f%%\n",
                 100.0 * c.step_cap_fraction, 100.0 * c.hit_fraction);
   out += buf;
   std::snprintf(buf, sizeof buf, "  NaN/Inf pixels     %13lld\n", c.nonfinite_pixels);
   out += buf;
+  if (r.primitive_evals) {
+    std::snprintf(buf, sizeof buf, "\ngraph     %s; %.1f primitives a map() call\n", r.graph_eval.c_str(),
+                  c.sdf_evals.mean > 0 ? r.primitive_evals->mean / c.sdf_evals.mean : 0.0);
+    out += buf;
+  }
   return out;
 }
 

@@ -48,6 +48,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
   cmd->add_flag("--strict", a.strict,
                 "Fail (exit 1) when any pixel of the counting pass has a NaN or Inf (colour or AOV); "
                 "the report is still printed");
+  add_graph_flags(cmd, a.graph_eval, a.no_prune);
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Time the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   add_dispatch_flag(cmd, a.dispatch,
@@ -109,7 +110,8 @@ int run_bench_command(const BenchArgs& a) {
   session.context(job.backend);
   // Keyframed values at the benchmarked time, as render poses them.
   const Scene posed = animated(in.scene, s.time);
-  const BenchResult r = run_bench(session, p, posed, counting ? &*counting : nullptr, s);
+  BenchResult r = run_bench(session, p, posed, counting ? &*counting : nullptr, s);
+  if (in.scene.graph) count_graph_cost(session.job(), p, posed, s, count_opts, r);  // bench/bench.h
   if (!in.shadertoy) {
     const std::string bw = bounds_warning(a.input, check_bounds(posed, p.opts, [&](const Program& prog) {  // render/bounds_check.h
       set_scene_uniforms(prog, posed, s.width, s.height, s.time, 0);

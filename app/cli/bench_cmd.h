@@ -1,6 +1,7 @@
 // `marchstudio bench SCENE`: frame times, startup times and per-pixel cost
 // of a scene, as a table or one JSON object (docs/bench.md).
 #pragma once
+#include "shader/graph_interp.h"
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,8 @@ struct BenchArgs {
   std::vector<std::string> disable;
   std::string preset;      // empty: the scene's [quality] preset
   bool no_specialize = false;  // time the generic shader (docs/specialization.md)
+  GraphEval graph_eval = GraphEval::auto_;  // --graph-eval
+  bool no_prune = false;                   // --no-prune
   bool strict = false;     // any NaN/Inf pixel in the counting pass is an error (exit 1)
   std::vector<std::string> allow_include;  // more directories #include may read
   ShadertoyOptions shadertoy;  // --media-dir, --missing-media, --mouse

@@ -50,6 +50,14 @@ CLI::Option* add_dispatch_flag(CLI::App* cmd, Dispatch& dispatch, const std::str
   return add_enum_flag(cmd, "--dispatch", dispatch, parse_dispatch, choices, description);
 }
 
+void add_graph_flags(CLI::App* cmd, GraphEval& eval, bool& no_prune) {
+  add_enum_flag(cmd, "--graph-eval", eval, parse_graph_eval, "inline|interpreter|auto",
+                "A graph scene's map(): straight GLSL, the interpreter over node buffers, or by size (default; "
+                "docs/scene-graph.md)");
+  cmd->add_flag("--no-prune", no_prune,
+                "Evaluate a graph scene's whole graph everywhere: the brute-force reference of the pruned grid");
+}
+
 CLI::Option* add_define_flag(CLI::App* cmd, std::vector<std::pair<std::string, std::string>>& defines) {
   return cmd->add_option_function<std::vector<std::string>>(
       "-D,--define",

@@ -48,6 +48,9 @@ CLI::Option* add_enum_flag(CLI::App* cmd, const std::string& name, E& value, E (
           },
           choices));
 }
+// --graph-eval NAME and --no-prune: how a graph scene's map() is evaluated
+// (docs/scene-graph.md).
+void add_graph_flags(CLI::App* cmd, GraphEval& eval, bool& no_prune);
 // --dispatch NAME, typed as it is read (cli/dispatch_flag.h's
 // parse_dispatch, whose one-line error a bad name gets); --help lists
 // `choices`.

@@ -13,6 +13,13 @@ Dispatch parse_dispatch(const std::string& name) {
   fail_input("--dispatch '" + name + "' is not one of fragment, compute, auto", {}, 0, "--dispatch");
 }
 
+GraphEval parse_graph_eval(const std::string& name) {
+  if (name == "inline") return GraphEval::inline_;
+  if (name == "interpreter") return GraphEval::interpreter;
+  if (name == "auto") return GraphEval::auto_;
+  fail_input("--graph-eval '" + name + "' is not one of inline, interpreter, auto", {}, 0, "--graph-eval");
+}
+
 std::optional<ComputeGroup> parse_compute_group(const std::string& text) {
   if (text.empty()) return std::nullopt;
   const std::optional<ComputeGroup> g = parse_group_name(text);

@@ -2,16 +2,19 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
 
 #include "core/error.h"
 #include "io/image_io.h"
+#include "scene/graph_scene.h"
+#include "scene/load.h"
 #include "scene/toml_read.h"  // printable(): one line per attribute
 
 namespace ms {
 
 CLI::App* add_info_command(CLI::App& app, InfoArgs& a) {
-  CLI::App* cmd = app.add_subcommand("info", "Print an image's size, channels, metadata and fingerprint");
-  cmd->add_option("files", a.files, "Image files (PNG, JPEG, TIFF, EXR, ...)")->required();
+  CLI::App* cmd = app.add_subcommand("info", "Print an image's size, channels, metadata and fingerprint, or a scene's source, graph, bounds and Lipschitz factor");
+  cmd->add_option("files", a.files, "Image files (PNG, JPEG, TIFF, EXR, ...) or scene files (.toml)")->required();
   cmd->add_flag("--fingerprint", a.fingerprint_only,
                 "Print only each file's fingerprint (exit 1 when one has none)");
   return cmd;
@@ -20,6 +23,10 @@ CLI::App* add_info_command(CLI::App& app, InfoArgs& a) {
 int run_info(const InfoArgs& a) {
   int status = 0;
   for (const std::string& f : a.files) {
+    if (!a.fingerprint_only && std::filesystem::path(f).extension() == ".toml") {
+      for (const std::string& line : scene_summary(load_scene(f))) std::printf("%s\n", line.c_str());
+      continue;
+    }
     const ImageInfo info = read_image_info(f);
     if (a.fingerprint_only) {
       if (info.fingerprint.empty()) {

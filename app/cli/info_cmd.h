@@ -2,6 +2,8 @@
 // text attributes, and the fingerprint of what made it (pipeline/fingerprint.h),
 // read from the header only. `--fingerprint` prints just the fingerprint,
 // for scripts; a file without one is exit 1 there. Bad files: exit 2.
+// A .toml is a scene: its source, graph counts, box and bounds
+// (scene/graph_scene.h scene_summary).
 #pragma once
 #include <string>
 #include <vector>

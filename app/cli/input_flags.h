@@ -70,6 +70,8 @@ void set_input_fields(FrameJob& job, const Args& a) {
   job.set = a.overrides.set;
   job.uniforms = a.overrides.uniforms;
   job.shadertoy = a.shadertoy;
+  job.graph_eval = a.graph_eval;
+  job.prune = !a.no_prune;
 }
 
 }  // namespace ms

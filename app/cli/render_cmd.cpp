@@ -91,6 +91,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
       ->check(one_of(kAovNames));
   cmd->add_flag("-v,--verbose", a.verbose,
                 "Print the backend, GL renderer, the shader dir and image module used, and timings");
+  add_graph_flags(cmd, a.graph_eval, a.no_prune);
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Build the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   cmd->add_flag("--print-shader", a.print_shader,

@@ -1,6 +1,7 @@
 // `marchstudio render`: a scene (.toml) or a Shadertoy shader (.glsl) to an
 // image file, headless.
 #pragma once
+#include "shader/graph_interp.h"
 #include <optional>
 #include <string>
 #include <utility>
@@ -55,6 +56,8 @@ struct RenderArgs {
   bool watch = false;       // re-render on every save of the scene or its includes (live/render_watch.h)
   std::vector<std::string> aov;      // AOVs to add to an .exr: depth, normal, steps, material, shadow, ao, cost, hit
   bool no_specialize = false;  // build the generic shader (docs/specialization.md)
+  GraphEval graph_eval = GraphEval::auto_;  // --graph-eval
+  bool no_prune = false;                   // --no-prune
   bool print_shader = false;   // print the assembled scene shader and exit
   bool strict = false;         // any NaN/Inf pixel (colour or AOV) is an error: exit 1, nothing written
   std::vector<std::string> allow_include;  // more directories #include may read (preprocess/preprocess.h)

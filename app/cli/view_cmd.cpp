@@ -164,6 +164,7 @@ int run_view(const ViewArgs& a) {
   // Folded as `render` is; what the panel drags stays a uniform while it is
   // dragged (live/live_values.h).
   o.assemble.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
+  o.assemble.graph_eval = GraphEval::inline_;  // the viewer binds no node buffers yet (docs/scene-graph.md)
   // Made the initializers at every build: the panel's sliders start there.
   o.assemble.uniforms = a.overrides.uniforms;
   const fs::path input = a.input;

@@ -61,6 +61,9 @@ struct FrameJob {
   ShadertoyOptions shadertoy;
   Dispatch dispatch = Dispatch::fragment;  // automatic: pipeline/dispatch_probe.h chooses
   std::optional<ComputeGroup> compute_group;  // none: 8x8, or auto's measured group
+  GraphEval graph_eval = GraphEval::auto_;   // a graph scene's map(): --graph-eval
+  bool prune = true;                         // --no-prune: the whole graph everywhere
+  float cell_size = 0.0f;                    // the pruning grid's cells; 0: from the node count
   bool verbose = false;
 
   bool aovs() const { return !aov_channels.empty(); }

@@ -15,6 +15,14 @@ FramePrograms::FramePrograms(const Context& ctx, ProgramCache& cache, const Prep
   post_ = cache.get(fullscreen_vertex_source(), p.post_src);
   bloom_ = make_bloom_stage(p.in, p.display, p.opts, cache);  // pipeline/bloom_setup.h; null without bloom
   drawer_ = std::make_unique<SceneDrawer>(ctx, *graph_, Dispatch::fragment);
+  if (p.graph && p.graph->plan.interpret) {
+    if (p.graph->plan.prune && !p.graph->plan.keep_all) prune_ = std::make_unique<Program>(Program::Compute{}, p.prune_src);
+    field_ = std::make_unique<GraphField>(p.graph->buffers, p.graph->plan, prune_.get());
+  }
+}
+
+void FramePrograms::bind_field() const {
+  if (field_) field_->bind();
 }
 
 FramePrograms::~FramePrograms() = default;
@@ -29,6 +37,7 @@ DispatchChoice FramePrograms::choose(Dispatch requested, std::optional<ComputeGr
                                      bool verbose) {
   StillFrame f = probe;
   f.params = with_bloom(f.params);  // the probe draws the job's frame, bloom included
+  bind_field();
   const DispatchChoice c = choose_dispatch(requested, *graph_, *post_, f, ctx_, group, verbose);
   if (c.dispatch == Dispatch::compute) drawer_ = std::make_unique<SceneDrawer>(ctx_, *graph_, c.dispatch, c.group);
   return c;
@@ -40,16 +49,19 @@ FrameParams FramePrograms::with_bloom(FrameParams fp) const {
 }
 
 void FramePrograms::submit(const FrameInputs& in, const FrameParams& fp) {
+  bind_field();
   drawer_->draw(*graph_, *post_, in, with_bloom(fp));
 }
 
 void FramePrograms::submit_still(const StillFrame& f) {
   StillFrame g = f;
   g.params = with_bloom(f.params);
+  bind_field();
   drawer_->draw_still(*graph_, *post_, g);
 }
 
 void FramePrograms::draw_program(const Program& main, const UniformFn& set_uniforms, const FrameParams& fp) {
+  bind_field();
   drawer_->draw_program(main, set_uniforms, *post_, with_bloom(fp));
 }
 

@@ -22,6 +22,7 @@
 #include "render/bloom.h"
 #include "render/compute_frame.h"
 #include "render/graph.h"
+#include "render/graph_field.h"
 #include "render/program_cache.h"
 #include "render/scene_drawer.h"
 #include "render/still.h"
@@ -64,6 +65,8 @@ class FramePrograms {
 
   Dispatch dispatch() const;  // fragment or compute, as chosen
   PassGraph& graph() { return *graph_; }
+  // A graph scene's node buffers and pruned grid; null for a map() scene or inline code.
+  const GraphField* field() const { return field_.get(); }
 
  private:
   FrameParams with_bloom(FrameParams fp) const;  // fp.bloom: this job's stage
@@ -73,6 +76,9 @@ class FramePrograms {
   std::shared_ptr<const Program> post_;
   std::unique_ptr<BloomStage> bloom_;
   std::unique_ptr<SceneDrawer> drawer_;
+  std::unique_ptr<Program> prune_;
+  std::unique_ptr<GraphField> field_;
+  void bind_field() const;  // before each draw: another job's buffers may be bound
 };
 
 class FrameSession {

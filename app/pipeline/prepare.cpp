@@ -11,6 +11,9 @@ AssembleOptions FrameJob::assemble_options() const {
     for (const auto& d : aov_defines()) opts.defines.push_back(d);
   opts.specialize = specialize;
   opts.uniforms = uniforms;
+  opts.graph_eval = graph_eval;
+  opts.prune = prune;
+  opts.cell_size = cell_size;
   return opts;
 }
 
@@ -30,6 +33,10 @@ PreparedFrame prepare(const FrameJob& job, bool display) {
   p.fp.aovs = job.aovs();
   p.fp.tile_size = job.tile_size;
   p.post_src = assemble_still(p.in, p.opts, p.fp.spp, job.aovs(), display, p.fp.fused_post);
+  if (p.in.scene.graph) {
+    p.graph = std::make_shared<const GraphParts>(graph_parts(p.in.scene, p.opts));
+    if (p.graph->plan.prune && !p.graph->plan.keep_all) p.prune_src = assemble_graph_prune(p.in.scene, *p.graph, p.opts);
+  }
   return p;
 }
 

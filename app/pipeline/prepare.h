@@ -6,6 +6,8 @@
 //   PreparedFrame p = prepare(job, /*display=*/true);  // throws ms::Error
 //   session.load(p);                                     // pipeline/frame_session.h
 #pragma once
+#include <memory>
+
 #include "pipeline/frame_job.h"
 #include "pipeline/input.h"
 #include "render/frame.h"
@@ -19,6 +21,10 @@ struct PreparedFrame {
   FrameParams fp;        // size, samples, AOVs, fused post and tile size; exposure and bloom per frame
   ShaderSource post_src;
   bool display = true;   // stored as 8-bit display values (PNG, JPEG, TIFF), not float (EXR)
+  // A graph scene: how map() is evaluated, the interpreter's buffers and
+  // the pruning pass's source (render/graph_field.h builds the grid).
+  std::shared_ptr<const GraphParts> graph;
+  ShaderSource prune_src;
 };
 
 // `display`: whether the output is a display format. A sequence's

@@ -140,9 +140,12 @@ void render_still_job(const FrameJob& job, FrameSession& session) {
   // --dispatch compute: the same scene shader as a compute pass, compiled once (render/compute_frame.h).
   if (job.dispatch != Dispatch::automatic) session.choose(job.dispatch, job.compute_group, still, job.verbose);
   const double t_compile = clock.lap();
-  if (job.verbose)
+  if (job.verbose) {
     std::fprintf(stderr, "marchstudio: programs: %ld compiled, %ld from the cache\n",
                  session.cache().misses() - compiled_before, session.cache().hits() - reused_before);
+    if (const GraphField* f = session.job().field(); f && !f->summary().empty())
+      std::fprintf(stderr, "marchstudio: graph: %s\n", f->summary().c_str());
+  }
   report_input_warnings(unbound_warnings(session.graph()), input.string(), job.strict);
   if (!in.shadertoy)  // does [bounds] hold what map() draws? Before anything is written (pipeline/bounds_report.h)
     session.bounds().check(input.string(), posed, p.opts, [&](const Program& prog) {

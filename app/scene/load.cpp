@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "scene/animation.h"
 #include "scene/load_geometry.h"
+#include "scene/graph_scene.h"
 #include "scene/load_post.h"
 #include "scene/overrides.h"
 #include "scene/quality.h"
@@ -230,27 +231,28 @@ void read_environment(const Reader& r, const toml::table& t, const fs::path& dis
   sky.environment = resolved;
 }
 
-// Exactly one of scene.map (an SDF scene) and scene.shadertoy (a Shadertoy
-// shader given size, time and spp by this file).
+// Exactly one of scene.map (an SDF scene), scene.graph (a CSG graph) and
+// scene.shadertoy (a Shadertoy shader given size, time and spp by this file).
 void resolve_sources(const Reader& r, const toml::table* t, const fs::path& display_path, Scene& scene) {
-  const bool has_map = t && t->contains("map"), has_shadertoy = t && t->contains("shadertoy");
-  if (has_map && has_shadertoy)
-    r.fail(Reader::line_of(*t, "shadertoy"), "scene.shadertoy", "'scene.map' and 'scene.shadertoy' exclude each other",
-           "a scene is either an SDF map or a Shadertoy shader");
+  std::vector<std::string> given;
+  for (const char* k : {"map", "graph", "shadertoy"})
+    if (t && t->contains(k)) given.emplace_back(k);
+  if (given.size() > 1)
+    r.fail(Reader::line_of(*t, given[1]), "scene." + given[1],
+           "'scene." + given[0] + "' and 'scene." + given[1] + "' exclude each other",
+           "a scene is an SDF map, a CSG graph or a Shadertoy shader");
   if (scene.passes) {
-    if (has_map || has_shadertoy)
-      r.fail(Reader::line_of(*t, has_map ? "map" : "shadertoy"), has_map ? "scene.map" : "scene.shadertoy",
-             "[[passes]] name the shader's files: drop " + std::string(has_map ? "'scene.map'" : "'scene.shadertoy'"));
+    if (!given.empty())
+      r.fail(Reader::line_of(*t, given[0]), "scene." + given[0],
+             "[[passes]] name the shader's files: drop 'scene." + given[0] + "'");
     return;
   }
-  if (has_shadertoy) {
-    scene.shadertoy_file = resolve_glsl(r, *t, display_path, "shadertoy");
-    return;
-  }
-  if (!has_map)
+  if (given.empty())
     r.fail(t ? Reader::line_of(*t) : 0, "scene.map", "missing required key 'scene.map'",
-           "add map = \"<file>.glsl\" under [scene]: the GLSL file that defines vec2 map(vec3 p)");
-  scene.map_file = resolve_glsl(r, *t, display_path, "map");
+           "add map = \"<file>.glsl\" under [scene]: the GLSL file that defines vec2 map(vec3 p); or graph = \"<file>.json\"");
+  if (given[0] == "shadertoy") scene.shadertoy_file = resolve_glsl(r, *t, display_path, "shadertoy");
+  else if (given[0] == "graph") attach_graph(r, *t, display_path, scene);  // scene/graph_scene.h
+  else scene.map_file = resolve_glsl(r, *t, display_path, "map");
 }
 
 // A Shadertoy shader draws everything itself: of the scene file it takes

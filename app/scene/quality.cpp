@@ -56,6 +56,10 @@ Quality with_preset(const Quality& q, std::string_view name, const std::string& 
     std::visit([&](auto member) { out.*member = q.*member; }, f.member);
   }
   out.explicit_keys = q.explicit_keys;
+  if (q.lipschitz_derived && std::find(q.explicit_keys.begin(), q.explicit_keys.end(), "lipschitz") == q.explicit_keys.end()) {
+    out.lipschitz = q.lipschitz;  // the graph's bound, not a preset's guess
+    out.lipschitz_derived = true;
+  }
   return out;
 }
 

@@ -10,6 +10,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "scene/graph.h"
 #include "scene/project.h"
 
 namespace ms {
@@ -61,6 +62,7 @@ struct Quality {
   float hit_tolerance = 0.01f;  // hit when d < max(hit_epsilon, hit_tolerance * pixel footprint at t)
   float hit_epsilon = 1e-4f;    // absolute floor of the hit tolerance
   float lipschitz = 1.0f;       // the scene SDF's Lipschitz bound (step = d / L)
+  bool lipschitz_derived = false;  // lipschitz came from the scene graph: a preset keeps it
   float omega = 1.0f;           // over-relaxation of the primary/reflection march, [1, 2); 1: plain
   int shadow_steps = 64;
   int ao_taps = 5;
@@ -156,6 +158,9 @@ struct Scene {
   std::filesystem::path shadertoy_file;  // instead of map_file: a Shadertoy shader (.glsl or .json), resolved
   // Instead of both: the passes of a [[passes]] wrapper (docs/scene-format.md).
   std::shared_ptr<const ShaderProject> passes;
+  // Instead of map_file: a CSG graph ([scene] graph, docs/scene-graph.md).
+  std::shared_ptr<const SceneGraph> graph;
+  bool bounds_declared = false;    // [bounds] came from the file (else, with a graph, from its box)
   ShadertoySettings shadertoy;     // [shadertoy]: media, mouse, fps
   std::string name;
   Camera camera;

@@ -75,7 +75,7 @@ struct Schema {
   std::vector<std::string_view> top{"scene",  "camera", "render", "sky",       "quality",   "lights",
                                     "materials", "planes", "bounds", "animation", "shadertoy", "passes", "post"};
   std::vector<Section> sections{
-      {"scene", false, {"name", "map", "shadertoy"}},
+      {"scene", false, {"name", "map", "shadertoy", "graph"}},
       {"camera", false, keys_of(kCameraFields)},
       {"render", false, keys_of(kRenderFields, {"tonemap"})},
       {"sky", false, keys_of(kSkyFields, {"environment"})},

@@ -3,10 +3,13 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <set>
 #include <system_error>
 
 #include "core/error.h"
 #include "preprocess/glsl_scan.h"
+#include "scene/graph_vocab.h"
+#include "shader/graph_glsl.h"
 #include "shader/specialize.h"
 
 namespace ms {
@@ -75,6 +78,16 @@ std::string map_include_path(const Scene& scene, const std::vector<fs::path>& ro
   return s;
 }
 
+// The scene's map(): the map file's #include, or the graph's generated code.
+std::string map_code(const Scene& scene, const std::vector<fs::path>& roots, const AssembleOptions& opts) {
+  if (scene.graph) {
+    const GraphParts parts = graph_parts(scene, opts);
+    return parts.plan.interpret ? graph_map_interpreter(*scene.graph, parts.plan, parts.buffers)
+                                : graph_map_inline(*scene.graph);
+  }
+  return "#include \"" + map_include_path(scene, roots) + "\"\n";
+}
+
 PreprocessOptions library_options(const AssembleOptions& opts) {
   PreprocessOptions p;
   p.include_dirs = {opts.shader_dir};
@@ -94,11 +107,11 @@ PreprocessOptions scene_options(const Scene& scene, const AssembleOptions& opts)
 // includes, the pipeline (main.frag and its files) and the -D values. Only
 // the library files themselves are left out: they are included first, so
 // #pragma once skips them afterwards.
-std::string library_users(const std::string& map_path, const AssembleOptions& opts, PreprocessOptions popts) {
+std::string library_users(const std::string& map, const AssembleOptions& opts, PreprocessOptions popts) {
   popts.model_driver = false;  // every include, whatever the #ifs: the scan over-approximates
   const std::string marker = "// marchstudio: library users start here\n";
   const std::string root = "#include \"primitives.glsl\"\n#include \"operators.glsl\"\n#include \"noise.glsl\"\n" + marker +
-                           "#include \"" + map_path + "\"\n#include \"main.frag\"\n";
+                           map + "#include \"main.frag\"\n";
   std::string text = preprocess(root, "library scan (generated)", opts.shader_dir, popts).text;
   text.erase(0, text.find(marker));
   for (const auto& d : opts.defines) text += "\n" + d.second;
@@ -138,6 +151,31 @@ void define_tracer_geometry(std::string& root, const Scene& scene) {
 
 }  // namespace
 
+GraphParts graph_parts(const Scene& scene, const AssembleOptions& opts) {
+  GraphParts parts;
+  if (!scene.graph) return parts;
+  const GraphBox box = scene.bounds.kind == BoundsKind::box ? GraphBox{scene.bounds.min, scene.bounds.max}
+                                                            : scene.graph->root_node().box;
+  parts.plan = plan_graph_eval(*scene.graph, opts.graph_eval, opts.prune, box, opts.cell_size);
+  if (parts.plan.interpret) parts.buffers = graph_buffers(*scene.graph, parts.plan);
+  return parts;
+}
+
+ShaderSource assemble_graph_prune(const Scene& scene, const GraphParts& parts, const AssembleOptions& opts) {
+  std::string root = "#version 450 core\n#define MS_LIBRARY_SUBSET 1\n";
+  std::set<std::string> used;
+  for (const GraphNode& n : scene.graph->nodes)
+    used.insert(std::string(n.leaf ? graph_primitives()[static_cast<std::size_t>(n.fn)].name
+                                   : graph_operators()[static_cast<std::size_t>(n.fn)].name));
+  for (std::string name : used) {
+    for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    define(root, "USE_" + name, 1);
+  }
+  root += "#include \"common.glsl\"\n#include \"primitives.glsl\"\n#include \"operators.glsl\"\n";
+  root += graph_prune_source(*scene.graph, parts.plan, parts.buffers);
+  return preprocess(root, "graph pruning pass (generated)", opts.shader_dir, library_options(opts));
+}
+
 std::vector<fs::path> include_roots(const fs::path& scene_file, const AssembleOptions& opts) {
   std::error_code ec;
   fs::path dir = fs::absolute(scene_file, ec).parent_path();
@@ -148,7 +186,7 @@ std::vector<fs::path> include_roots(const fs::path& scene_file, const AssembleOp
 
 FeatureSet scene_features(const Scene& scene, const AssembleOptions& opts) {
   const PreprocessOptions popts = scene_options(scene, opts);
-  return derive_features(scene, library_users(map_include_path(scene, popts.roots), opts, popts));
+  return derive_features(scene, library_users(map_code(scene, popts.roots, opts), opts, popts));
 }
 
 ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts) {
@@ -160,7 +198,7 @@ ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts, con
   if (scene.materials.empty())
     fail_input("a scene needs at least one material", display_path(scene.file), 0, "materials");
   const PreprocessOptions popts = scene_options(scene, opts);
-  const std::string map_path = map_include_path(scene, popts.roots);
+  const std::string map = map_code(scene, popts.roots, opts);
   // [sky] environment is read later (render/environment.h): a medium, confined as one.
   if (!scene.sky.environment.empty())
     confine_media(scene.sky.environment, media_roots(scene.file, {}, opts.allow_include),
@@ -202,7 +240,7 @@ ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts, con
   root += "#include \"primitives.glsl\"\n";
   root += "#include \"operators.glsl\"\n";
   root += "#include \"noise.glsl\"\n";
-  root += "#include \"" + map_path + "\"\n";
+  root += map;
   root += "#include \"main.frag\"\n";
   ShaderSource src = preprocess(root, scene_display_name(scene) + ".frag (generated)", opts.shader_dir, popts);
   // Without it the driver would blame the library line that calls map().

@@ -10,6 +10,7 @@
 #include "scene/features.h"
 #include "scene/scene.h"
 #include "preprocess/preprocess.h"
+#include "shader/graph_interp.h"
 #include "shader/scene_params.h"
 #include "shader/specialize.h"
 
@@ -35,7 +36,22 @@ struct AssembleOptions {
   // uniform NAME (shader/scene_params.h), in the scene pass or in whichever
   // Shadertoy pass declares it; a name no pass declares is an error.
   std::vector<UniformValue> uniforms = {};  // (an initializer: no -Wmissing-field-initializers for AssembleOptions{a, b, c})
+  // A graph scene's map(): straight GLSL or the interpreter (--graph-eval),
+  // and with the interpreter the pruned grid unless --no-prune.
+  GraphEval graph_eval = GraphEval::auto_;
+  bool prune = true;
+  float cell_size = 0.0f;  // the pruning grid's cells; 0: from the node count
 };
+
+// How a graph scene's map() is evaluated, and the interpreter's buffers
+// (empty when inline). The grid covers the scene's [bounds] box.
+struct GraphParts {
+  GraphEvalPlan plan;
+  GraphBuffers buffers;
+};
+GraphParts graph_parts(const Scene& scene, const AssembleOptions& opts);
+// The pruning pass's compute shader (render/graph_field.h).
+ShaderSource assemble_graph_prune(const Scene& scene, const GraphParts& parts, const AssembleOptions& opts);
 
 // The directories includes of a scene whose file is `scene_file` may read:
 // its directory, opts.shader_dir and opts.allow_include.

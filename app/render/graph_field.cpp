@@ -1,0 +1,79 @@
+#include "render/graph_field.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+namespace ms {
+
+namespace {
+
+template <class T>
+void upload(GLuint buf, const std::vector<T>& data, std::size_t extra_bytes = 0) {
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf);
+  const std::size_t bytes = data.size() * sizeof(T) + extra_bytes;
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes > 0 ? bytes : 16), nullptr, GL_DYNAMIC_COPY);
+  if (!data.empty())
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data());
+}
+
+}  // namespace
+
+GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const Program* prune)
+    : plan_(plan), program_(b.program.size()) {
+  glGenBuffers(5, buffers_);
+  const std::size_t cells = plan.prune ? cell_count(plan) : 0, coarse = plan.prune ? coarse_cell_count(plan) : 0;
+  upload(buffers_[0], b.nodes);
+  upload(buffers_[1], b.floats);
+  upload(buffers_[2], b.program, (program_capacity(plan, b) - b.program.size()) * sizeof(std::uint32_t));
+  std::vector<std::uint32_t> all(std::max<std::size_t>(cells, 1) * 4, 0u);
+  for (std::size_t i = 0; plan.keep_all && i < cells; ++i) all[i * 4 + 1] = static_cast<std::uint32_t>(b.program.size());
+  upload(buffers_[3], all);
+  upload(buffers_[4], std::vector<std::uint32_t>(std::max<std::size_t>(coarse, 1) * 4, 0u));
+  bind();
+  if (!plan.prune || plan.keep_all || !prune) return;
+  const auto start = std::chrono::steady_clock::now();
+  glUseProgram(prune->id());
+  // Coarse cells first, then each fine cell from its coarse cell's list.
+  for (int level = 0; level < 2; ++level) {
+    prune->set("uLevel", level);
+    glDispatchCompute(static_cast<GLuint>(((level == 0 ? coarse : cells) + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+  std::vector<std::uint32_t> out(cells * 4);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[3]);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(out.size() * sizeof(std::uint32_t)), out.data());
+  build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  lengths_.resize(cells);
+  for (std::size_t i = 0; i < cells; ++i) {
+    lengths_[i] = out[i * 4 + 1];
+    overflowed_ += out[i * 4 + 3] == 1u;
+  }
+}
+
+std::string GraphField::summary() const {
+  if (plan_.keep_all)
+    return "grid " + std::to_string(plan_.dims.x) + "x" + std::to_string(plan_.dims.y) + "x" +
+           std::to_string(plan_.dims.z) + ", not pruned (--no-prune): every cell runs all " + std::to_string(program_) +
+           " instructions";
+  if (lengths_.empty()) return {};
+  double sum = 0.0;
+  for (unsigned n : lengths_) sum += n;
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "grid %dx%dx%d, pruning %.1f ms, mean list %.1f instructions (of %zu), %d cells kept their coarse list",
+                plan_.dims.x, plan_.dims.y, plan_.dims.z, build_ms_, sum / static_cast<double>(lengths_.size()),
+                program_, overflowed_);
+  return buf;
+}
+
+GraphField::~GraphField() { glDeleteBuffers(5, buffers_); }
+
+void GraphField::bind() const {
+  for (GLuint i = 0; i < 5; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3 + i, buffers_[i]);
+}
+
+}  // namespace ms

@@ -1,0 +1,48 @@
+// A graph scene's node buffers on the GPU, and the pruning pass that fills
+// its grid of cells (docs/scene-graph.md): per cell, the instructions of
+// the nodes that can change the field there, exactly. Built on the GPU
+// when the graph is loaded, coarse cells first, its time measured.
+//
+//   GraphField field(parts.buffers, parts.plan, &prune_program);
+//   field.bind();              // before each draw: binding points 3-7, as map() reads them
+//   field.build_ms();          // the pruning pass's time
+//   field.mean_list();         // instructions a cell keeps, on average
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gl/gl.h"
+
+#include "render/program.h"
+#include "shader/graph_interp.h"
+
+namespace ms {
+
+class GraphField {
+ public:
+  // `prune` is the compiled assemble_graph_prune() when plan.prune, else null.
+  GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const Program* prune);
+  ~GraphField();
+  GraphField(const GraphField&) = delete;
+  GraphField& operator=(const GraphField&) = delete;
+
+  void bind() const;
+  double build_ms() const { return build_ms_; }
+  // Over the cells: their list lengths (one that would overflow keeps its
+  // coarse cell's list), and how many overflowed.
+  const std::vector<unsigned>& list_lengths() const { return lengths_; }
+  int overflowed_cells() const { return overflowed_; }
+  // "grid 16x23x22, pruning 412.3 ms, mean list 23.4 instructions (of 1999), 3 cells kept their coarse list";
+  // "" without a grid.
+  std::string summary() const;
+
+ private:
+  GLuint buffers_[5] = {0, 0, 0, 0, 0};  // nodes, floats, program and lists, cells, coarse cells
+  double build_ms_ = 0.0;
+  std::vector<unsigned> lengths_;
+  int overflowed_ = 0;
+  GraphEvalPlan plan_;
+  std::size_t program_ = 0;
+};
+
+}  // namespace ms

@@ -1,0 +1,355 @@
+#include "scene/graph_build.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include "core/error.h"
+#include "io/input_file.h"
+#include "scene/graph_vocab.h"
+#include "scene/suggest.h"
+#include "scene/toml_read.h"
+
+namespace ms {
+
+namespace {
+
+// World to a node's local space: q = a * p + b, and its distances times s.
+struct Affine {
+  glm::mat3 a{1.0f};
+  glm::vec3 b{0.0f};
+  float s = 1.0f;
+};
+
+constexpr std::string_view kNodeKeys[] = {"sdf", "op", "children", "translate", "rotate", "scale", "matrix",
+                                          "material", "name"};
+
+// An operator waiting for its children, folded left as they arrive.
+struct Frame {
+  int value = -1;
+  int fn = -1;
+  Affine xf;
+  int material = 0;
+  std::vector<float> params;  // world units
+  int next_child = -1;
+  int acc = -1;               // the fold so far
+};
+
+class Builder {
+ public:
+  Builder(const JsonDoc& doc, std::string display, std::string prefix, const std::vector<Material>& mats)
+      : doc_(doc), display_(std::move(display)), prefix_(std::move(prefix)), mats_(mats) {}
+
+  SceneGraph build(int root) {
+    std::vector<Frame> stack;
+    visit(root, Affine{}, 0, stack);
+    while (!stack.empty()) {
+      Frame& f = stack.back();
+      if (f.next_child != -1) {
+        const int child = f.next_child;
+        f.next_child = doc_.at(child).next;
+        const Affine xf = f.xf;
+        const int mat = f.material;
+        visit(child, xf, mat, stack);  // may push: `f` is not used after
+        continue;
+      }
+      const int done = f.acc;
+      stack.pop_back();
+      deliver(done, stack);
+    }
+    g_.root = result_;
+    const GraphBox& box = g_.root_node().box;
+    if (!box.finite())
+      fail(root, "the graph is unbounded (an infinite plane, cylinder or cone not cut by an intersection)",
+           "put ground planes in [[planes]]; intersect infinite shapes with a box");
+    if (box.empty()) fail(root, "the graph is empty: its intersections leave nothing");
+    return std::move(g_);
+  }
+
+ private:
+  [[noreturn]] void fail(int v, const std::string& what, const std::string& hint = {}) const {
+    fail_input(what, display_, doc_.at(v).line, prefix_ + doc_.pointer(v), hint);
+  }
+
+  // A node: a leaf is made at once; an operator is pushed to collect its children.
+  void visit(int v, const Affine& parent, int inherited, std::vector<Frame>& stack) {
+    if (doc_.at(v).kind != JsonKind::object) fail(v, "a node must be an object with 'sdf' or 'op'");
+    check_keys(v);
+    const Affine xf = transform(v, parent);
+    const int mat = material(v, inherited);
+    const int sdf = doc_.member(v, "sdf"), op = doc_.member(v, "op");
+    if ((sdf == -1) == (op == -1))
+      fail(v, sdf == -1 ? "a node needs 'sdf' (a primitive) or 'op' (a combinator)" : "'sdf' and 'op' exclude each other");
+    if (sdf != -1) {
+      if (const int c = doc_.member(v, "children"); c != -1) fail(c, "a primitive has no children");
+      deliver(leaf(v, sdf, xf, mat), stack);
+      return;
+    }
+    const int fn = name_of(op, graph_operators(), "combinator");
+    const int children = doc_.member(v, "children");
+    if (children == -1) fail(v, "an operator needs 'children'", "two or more nodes");
+    if (doc_.at(children).kind != JsonKind::array || doc_.at(children).count < 2)
+      fail(children, "'children' must be an array of two or more nodes");
+    Frame f{v, fn, xf, mat, read_params(v, graph_operators()[static_cast<std::size_t>(fn)].params), doc_.at(children).first, -1};
+    const auto& defs = graph_operators()[static_cast<std::size_t>(fn)].params;
+    for (std::size_t i = 0, k = 0; i < defs.size(); k += static_cast<std::size_t>(defs[i].size), ++i)
+      if (defs[i].length)
+        for (int j = 0; j < defs[i].size; ++j) f.params[k + static_cast<std::size_t>(j)] *= xf.s;
+    ++g_.operators;
+    stack.push_back(std::move(f));
+  }
+
+  // A finished subtree: the root, or the next child of the operator on top.
+  void deliver(int id, std::vector<Frame>& stack) {
+    if (stack.empty()) {
+      result_ = id;
+      return;
+    }
+    Frame& f = stack.back();
+    f.acc = f.acc == -1 ? id : combine(f, f.acc, id);
+  }
+
+  int combine(const Frame& f, int a, int b) {
+    const GraphOperator& op = graph_operators()[static_cast<std::size_t>(f.fn)];
+    GraphNode n;
+    n.leaf = false;
+    n.fn = f.fn;
+    n.left = a;
+    n.right = b;
+    n.param = static_cast<int>(g_.params.size());
+    g_.params.insert(g_.params.end(), f.params.begin(), f.params.end());
+    const GraphNode& na = g_.nodes[static_cast<std::size_t>(a)];
+    const GraphNode& nb = g_.nodes[static_cast<std::size_t>(b)];
+    op.box(na, nb, f.params.data(), n);
+    n.box = box_grow(n.core, n.slack);
+    n.lipschitz = op.lipschitz * std::max(na.lipschitz, nb.lipschitz);
+    n.line = doc_.at(f.value).line;
+    g_.nodes.push_back(n);
+    return static_cast<int>(g_.nodes.size()) - 1;
+  }
+
+  int leaf(int v, int sdf, const Affine& xf, int mat) {
+    const int fn = name_of(sdf, graph_primitives(), "primitive");
+    const GraphPrimitive& prim = graph_primitives()[static_cast<std::size_t>(fn)];
+    GraphNode n;
+    n.fn = fn;
+    n.param = static_cast<int>(g_.params.size());
+    const std::vector<float> p = read_params(v, prim.params);
+    g_.params.insert(g_.params.end(), p.begin(), p.end());
+    n.material = mat;
+    n.to_local = xf.a;
+    n.offset = xf.b;
+    n.scale = xf.s;
+    n.box = n.core = world_box(prim.box(p.data()), xf);
+    n.lipschitz = prim.lipschitz;
+    n.line = doc_.at(v).line;
+    ++g_.primitives;
+    g_.nodes.push_back(n);
+    return static_cast<int>(g_.nodes.size()) - 1;
+  }
+
+  // The local box mapped to world space by interval arithmetic on
+  // p = a^-1 (q - b); a^-1 = s^2 a^T since a is a rotation over s.
+  static GraphBox world_box(const GraphBox& local, const Affine& xf) {
+    const glm::mat3 inv = glm::transpose(xf.a) * (xf.s * xf.s);
+    const glm::vec3 origin = -(inv * xf.b);
+    GraphBox w{origin, origin};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const float m = inv[j][i];  // row i, column j
+        if (std::fabs(m) < 1e-7f) continue;
+        const float lo = m * local.min[j], hi = m * local.max[j];
+        w.min[i] += std::min(lo, hi);
+        w.max[i] += std::max(lo, hi);
+      }
+    // Float rounding of the transform must not cut the surface.
+    return box_grow(w, 1e-5f * (1.0f + glm::length(glm::max(glm::abs(w.min), glm::abs(w.max)))));
+  }
+
+  void check_keys(int v) const {
+    for (int c = doc_.at(v).first; c != -1; c = doc_.at(c).next) {
+      const std::string& k = doc_.at(c).key;
+      bool known = false;
+      for (std::string_view n : kNodeKeys) known = known || n == k;
+      if (known) continue;
+      // A parameter of the node's function is known too; checked in read_params.
+      if (is_param(v, k)) continue;
+      std::vector<std::string_view> cands(std::begin(kNodeKeys), std::end(kNodeKeys));
+      const std::vector<GraphParam>* defs = params_of(v);
+      if (defs)
+        for (const GraphParam& p : *defs) cands.push_back(p.name);
+      fail(c, "unknown key " + quote(k), did_you_mean(k, cands));
+    }
+  }
+
+  const std::vector<GraphParam>* params_of(int v) const {
+    if (const int s = doc_.member(v, "sdf"); s != -1 && doc_.at(s).kind == JsonKind::string)
+      if (const int fn = find_primitive(doc_.at(s).text); fn != -1) return &graph_primitives()[static_cast<std::size_t>(fn)].params;
+    if (const int o = doc_.member(v, "op"); o != -1 && doc_.at(o).kind == JsonKind::string)
+      if (const int fn = find_operator(doc_.at(o).text); fn != -1) return &graph_operators()[static_cast<std::size_t>(fn)].params;
+    return nullptr;
+  }
+  bool is_param(int v, const std::string& k) const {
+    const std::vector<GraphParam>* defs = params_of(v);
+    if (!defs) return true;  // the unknown function is reported first
+    for (const GraphParam& p : *defs)
+      if (p.name == k) return true;
+    return false;
+  }
+
+  template <class T>
+  int name_of(int v, std::span<const T> list, const char* what) const {
+    if (doc_.at(v).kind != JsonKind::string) fail(v, std::string("the ") + what + " must be named by a string");
+    const std::string& name = doc_.at(v).text;
+    for (std::size_t i = 0; i < list.size(); ++i)
+      if (list[i].name == name) return static_cast<int>(i);
+    std::vector<std::string_view> names;
+    for (const T& t : list) names.push_back(t.name);
+    fail(v, std::string("unknown ") + what + " " + quote(name), did_you_mean(name, names));
+  }
+
+  float number(int v, const std::string& what) const {
+    if (doc_.at(v).kind != JsonKind::number) fail(v, what + " must be a number");
+    const double d = doc_.at(v).number;
+    if (!std::isfinite(d) || std::fabs(d) > 1e30) fail(v, what + " must be a finite number");
+    return static_cast<float>(d);
+  }
+
+  // A number (size 1) or an array of `size` numbers.
+  std::vector<float> numbers(int v, int size, const std::string& what) const {
+    if (size == 1) return {number(v, what)};
+    const JsonValue& a = doc_.at(v);
+    if (a.kind != JsonKind::array || a.count != size)
+      fail(v, what + " must be an array of " + std::to_string(size) + " numbers",
+           a.kind == JsonKind::array ? "it has " + std::to_string(a.count) : "");
+    std::vector<float> out;
+    for (int c = a.first; c != -1; c = doc_.at(c).next) out.push_back(number(c, "each element of " + what));
+    return out;
+  }
+
+  std::vector<float> read_params(int v, const std::vector<GraphParam>& defs) const {
+    std::vector<float> out;
+    for (const GraphParam& p : defs) {
+      const int c = doc_.member(v, p.name);
+      if (c == -1) fail(v, "missing parameter " + quote(p.name), describe(defs));
+      const std::vector<float> xs = numbers(c, p.size, quote(p.name));
+      for (float x : xs)
+        if (p.nonneg && x < 0.0f) fail(c, quote(p.name) + " must not be negative", "it is a size");
+      out.insert(out.end(), xs.begin(), xs.end());
+    }
+    return out;
+  }
+
+  static std::string describe(const std::vector<GraphParam>& defs) {
+    if (defs.empty()) return "it takes none";
+    std::string s = "it takes ";
+    for (std::size_t i = 0; i < defs.size(); ++i)
+      s += (i ? ", " : "") + std::string(defs[i].name) + (defs[i].size > 1 ? " (" + std::to_string(defs[i].size) + " numbers)" : "");
+    return s;
+  }
+
+  Affine transform(int v, const Affine& parent) const;
+  int material(int v, int inherited) const {
+    const int m = doc_.member(v, "material");
+    if (m == -1) return inherited;
+    if (doc_.at(m).kind != JsonKind::string) fail(m, "'material' must be a string naming a [[materials]] entry");
+    std::vector<std::string_view> names;
+    for (std::size_t i = 0; i < mats_.size(); ++i) {
+      if (mats_[i].name == doc_.at(m).text) return static_cast<int>(i);
+      names.push_back(mats_[i].name);
+    }
+    fail(m, "unknown material " + quote(doc_.at(m).text), did_you_mean(doc_.at(m).text, names));
+  }
+
+  const JsonDoc& doc_;
+  std::string display_, prefix_;
+  const std::vector<Material>& mats_;
+  SceneGraph g_;
+  int result_ = -1;
+};
+
+glm::mat3 axis_angle(glm::vec3 axis, float degrees) {
+  const float a = glm::radians(degrees), c = std::cos(a), s = std::sin(a);
+  const glm::vec3 u = glm::normalize(axis);
+  glm::mat3 r;  // Rodrigues, column-major: r[col][row]
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r[j][i] = (i == j ? c : 0.0f) + (1.0f - c) * u[i] * u[j];
+  r[1][0] -= s * u.z; r[2][0] += s * u.y;
+  r[0][1] += s * u.z; r[2][1] -= s * u.x;
+  r[0][2] -= s * u.y; r[1][2] += s * u.x;
+  return r;
+}
+
+// The node's local-to-parent map x -> l x + t, with l a rotation times s;
+// composed under the parent's world-to-local map.
+Affine Builder::transform(int v, const Affine& parent) const {
+  glm::mat3 rot{1.0f};
+  glm::vec3 t{0.0f};
+  float s = 1.0f;
+  if (const int m = doc_.member(v, "matrix"); m != -1) {
+    for (const char* other : {"translate", "rotate", "scale"})
+      if (doc_.member(v, other) != -1) fail(m, std::string("'matrix' and '") + other + "' exclude each other");
+    const std::vector<float> x = numbers(m, 12, "'matrix'");
+    glm::mat3 l;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) l[j][i] = x[static_cast<std::size_t>(i * 4 + j)];
+      t[i] = x[static_cast<std::size_t>(i * 4 + 3)];
+    }
+    const float det = glm::determinant(l);
+    if (!(det > 0.0f)) fail(m, "'matrix' must be a rotation times a uniform scale", "its determinant is not positive");
+    s = std::cbrt(det);
+    const glm::mat3 g = glm::transpose(l) * l / (s * s);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (std::fabs(g[i][j] - (i == j ? 1.0f : 0.0f)) > 1e-4f)
+          fail(m, "'matrix' must be a rotation times a uniform scale (within 1e-4)",
+               "shear or non-uniform scale breaks the distance bound");
+    rot = l / s;
+  } else {
+    if (const int c = doc_.member(v, "scale"); c != -1) {
+      s = number(c, "'scale'");
+      if (!(s > 0.0f)) fail(c, "'scale' must be > 0", "a uniform scale factor");
+    }
+    if (const int c = doc_.member(v, "rotate"); c != -1) {
+      const std::vector<float> r = numbers(c, 4, "'rotate'");
+      const glm::vec3 axis{r[0], r[1], r[2]};
+      if (!(glm::length(axis) > 1e-12f)) fail(c, "'rotate' needs a non-zero axis", "[axis x, y, z, degrees]");
+      rot = axis_angle(axis, r[3]);
+    }
+    if (const int c = doc_.member(v, "translate"); c != -1) {
+      const std::vector<float> x = numbers(c, 3, "'translate'");
+      t = {x[0], x[1], x[2]};
+    }
+  }
+  // q = l^-1 (q_parent - t), l^-1 = rot^T / s.
+  const glm::mat3 inv = glm::transpose(rot) / s;
+  return {inv * parent.a, inv * (parent.b - t), parent.s * s};
+}
+
+}  // namespace
+
+SceneGraph build_graph(const JsonDoc& doc, int node, const std::string& display, const std::string& prefix,
+                       const std::vector<Material>& materials) {
+  if (materials.empty()) fail_input("a graph scene needs at least one [[materials]] entry", display, 0, "materials");
+  return Builder(doc, display, prefix, materials).build(node);
+}
+
+SceneGraph load_graph_file(const std::filesystem::path& file, const std::vector<Material>& materials) {
+  const std::string display = file.string();
+  const JsonDoc doc = parse_json_doc(read_input_file(file, "graph file"), display);
+  if (doc.at(0).kind != JsonKind::object) fail_input("a graph file must be an object {\"root\": NODE}", display, 1);
+  for (int c = doc.at(0).first; c != -1; c = doc.at(c).next)
+    if (doc.at(c).key != "root")
+      fail_input("unknown key " + quote(doc.at(c).key), display, doc.at(c).line, doc.pointer(c),
+                 "a graph file holds only \"root\"");
+  const int root = doc.member(0, "root");
+  if (root == -1) fail_input("missing \"root\"", display, 1, "", "a graph file is {\"root\": NODE}");
+  SceneGraph g = build_graph(doc, root, display, "", materials);
+  g.file = file;
+  return g;
+}
+
+}  // namespace ms

@@ -1,0 +1,65 @@
+// The scene graph's vocabulary: the shader library's 3D primitives and its
+// two-field combinators, each with its GLSL parameters (the names after
+// `p`, or after `a, b`), its Lipschitz bound as the library's comment tag
+// claims it (tests/library verifies the claims; tests/unit checks this
+// table against sdf_shaders/), its box and, for combinators, how far the
+// blend reaches and how a child may be pruned.
+//
+//   const GraphPrimitive* s = find_primitive("sdSphere");
+//   s->params[0].name == "r"; s->box(params) -> local box
+#pragma once
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "scene/graph.h"
+
+namespace ms {
+
+struct GraphParam {
+  std::string_view name;
+  int size = 1;          // floats: 1 (float), 2 (vec2), 3 (vec3)
+  bool nonneg = true;    // a size: negative is refused (positions, directions, offsets may be)
+  bool length = true;    // combinators: in length units, so scaled with the node (a count n is not)
+};
+
+struct GraphPrimitive {
+  std::string_view name;
+  std::vector<GraphParam> params;
+  float lipschitz = 1.0f;
+  GraphBox (*box)(const float* params) = nullptr;  // local space
+};
+
+// How a combinator's value relates to its children's, for the box and for
+// pruning (docs/scene-graph.md, "Pruning").
+enum class OpFamily {
+  union_,         // min-like: the surface is the children's, grown by reach
+  intersection,   // max-like: inside both
+  subtraction,    // max(a, -b)-like: inside a
+  other,          // pipe, engrave, groove, tongue: never pruned
+};
+
+struct GraphOperator {
+  std::string_view name;
+  std::vector<GraphParam> params;
+  float lipschitz = 1.0f;  // times the children's
+  OpFamily family = OpFamily::other;
+  // The node's core box and slack (graph.h) from its children's and the
+  // (world-unit) parameters.
+  void (*box)(const GraphNode& a, const GraphNode& b, const float* params, GraphNode& out) = nullptr;
+  // Pruning (a GLSL expression of AHI and the parameters P0, P1): the least
+  // lo(b) - hi(a) for which op(a, b) == a on a whole cell, given hi(a) of
+  // its interval; for intersections and subtractions, of the negated
+  // fields. Empty: a child is never pruned.
+  std::string_view reach;
+};
+
+std::span<const GraphPrimitive> graph_primitives();
+std::span<const GraphOperator> graph_operators();
+// Index into the spans above, or -1.
+int find_primitive(std::string_view name);
+int find_operator(std::string_view name);
+// Parameter floats in total.
+int param_floats(const std::vector<GraphParam>& params);
+
+}  // namespace ms
