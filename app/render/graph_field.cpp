@@ -47,11 +47,12 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[3]);
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(out.size() * sizeof(std::uint32_t)), out.data());
   build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  lengths_.resize(cells);
+  double sum = 0.0;
   for (std::size_t i = 0; i < cells; ++i) {
-    lengths_[i] = out[i * 4 + 1];
+    sum += out[i * 4 + 1];
     overflowed_ += out[i * 4 + 3] == 1u;
   }
+  mean_list_ = cells > 0 ? sum / static_cast<double>(cells) : 0.0;
 }
 
 std::string GraphField::summary() const {
@@ -59,13 +60,11 @@ std::string GraphField::summary() const {
     return "grid " + std::to_string(plan_.dims.x) + "x" + std::to_string(plan_.dims.y) + "x" +
            std::to_string(plan_.dims.z) + ", not pruned (--no-prune): every cell runs all " + std::to_string(program_) +
            " instructions";
-  if (lengths_.empty()) return {};
-  double sum = 0.0;
-  for (unsigned n : lengths_) sum += n;
+  if (mean_list_ < 0.0) return {};
   char buf[256];
   std::snprintf(buf, sizeof buf,
                 "grid %dx%dx%d, pruning %.1f ms, mean list %.1f instructions (of %zu), %d cells kept their coarse list",
-                plan_.dims.x, plan_.dims.y, plan_.dims.z, build_ms_, sum / static_cast<double>(lengths_.size()),
+                plan_.dims.x, plan_.dims.y, plan_.dims.z, build_ms_, mean_list_,
                 program_, overflowed_);
   return buf;
 }

@@ -9,7 +9,6 @@
 //   field.mean_list();         // instructions a cell keeps, on average
 #pragma once
 #include <string>
-#include <vector>
 
 #include "gl/gl.h"
 
@@ -28,10 +27,6 @@ class GraphField {
 
   void bind() const;
   double build_ms() const { return build_ms_; }
-  // Over the cells: their list lengths (one that would overflow keeps its
-  // coarse cell's list), and how many overflowed.
-  const std::vector<unsigned>& list_lengths() const { return lengths_; }
-  int overflowed_cells() const { return overflowed_; }
   // "grid 16x23x22, pruning 412.3 ms, mean list 23.4 instructions (of 1999), 3 cells kept their coarse list";
   // "" without a grid.
   std::string summary() const;
@@ -39,7 +34,9 @@ class GraphField {
  private:
   GLuint buffers_[5] = {0, 0, 0, 0, 0};  // nodes, floats, program and lists, cells, coarse cells
   double build_ms_ = 0.0;
-  std::vector<unsigned> lengths_;
+  // Over the fine cells: the mean list length (a cell that would overflow
+  // keeps its coarse cell's list), -1 before a pruning pass; and how many overflowed.
+  double mean_list_ = -1.0;
   int overflowed_ = 0;
   GraphEvalPlan plan_;
   std::size_t program_ = 0;

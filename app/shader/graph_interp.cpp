@@ -20,13 +20,9 @@ constexpr std::size_t kCoarseList = 2048;
 constexpr int kPruneLoopLimit = 65000;
 
 glm::ivec3 coarse_dims(const GraphEvalPlan& plan) { return (plan.dims + kSplit - 1) / kSplit; }
-std::size_t coarse_cells(const GraphEvalPlan& plan) {
-  const glm::ivec3 d = coarse_dims(plan);
-  return static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y) * static_cast<std::size_t>(d.z);
-}
 // Where the fine cells' lists start in the program buffer.
 std::size_t fine_base(const GraphEvalPlan& plan, const GraphBuffers& b) {
-  return b.program.size() + coarse_cells(plan) * kCoarseList;
+  return b.program.size() + coarse_cell_count(plan) * kCoarseList;
 }
 
 constexpr std::uint32_t kLeaf = 0x80000000u, kSwap = 0x40000000u, kIndex = 0x3FFFFFFFu;
@@ -290,7 +286,10 @@ void main() {
 
 }  // namespace
 
-std::size_t coarse_cell_count(const GraphEvalPlan& plan) { return coarse_cells(plan); }
+std::size_t coarse_cell_count(const GraphEvalPlan& plan) {
+  const glm::ivec3 d = coarse_dims(plan);
+  return static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y) * static_cast<std::size_t>(d.z);
+}
 
 std::size_t program_capacity(const GraphEvalPlan& plan, const GraphBuffers& b) {
   if (!plan.prune || plan.keep_all) return b.program.size();
