@@ -121,39 +121,50 @@ vec2 msGraphNodeOp(uint i, vec2 a, vec2 b) {
 )";
 
 // llvmpipe ends a shader's loops after 65,535 iterations in all (one
-// limiter shared by every loop of an invocation), so the interpreter runs
-// several instructions an iteration: a pixel may then execute that many
-// times 65,535 instructions over all its map() calls. Each copy inlines a
-// case for every function the graph uses, so the copies shrink as the
-// kinds grow and the compile time stays flat: 16 for one primitive and
-// one combinator, 1 from 32 kinds.
-int unroll(const SceneGraph& g) {
+// limiter shared by every loop of an invocation). A step runs a primitive
+// and then, when the next instruction is an operator, that operator too
+// (a union chain's program alternates them), so one copy a loop iteration
+// lets a pixel run about 131,000 instructions over all its map() calls:
+// plenty for pruned lists. Each copy multiplies the code LLVM compiles by
+// every inlined map() call (16 copies of the plain loop took 75 s for one
+// sphere kind, 1 copy 1.5 s), so only the unpruned runs, whose every call
+// walks the whole program, get what 512 calls of it need, within 8 for
+// one primitive and one combinator kind, fewer as the kinds grow.
+int copies(const SceneGraph& g, const GraphEvalPlan& plan, std::size_t program) {
+  if (plan.prune && !plan.keep_all) return 1;
   std::set<std::pair<bool, int>> kinds;
   for (const GraphNode& n : g.nodes) kinds.insert({n.leaf, n.fn});
-  int u = 16;
-  while (u > 1 && u * static_cast<int>(kinds.size()) > 32) u /= 2;
+  int cap = 8;
+  while (cap > 1 && cap * static_cast<int>(kinds.size()) > 16) cap /= 2;
+  int u = 1;
+  while (u < cap && static_cast<double>(program) * 512.0 > 131070.0 * u) u *= 2;
   return u;
 }
 
-std::string run_glsl(int copies) {
-  std::string s = "vec2 msGraphRun(uint start, uint count, vec3 p) {\n  vec2 st[MS_GRAPH_STACK];\n  int sp = 0;\n";
-  s += "  for (uint k = start; k < start + count; k += " + std::to_string(copies) + "u) {\n";
-  for (int j = 0; j < copies; ++j) {
-    const std::string at = "k + " + std::to_string(j) + "u";
-    s += "    if (" + at + " < start + count) {\n      uint ins = msGraphProg[" + at + "];\n" +
-         R"(      uint i = ins & 0x3FFFFFFFu;
-      if ((ins & 0x80000000u) != 0u) {
-        st[sp++] = msGraphLeaf(i, p);
+constexpr const char* kRunStep = R"(    if (k < end) {
+      uint ins = msGraphProg[k];
+      bool op = (ins & 0x80000000u) == 0u;
+      if (!op) {
+        st[sp++] = msGraphLeaf(ins & 0x3FFFFFFFu, p);
         MS_COUNT_PRIMS(1);
-      } else {
+        ++k;
+        ins = k < end ? msGraphProg[k] : 0x80000000u;
+        op = (ins & 0x80000000u) == 0u;
+      }
+      if (op) {
         vec2 b = st[--sp];
         vec2 a = st[--sp];
         if ((ins & 0x40000000u) != 0u) { vec2 t = a; a = b; b = t; }
-        st[sp++] = msGraphNodeOp(i, a, b);
+        st[sp++] = msGraphNodeOp(ins & 0x3FFFFFFFu, a, b);
+        ++k;
       }
     }
 )";
-  }
+
+std::string run_glsl(int n) {
+  std::string s = "vec2 msGraphRun(uint start, uint count, vec3 p) {\n  vec2 st[MS_GRAPH_STACK];\n  int sp = 0;\n";
+  s += "  uint end = start + count;\n  for (uint k = start; k < end;) {\n";
+  for (int j = 0; j < n; ++j) s += kRunStep;
   s += "  }\n  return st[0];\n}\n";
   return s;
 }
@@ -359,7 +370,7 @@ GraphBuffers graph_buffers(const SceneGraph& g, const GraphEvalPlan&) {
 std::string graph_map_interpreter(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b) {
   std::string s = "#include \"aov.glsl\"\n// map() interpreting the scene graph's node buffers: " +
                   std::to_string(g.primitives) + " primitives, " + std::to_string(g.operators) + " operators\n";
-  s += defines(g, plan, b) + buffers_glsl(false) + dispatch_glsl(g) + kRun + run_glsl(unroll(g));
+  s += defines(g, plan, b) + buffers_glsl(false) + dispatch_glsl(g) + kRun + run_glsl(copies(g, plan, b.program.size()));
   s += "vec2 map(vec3 p) {\n";
   if (plan.prune)
     s += R"(  vec3 g = (p - MS_GRID_MIN) / MS_GRID_CELL;
@@ -374,7 +385,7 @@ std::string graph_map_interpreter(const SceneGraph& g, const GraphEvalPlan& plan
 }
 
 std::string graph_prune_source(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b) {
-  return "#define MS_COUNT_PRIMS(n)\n" + defines(g, plan, b) + buffers_glsl(true) + dispatch_glsl(g) + kRun + run_glsl(1) +
+  return "#define MS_COUNT_PRIMS(n)\n" + defines(g, plan, b) + buffers_glsl(true) + dispatch_glsl(g) + kRun +
          prune_rules_glsl(g) + kPrune;
 }
 
