@@ -20,6 +20,10 @@ void upload(GLuint buf, const std::vector<T>& data, std::size_t extra_bytes = 0)
     glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data());
 }
 
+std::size_t cell_count_of(const GridLevel& l) {
+  return static_cast<std::size_t>(l.dims.x) * static_cast<std::size_t>(l.dims.y) * static_cast<std::size_t>(l.dims.z);
+}
+
 }  // namespace
 
 GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const Program* prune)
@@ -29,44 +33,56 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
   upload(buffers_[0], b.nodes);
   upload(buffers_[1], b.floats);
   upload(buffers_[2], b.program, (program_capacity(plan, b) - b.program.size()) * sizeof(std::uint32_t));
-  std::vector<std::uint32_t> all(std::max<std::size_t>(cells, 1) * 4, 0u);
-  for (std::size_t i = 0; plan.keep_all && i < cells; ++i) all[i * 4 + 1] = static_cast<std::uint32_t>(b.program.size());
-  upload(buffers_[3], all);
-  upload(buffers_[4], std::vector<std::uint32_t>(std::max<std::size_t>(coarse, 1) * 4, 0u));
+  std::vector<std::uint32_t> head = plan.prune ? grid_header(plan, b) : std::vector<std::uint32_t>{};
+  const std::size_t first = head.size();
+  head.resize(first + std::max<std::size_t>(cells, 1) * 4, 0u);
+  for (std::size_t i = 0; plan.keep_all && i < cells; ++i) head[first + i * 4 + 1] = static_cast<std::uint32_t>(program_);
+  upload(buffers_[3], head);
+  // The pool's count, three words of padding, then the coarse cells.
+  upload(buffers_[4], std::vector<std::uint32_t>((coarse + 1) * 4, 0u));
   bind();
   if (!plan.prune || plan.keep_all || !prune) return;
   const auto start = std::chrono::steady_clock::now();
   glUseProgram(prune->id());
-  // Coarse cells first, then each fine cell from its coarse cell's list.
-  for (int level = 0; level < 2; ++level) {
-    prune->set("uLevel", level);
-    glDispatchCompute(static_cast<GLuint>(((level == 0 ? coarse : cells) + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  // Per grid level, coarse cells first, then each fine cell from its coarse cell's list.
+  for (int grid = 0; grid < kGridLevels; ++grid) {
+    prune->set("uGrid", grid);
+    const glm::ivec3 d = plan.levels[grid].dims, cd = (d + 3) / 4;
+    for (int level = 0; level < 2; ++level) {
+      prune->set("uLevel", level);
+      const glm::ivec3 n = level == 0 ? cd : d;
+      glDispatchCompute(static_cast<GLuint>((static_cast<std::size_t>(n.x) * n.y * n.z + 63) / 64), 1, 1);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
   }
   std::vector<std::uint32_t> out(cells * 4);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[3]);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(out.size() * sizeof(std::uint32_t)), out.data());
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(first * sizeof(std::uint32_t)),
+                     static_cast<GLsizeiptr>(out.size() * sizeof(std::uint32_t)), out.data());
   build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // The mean over level 0, the bounds that rays march; the outer levels'
+  // cells are larger and rarely visited.
+  const std::size_t inner = cell_count_of(plan.levels[0]);
   double sum = 0.0;
   for (std::size_t i = 0; i < cells; ++i) {
-    sum += out[i * 4 + 1];
+    if (i < inner) sum += out[i * 4 + 1];
     overflowed_ += out[i * 4 + 3] == 1u;
   }
-  mean_list_ = cells > 0 ? sum / static_cast<double>(cells) : 0.0;
+  mean_list_ = inner > 0 ? sum / static_cast<double>(inner) : 0.0;
 }
 
 std::string GraphField::summary() const {
+  const glm::ivec3 d = plan_.levels[0].dims;
+  const std::string grid = "grid " + std::to_string(d.x) + "x" + std::to_string(d.y) + "x" + std::to_string(d.z) +
+                           " and " + std::to_string(kGridLevels - 1) + " outer levels";
   if (plan_.keep_all)
-    return "grid " + std::to_string(plan_.dims.x) + "x" + std::to_string(plan_.dims.y) + "x" +
-           std::to_string(plan_.dims.z) + ", not pruned (--no-prune): every cell runs all " + std::to_string(program_) +
-           " instructions";
+    return grid + ", not pruned (--no-prune): every cell runs all " + std::to_string(program_) + " instructions";
   if (mean_list_ < 0.0) return {};
   char buf[256];
   std::snprintf(buf, sizeof buf,
-                "grid %dx%dx%d, pruning %.1f ms, mean list %.1f instructions (of %zu), %d cells kept their coarse list",
-                plan_.dims.x, plan_.dims.y, plan_.dims.z, build_ms_, mean_list_,
-                program_, overflowed_);
-  return buf;
+                ", pruning %.1f ms, mean list %.1f instructions (of %zu), %d cells kept their coarse list", build_ms_,
+                mean_list_, program_, overflowed_);
+  return grid + buf;
 }
 
 GraphField::~GraphField() { glDeleteBuffers(5, buffers_); }

@@ -24,21 +24,28 @@ enum class GraphEval { auto_, inline_, interpreter };
 // gives the measured crossover).
 inline constexpr int kInterpretFrom = 64;
 
+// One level of the pruning grid: level 0 covers the region rays march,
+// each next one a larger box around it (for the shadows, AO taps and
+// reflections that leave it); a point takes the finest level holding it.
+struct GridLevel {
+  glm::vec3 min{0.0f};   // the corner
+  glm::vec3 cell{0.0f};  // one cell's size
+  glm::ivec3 dims{0};    // cells along x, y, z
+};
+inline constexpr int kGridLevels = 4;
 struct GraphEvalPlan {
   bool interpret = false;
   bool prune = false;            // the interpreter with a grid of cell lists
   bool keep_all = false;         // --no-prune: every cell's list is the whole program
-  glm::ivec3 dims{0};            // cells along x, y, z
-  glm::vec3 min{0.0f};           // the grid's corner
-  glm::vec3 cell{0.0f};          // one cell's size
-  int list_max = 0;              // a cell's list holds at most this many instructions, else the whole program
+  GridLevel levels[kGridLevels];
+  GraphBox surfaces;             // the graph's box: past the last level map() is the distance to it
+  int list_max = 0;              // a fine cell's list holds at most this many instructions, else its coarse cell's
+  std::size_t pool = 0;          // instructions all fine cells' lists may take together
 };
-
-// `box`: the region rays march (the scene's bounds); the grid covers it.
-// `cell_size` > 0 sets the cells' size, else it follows the node count.
+// `box`: the region rays march (the scene's bounds); level 0 covers it.
+// `cell_size` > 0 sets level 0's cells, else they follow the node count.
 GraphEvalPlan plan_graph_eval(const SceneGraph& g, GraphEval eval, bool prune, const GraphBox& box,
                               float cell_size = 0.0f);
-
 // The node buffers the interpreter reads (binding points in graph_interp.cpp).
 struct GraphBuffers {
   std::vector<std::uint32_t> nodes;  // 4 per node: fn, float offset, material, Lipschitz bound's bits
@@ -47,11 +54,15 @@ struct GraphBuffers {
   int stack = 0;                     // the stack the program needs
 };
 GraphBuffers graph_buffers(const SceneGraph& g, const GraphEvalPlan& plan);
-std::size_t cell_count(const GraphEvalPlan& plan);         // fine cells: the tracer's
+std::size_t cell_count(const GraphEvalPlan& plan);         // fine cells of every level: the tracer's
 std::size_t coarse_cell_count(const GraphEvalPlan& plan);  // the pruning pass's first level
-// Instructions the program buffer holds: the program, then every cell's list.
+// Instructions the program buffer holds: the program, the coarse cells'
+// lists, then the pool of the fine cells' lists.
 std::size_t program_capacity(const GraphEvalPlan& plan, const GraphBuffers& b);
-
+// The cell buffer's head: the levels' geometry, where their cells and
+// lists start, and the graph's box, so that moving the graph changes
+// buffers only, never the shader. The cells follow it.
+std::vector<std::uint32_t> grid_header(const GraphEvalPlan& plan, const GraphBuffers& b);
 // map() interpreting the buffers, with the cell lookup when plan.prune.
 std::string graph_map_interpreter(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b);
 // The pruning pass's compute shader body (after the library's includes).

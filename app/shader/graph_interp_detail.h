@@ -1,0 +1,28 @@
+// Pieces the interpreter (graph_interp.cpp), its grid (graph_grid.cpp) and
+// the pruning pass (graph_prune.cpp) share; not for use outside shader/.
+#pragma once
+#include <cstddef>
+#include <string>
+
+#include "shader/graph_interp.h"
+
+namespace ms::graph_detail {
+
+// The pruning pass's two levels: coarse cells of kSplit^3 fine ones, each
+// keeping up to kCoarseList instructions.
+inline constexpr int kSplit = 4;
+inline constexpr std::size_t kCoarseList = 2048;
+// The cell buffer's head, in uvec4s: one for the list pool, three a grid
+// level, two for the graph's box (grid_header()).
+inline constexpr int kHeader = 3 + 3 * kGridLevels;
+
+glm::ivec3 coarse_dims(const GridLevel& level);
+// Binding points 3-6 (and 7, the coarse cells, when writable).
+std::string buffers_glsl(bool writable);
+// msGraphPrim and msGraphOp: a case for each function the graph uses.
+std::string dispatch_glsl(const SceneGraph& g);
+// msGraphLeaf and msGraphNodeOp.
+extern const char* const kRun;
+std::string defines(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b);
+
+}  // namespace ms::graph_detail
