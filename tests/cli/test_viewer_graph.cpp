@@ -1,7 +1,8 @@
 // The viewer on an interpreted scene graph (docs/viewer.md#graphs), under
 // Xvfb: a saved move of a node updates the node buffers and the pruning
 // with no compile, and the frame is render's of the moved graph; a new
-// node recompiles once, on the worker. Frames are counted, never timed.
+// node recompiles once, on the worker; a drag's rebuilds keep the buffers.
+// Frames are counted, never timed.
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -113,6 +114,19 @@ TEST_F(ViewerGraph, AMoveOfTheBoxCompilesNothingUnderCompute) {
   EXPECT_EQ(compiles(1), 0u) << read_file(log());
   EXPECT_GT(mean_abs_diff(capture(1), capture(0)), 1e-3) << "the move did not change the frame";
   EXPECT_LE(max_abs_diff(capture(1), render({"--graph-eval", "interpreter"})), 2.0 / 255.0);
+}
+
+// A panel drag rebuilds the program twice (live, then folded) but keeps the
+// node buffers and the grid: no new "graph updated" line, and the shot
+// after the drag is render's of the final colour.
+TEST_F(ViewerGraph, ADragKeepsTheBuffers) {
+  start("view_edit", {"--graph-eval", "interpreter", "--shot-dir", (dir / "shots").string(), "--shot-frame", "20",
+                      "--drag", "materials[1].color=0.1,0.3,0.9@3..8"});
+  ASSERT_FALSE(wait_for_line(log(), "^screenshot ", 120).empty()) << read_file(log()) << read_file(dir / "err.txt");
+  EXPECT_EQ(matching("^values ok ").size(), 2u) << read_file(log());
+  EXPECT_EQ(graph_lines().size(), 1u) << read_file(log());
+  const Image want = render({"--graph-eval", "interpreter", "--set", "materials.ball.color=[0.1,0.3,0.9]"});
+  EXPECT_LE(max_abs_diff(read_image(dir / "shots/view_edit_1.png"), want), 2.0 / 255.0);
 }
 
 }  // namespace
