@@ -11,9 +11,19 @@
 //                     the field, the textbook way (the baseline, for comparison)
 //   BOUNDS_KIND       0 none; 1 sphere: BOUNDS_A = vec4(centre, radius);
 //                     2 box: BOUNDS_A = vec4(min, 0), BOUNDS_B = vec4(max, 0)
+//   BOUNDS_UNIFORMS   1: BOUNDS_A and BOUNDS_B are the uniforms uBoundsA and
+//                     uBoundsB instead (the viewer, for a scene graph's box)
 //   OMEGA             over-relaxation factor of the primary/reflection march (trace.glsl)
 #pragma once
 #include "common.glsl"
+
+#if defined(BOUNDS_UNIFORMS) && BOUNDS_UNIFORMS
+// As BOUNDS_A and BOUNDS_B would hold them; app/render/uniforms.cpp sets both.
+uniform vec4 uBoundsA;
+uniform vec4 uBoundsB;
+#define BOUNDS_A uBoundsA
+#define BOUNDS_B uBoundsB
+#endif
 
 #ifndef NUM_PLANES
 #define NUM_PLANES 0

@@ -104,6 +104,7 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   add_compute_group_flag(cmd, a.compute_group);
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Build the generic shader: every feature compiled (docs/specialization.md)");
+  add_graph_flags(cmd, a.graph_eval, a.no_prune);
   add_allow_include_flag(cmd, a.allow_include);
   add_override_flags(cmd, a.overrides);
   return cmd;
@@ -164,7 +165,11 @@ int run_view(const ViewArgs& a) {
   // Folded as `render` is; what the panel drags stays a uniform while it is
   // dragged (live/live_values.h).
   o.assemble.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  o.assemble.graph_eval = GraphEval::inline_;  // the viewer binds no node buffers yet (docs/scene-graph.md)
+  o.assemble.graph_eval = a.graph_eval;
+  o.assemble.prune = !a.no_prune;
+  // A graph's bounds follow its box: as uniforms, a saved transform that
+  // moves it recompiles nothing (docs/viewer.md#graphs).
+  o.assemble.bounds_uniforms = true;
   // Made the initializers at every build: the panel's sliders start there.
   o.assemble.uniforms = a.overrides.uniforms;
   const fs::path input = a.input;

@@ -58,6 +58,8 @@ struct ViewArgs {
   Dispatch dispatch = Dispatch::fragment;     // --dispatch fragment|compute|auto
   std::optional<ComputeGroup> compute_group;  // hidden --compute-group WxH; none: 8x8, or auto's measured group
   bool no_specialize = false;  // the generic shader, not one specialized to the scene
+  GraphEval graph_eval = GraphEval::auto_;  // --graph-eval
+  bool no_prune = false;                   // --no-prune
   bool verbose = false;        // -v: every compile error of a load that fails before the window
   std::vector<std::string> allow_include;  // more directories #include may read
   Overrides overrides;       // --set, --uniform: applied again at every reload

@@ -102,6 +102,7 @@ void CompileWorker::run() {
         r.error = std::current_exception();
         r.programs.clear();
       }
+      if (!given_up && !r.error) build_field(job, r);
       r.gl_ms = ms_since(t0);
       const auto t_warm = std::chrono::steady_clock::now();
       const std::shared_ptr<const Program> post =
@@ -128,6 +129,7 @@ void CompileWorker::run() {
         if (job.accumulates && !given_up && !newer_waiting()) {
           // The frames after the first: sample 1 of 2 added to sample 0, blending on.
           glfwMakeContextCurrent(blend_window_);
+          bind_field(job, r);  // bindings are each context's own
           FrameParams acc = fp;
           acc.spp = 2;
           acc.sample_begin = 1;
@@ -159,6 +161,27 @@ void CompileWorker::run() {
   glfwMakeContextCurrent(blend_window_);
   blend_renderer.reset();
   glfwMakeContextCurrent(nullptr);
+}
+
+void CompileWorker::build_field(const CompileJob& job, CompileResult& r) {
+  try {
+    if (job.graph) {
+      if (job.prune) r.prune = std::make_shared<const Program>(Program::Compute{}, *job.prune);
+      r.field = std::make_shared<GraphField>(job.graph->buffers, job.graph->plan, r.prune.get());
+    }
+  } catch (const Error&) {
+    r.error = std::current_exception();
+    r.programs.clear();
+    r.prune.reset();
+    r.field.reset();
+    return;
+  }
+  bind_field(job, r);
+}
+
+void CompileWorker::bind_field(const CompileJob& job, const CompileResult& r) {
+  if (r.field) r.field->bind();
+  else if (job.field) job.field->bind();
 }
 
 void CompileWorker::compile_compute(const CompileJob& job, const Program& post, CompileResult& r) {

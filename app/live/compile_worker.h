@@ -9,7 +9,10 @@
 // Meanwhile the UI thread keeps drawing the last good programs. Under
 // --dispatch compute a job also carries the scene pass's compute source:
 // compiled and dispatched once, 8x8, through a ComputeFrameRenderer of the
-// worker's own (live/compute_trace.h takes the program).
+// worker's own (live/compute_trace.h takes the program). For an
+// interpreted scene graph it builds the new node buffers and runs the
+// pruning pass (render/graph_field.h) too, and binds them for the warm-up
+// draws, whose map() reads them.
 //
 //   CompileWorker worker(window, ctx);            // UI thread, after the window
 //   worker.submit({id, sources, passes});         // replaces a job not started
@@ -31,7 +34,9 @@
 
 #include "gl/context.h"
 #include "render/compute_frame.h"
+#include "render/graph_field.h"
 #include "render/program.h"
+#include "shader/assemble.h"
 #include "preprocess/preprocess.h"
 
 struct GLFWwindow;
@@ -55,6 +60,12 @@ struct CompileJob {
   // programs, warmed up once.
   std::optional<ShaderSource> compute;
   ComputeGroup compute_group;
+  // An interpreted graph: its parts, from which the worker builds the field
+  // (with `prune`, the pruning pass, compiled here), or else `field`, the
+  // current one, which its warm-up binds (a rebuild of the same graph).
+  std::shared_ptr<const GraphParts> graph;
+  std::optional<ShaderSource> prune;
+  std::shared_ptr<const GraphField> field;
 };
 
 struct CompileResult {
@@ -68,6 +79,9 @@ struct CompileResult {
   // drawn with fragment, as when the UI thread's compile fails).
   std::shared_ptr<const Program> compute;
   std::string compute_error;
+  // The field built from the job's graph, and its pruning pass's program.
+  std::shared_ptr<GraphField> field;
+  std::shared_ptr<const Program> prune;
 };
 
 class CompileWorker {
@@ -88,6 +102,10 @@ class CompileWorker {
   bool newer_waiting();  // a job came after the one in progress: give it up
   // The job's compute program into r, dispatched once (`post`: the job's).
   void compile_compute(const CompileJob& job, const Program& post, CompileResult& r);
+  // The job's graph field into r (a compile or GL error into r.error); binds
+  // the field the warm-up draws read, in the current context.
+  void build_field(const CompileJob& job, CompileResult& r);
+  static void bind_field(const CompileJob& job, const CompileResult& r);
 
   const Context& ctx_;
   GLFWwindow* window_ = nullptr;

@@ -75,6 +75,7 @@ Session::PreparedReload Session::prepare(bool from_disk) {
     p.post_src = assemble_post(scene_.render.tonemap, !shadertoy() && view == 0, opts_.assemble, shadertoy(), bloom);
     if (bloom) p.bloom_src = {assemble_bloom(false, opts_.assemble), assemble_bloom(true, opts_.assemble)};
     p.view = view;
+    prepare_graph(opts, p);
     r.cached = cache_.contains(fullscreen_vertex_source(), p.passes.back().source);
     r.ok = true;
   } catch (const Error& e) {
@@ -113,12 +114,15 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
     for (size_t i = 0; i < compiled.size() && i < p.compiling.size(); ++i)
       cache_.put(fullscreen_vertex_source(), p.compiling[i], compiled[i]);
     const auto t_gl = std::chrono::steady_clock::now();
+    const long misses = cache_.misses();
     auto graph = std::make_shared<PassGraph>(p.passes, &cache_);
     auto post = cache_.get(fullscreen_vertex_source(), p.post_src);
     std::unique_ptr<BloomStage> bloom_stage;
     if (!p.bloom_src.empty())
       bloom_stage = std::make_unique<BloomStage>(scene_.bloom, cache_.get(fullscreen_vertex_source(), p.bloom_src[0]),
                                                  cache_.get(fullscreen_vertex_source(), p.bloom_src[1]));
+    r.compiled += static_cast<int>(compiled.size() + (cache_.misses() - misses));
+    std::shared_ptr<GraphField> field = adopt_field(p, r);
     r.gl_ms = gl_ms + std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_gl).count();
     std::vector<std::string> warnings = std::move(p.warnings);
     for (const std::string& u : graph->unbound_sampled()) warnings.push_back(u + " is sampled but nothing is bound to it");
@@ -130,6 +134,12 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
         if (in.audio && !audio_) audio_ = in.audio;
     post_ = std::move(post);
     bloom_ = std::move(bloom_stage);
+    field_ = std::move(field);
+    if (!p.keep_field) field_graph_ = p.graph_of;
+    if (p.prune) {
+      prune_ = p.prune;
+      prune_text_ = p.prune_src.text;
+    }
     warnings_ = std::move(warnings);
     std::vector<SceneParam> params = parse_scene_params(p.passes.back().source.text);
     carry_over_values(params, params_);
@@ -148,6 +158,44 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
   return r;
 }
 
+// A graph read anew gets a new field; a rebuild of the same graph (a
+// toggle, a debug view, a panel value) keeps the one it has.
+void Session::prepare_graph(const AssembleOptions& opts, PreparedReload& p) const {
+  if (!scene_.graph) return;
+  if (field_ && field_graph_ == scene_.graph) {
+    p.keep_field = true;
+    return;
+  }
+  GraphParts parts = graph_parts(scene_, opts);
+  if (!parts.plan.interpret) return;
+  p.graph_of = scene_.graph;
+  if (parts.plan.prune && !parts.plan.keep_all) p.prune_src = assemble_graph_prune(scene_, parts, opts);
+  p.graph = std::make_shared<const GraphParts>(std::move(parts));
+}
+
+// The field the adopted programs read: the worker's, one built here (its
+// pruning pass compiled only when its text is new), the current one, or none.
+std::shared_ptr<GraphField> Session::adopt_field(PreparedReload& p, ReloadResult& r) {
+  if (p.keep_field) return field_;
+  if (!p.graph) return nullptr;
+  r.graph = true;
+  std::shared_ptr<GraphField> field = std::move(p.field);
+  if (field && p.prune) ++r.compiled;  // the worker's
+  if (!field) {
+    if (!p.prune && !p.prune_src.text.empty()) {
+      if (prune_ && p.prune_src.text == prune_text_) {
+        p.prune = prune_;
+      } else {
+        p.prune = std::make_shared<const Program>(Program::Compute{}, p.prune_src);
+        ++r.compiled;
+      }
+    }
+    field = std::make_shared<GraphField>(p.graph->buffers, p.graph->plan, p.prune.get());
+  }
+  if (p.graph->plan.prune && !p.graph->plan.keep_all) r.prune_ms = field->build_ms();
+  return field;
+}
+
 void Session::fail(const Error& e, ReloadResult& r) {
   error_ = format_error(e.info());
   error_log_ = e.info().detail;
@@ -163,11 +211,18 @@ bool Session::features_changed() const {
   return specialized_ && graph_ && derive_features(scene_, features_.library) != features_;
 }
 
+std::vector<fs::path> Session::scene_files() const {
+  std::vector<fs::path> out{scene_.file};
+  if (scene_.graph && scene_.graph->file != scene_.file) out.push_back(scene_.graph->file);
+  return out;
+}
+
 std::vector<fs::path> Session::watched_files() const {
   std::vector<fs::path> out;
   if (!scene_.file.empty()) out.push_back(scene_.file);
   if (!scene_.shadertoy_file.empty()) out.push_back(scene_.shadertoy_file);
   if (!scene_.map_file.empty()) out.push_back(scene_.map_file);
+  if (scene_.graph && scene_.graph->file != scene_.file) out.push_back(scene_.graph->file);
   out.insert(out.end(), deps_.begin(), deps_.end());
   if (!error_file_.empty()) {
     std::error_code ec;

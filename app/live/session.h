@@ -17,6 +17,7 @@
 #include "live/param_reload.h"
 #include "render/bloom.h"
 #include "render/graph.h"
+#include "render/graph_field.h"
 #include "render/program.h"
 #include "render/program_cache.h"
 #include "scene/features.h"
@@ -41,6 +42,12 @@ struct ReloadResult {
   double assemble_ms = 0.0;    // of which ours: reading the files, preprocessing and assembly
   double gl_ms = 0.0;          // of which the driver's: compile and link (llvmpipe JITs later, at the first draw)
   bool cached = false;         // the main program came from the cache: nothing compiled
+  // An interpreted graph scene's field was rebuilt (new buffers, pruned
+  // again): `compiled` programs went into this build, the worker's and
+  // those compiled in line; `prune_ms` the pruning pass, < 0 with no grid.
+  bool graph = false;
+  int compiled = 0;
+  double prune_ms = -1.0;
 };
 
 class Session {
@@ -75,6 +82,16 @@ class Session {
     int view = 0;
     bool fused = false;  // the one-pass frame (fuse_frame())
     std::vector<ShaderSource> compiling;  // what to_compile() listed: adopt()'s `compiled` match these
+    // An interpreted graph read anew (a rebuild of the same one keeps the
+    // field): its parts and pruning pass (empty text without a grid), and
+    // the field the worker built from them, if it did (live/compile_worker.h);
+    // else adopt() builds it, compiling the pruning pass when it is new.
+    std::shared_ptr<const SceneGraph> graph_of;
+    std::shared_ptr<const GraphParts> graph;
+    ShaderSource prune_src;
+    std::shared_ptr<const Program> prune;
+    std::shared_ptr<GraphField> field;
+    bool keep_field = false;
   };
   PreparedReload prepare(bool from_disk);
   std::vector<ShaderSource> to_compile(PreparedReload& p, int* passes) const;
@@ -86,6 +103,9 @@ class Session {
   const Scene& file_scene() const { return file_scene_; }  // writeback diffs against it
   bool shadertoy() const { return !scene_.shadertoy_file.empty() || scene_.passes != nullptr; }
   bool has_toml() const { return scene_.file.extension() == ".toml"; }
+  // Files read with the scene itself (the TOML, its graph's JSON): a save
+  // of one is a reload(true).
+  std::vector<std::filesystem::path> scene_files() const;
 
   // True when the scene as edited in the panel needs other shader code than
   // the current program has (a reflectivity dragged from or to 0 adds or
@@ -102,6 +122,9 @@ class Session {
   bool fuse_wanted() const { return fuse_frame(scene_, accumulate_, shadertoy() ? 0 : debug_view, shadertoy()); }
   bool fused() const { return fused_; }
 
+  // An interpreted graph scene's node buffers and pruned grid, bound
+  // before every draw of the scene pass; null otherwise.
+  std::shared_ptr<const GraphField> field() const { return field_; }
   // The graph to draw (null before the first good build) and its post pass.
   PassGraph* graph() const { return graph_.get(); }
   const Program* main_program() const { return graph_ ? &graph_->program(graph_->size() - 1) : nullptr; }
@@ -136,6 +159,8 @@ class Session {
   // Delete the GL programs now, while the context is still current (the
   // viewer calls this before the window goes).
   void release_gl() {
+    field_.reset();
+    prune_.reset();
     graph_.reset();
     post_.reset();
     bloom_.reset();
@@ -143,12 +168,14 @@ class Session {
   }
 
   std::vector<SceneParam>& params() { return params_; }
-  // The scene file, every file the last successful preprocess read, and the
-  // file named by the last error.
+  // The scene file, its graph's JSON, every file the last successful
+  // preprocess read, and the file named by the last error.
   std::vector<std::filesystem::path> watched_files() const;
 
  private:
   void fail(const Error& e, ReloadResult& r);
+  void prepare_graph(const AssembleOptions& opts, PreparedReload& p) const;
+  std::shared_ptr<GraphField> adopt_field(PreparedReload& p, ReloadResult& r);
   SessionOptions opts_;
   Scene scene_, file_scene_;
   bool disk_ok_ = false;
@@ -157,6 +184,10 @@ class Session {
   std::shared_ptr<const AudioClip> audio_;
   std::shared_ptr<const Program> post_;
   std::unique_ptr<BloomStage> bloom_;  // with post_: its post pass was assembled with BLOOM 1
+  std::shared_ptr<GraphField> field_;
+  std::shared_ptr<const SceneGraph> field_graph_;  // what field_ was built from
+  std::shared_ptr<const Program> prune_;  // the last pruning pass, kept by its text: a move reuses it
+  std::string prune_text_;
   std::vector<std::string> warnings_;
   ProgramCache cache_;     // every program built, by source hash: a toggle seen before is not recompiled
   bool specialized_ = false;

@@ -34,6 +34,7 @@
 #include "render/frame.h"
 #include "render/gpu_timer.h"
 #include "render/tiles.h"
+#include "scene/graph_scene.h"
 #include "scene/load.h"
 #include "scene/writeback.h"
 
@@ -81,10 +82,18 @@ void Viewer::watch_bounds(double now) {
   bounds_params_ = session_.params();
   t_bounds_ = now;
   std::string w;
-  try {
-    w = bounds_warning(session_.scene().file.string(), drawer_->check_bounds(o_.assemble, bounds_cache_));
-  } catch (const Error&) {
-    return;  // the probe is the main pass's code: its reload reports the error
+  const Scene& scene = session_.scene();
+  if (scene.graph) {  // as render: a graph's box says what it may draw, no probe (nor its compile) needed
+    const std::string over = scene.bounds.kind == BoundsKind::box ? graph_overhang(scene) : std::string();
+    if (!over.empty())
+      w = scene.file.string() + ": warning: the scene graph's box pokes out of [bounds] " + over +
+          ": what lies there is cut off; grow [bounds] or delete it";
+  } else {
+    try {
+      w = bounds_warning(scene.file.string(), drawer_->check_bounds(o_.assemble, bounds_cache_));
+    } catch (const Error&) {
+      return;  // the probe is the main pass's code: its reload reports the error
+    }
   }
   if (w == bounds_warning_) return;
   bounds_warning_ = w;

@@ -34,7 +34,9 @@ void Viewer::build(Compiling c, bool wait) {
     const ReloadResult r = session_.adopt(std::move(c.plan), {}, nullptr, 0.0);
     return finish_build(c, r, 0.0);
   }
-  CompileJob job{++jobs_, std::move(sources), passes, !c.plan.fused, std::nullopt, {}};
+  CompileJob job{++jobs_, std::move(sources), passes, !c.plan.fused, std::nullopt, {}, c.plan.graph, std::nullopt,
+                 c.plan.keep_field ? session_.field() : nullptr};
+  if (!c.plan.prune_src.text.empty()) job.prune = c.plan.prune_src;
   // Traced with compute: the worker compiles that program too (docs/viewer.md#compute).
   // A pass compute refuses goes without: the UI thread's update() says why.
   if (c.plan.result.ok && !c.plan.passes.empty()) {
@@ -63,6 +65,8 @@ void Viewer::adopt_compiled(bool wait) {
   else got = worker_->poll();
   if (!got || got->id != compiling_job_) return;
   compiling_.active = false;
+  compiling_.plan.field = std::move(got->field);  // built with the programs (live/compile_worker.h)
+  compiling_.plan.prune = std::move(got->prune);
   const ReloadResult r = session_.adopt(std::move(compiling_.plan), got->programs, got->error, got->gl_ms);
   if (r.ok && !compiling_.compute_text.empty())  // taken by the drawer's next update() (the program line's)
     drawer_->offer_compute(std::move(compiling_.compute_text), std::move(got->compute), std::move(got->compute_error));
@@ -95,6 +99,9 @@ void Viewer::finish_reload(const Compiling& c, const ReloadResult& r, double war
   if (!r.ok) report_failure(r);
   if (r.ok)  // docs/viewer.md#folding, #compute
     log_.line(std::string("program fused=") + (session_.fused() ? "1" : "0") + " dispatch=" + drawer_->dispatch());
+  if (r.ok && r.graph)  // docs/viewer.md#graphs: a parameter or transform saved compiles nothing
+    log_.line("graph updated: " + std::to_string(r.compiled) + " programs compiled, " +
+              (r.prune_ms < 0.0 ? std::string("not pruned") : "pruning " + fmt("%.1f", r.prune_ms) + " ms"));
   if (r.ok && session_.audio().get() != audio_clip_) {  // a music input came, went or changed
     audio_clip_ = session_.audio().get();
     if (!audio_clip_) {
@@ -129,9 +136,10 @@ void Viewer::poll_files() {
   if (!changed.empty()) {
     const double t_event = seconds_now();
     watcher_.settle(changed, o_.debounce_ms, 100);
-    const fs::path scene_file = fs::absolute(session_.scene().file).lexically_normal();
-    const bool toml = std::find(changed.begin(), changed.end(), scene_file) != changed.end();
-    reload(toml, t_event, frames_, iterations_);
+    bool from_disk = false;  // the TOML or its graph's JSON: read the scene again
+    for (const fs::path& f : session_.scene_files())
+      from_disk = from_disk || std::find(changed.begin(), changed.end(), fs::absolute(f).lexically_normal()) != changed.end();
+    reload(from_disk, t_event, frames_, iterations_);
   } else if (s_.want_disk_reload) {
     s_.want_disk_reload = false;
     reload(true, seconds_now(), frames_, iterations_);

@@ -76,6 +76,9 @@ void FrameDrawer::sync_trace() {
 
 void FrameDrawer::draw_scene(PassGraph& graph, const Program& post, const FrameInputs& in, const FrameParams& fp,
                              bool step) {
+  // map() of an interpreted graph reads these (live/session.h); auto's
+  // probe in sync_trace() draws it too.
+  if (const std::shared_ptr<const GraphField> field = session_.field()) field->bind();
   sync_trace();
   if (trace_.active()) trace_.draw(graph, post, in, fp, step);
   else graph.draw(renderer_, post, in, fp, step);

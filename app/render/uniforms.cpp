@@ -115,6 +115,13 @@ void set_scene_uniforms(const Program& p, const Scene& s, int width, int height,
   p.set("uSkyHorizon", s.sky.horizon);
   p.set("uSkyZenith", s.sky.zenith);
   p.set("uAmbient", s.sky.ambient);
+  // BOUNDS_UNIFORMS (sdf_shaders/bounds.glsl): BOUNDS_A and BOUNDS_B as assemble.cpp folds them.
+  if (s.bounds.kind == BoundsKind::box) {
+    p.set("uBoundsA", glm::vec4(s.bounds.min, 0.0f));
+    p.set("uBoundsB", glm::vec4(s.bounds.max, 0.0f));
+  } else if (s.bounds.kind == BoundsKind::sphere) {
+    p.set("uBoundsA", glm::vec4(s.bounds.center, s.bounds.radius));
+  }
   if (!s.sky.environment.empty()) {  // ENV_MAP (render/environment.h): the map turned by -rotation into world
     const float a = radians(s.sky.rotation);
     const glm::mat3 rot(std::cos(a), 0.0f, std::sin(a), 0.0f, 1.0f, 0.0f, -std::sin(a), 0.0f, std::cos(a));

@@ -125,7 +125,8 @@ std::string glsl_vec4(glm::vec3 v, float w) {
 // The tracer's analytic geometry (sdf_shaders/bounds.glsl): the declared
 // planes (exact, or marched with analytic_planes off: the textbook way), the
 // bounding volume when quality.bounds is on, and the over-relaxation.
-void define_tracer_geometry(std::string& root, const Scene& scene) {
+// `uniforms`: a graph scene's bounds are uniforms (AssembleOptions::bounds_uniforms).
+void define_tracer_geometry(std::string& root, const Scene& scene, bool uniforms) {
   const Quality& q = scene.quality;
   define(root, "OMEGA", glsl_float(q.omega));
   define(root, "NUM_PLANES", static_cast<int>(scene.planes.size()));
@@ -142,6 +143,10 @@ void define_tracer_geometry(std::string& root, const Scene& scene) {
   const Bounds& b = scene.bounds;
   const int kind = !q.bounds ? 0 : b.kind == BoundsKind::sphere ? 1 : b.kind == BoundsKind::box ? 2 : 0;
   define(root, "BOUNDS_KIND", kind);
+  if (kind != 0 && uniforms && scene.graph) {
+    define(root, "BOUNDS_UNIFORMS", 1);  // sdf_shaders/bounds.glsl
+    return;
+  }
   if (kind == 1) define(root, "BOUNDS_A", glsl_vec4(b.center, b.radius));
   if (kind == 2) {
     define(root, "BOUNDS_A", glsl_vec4(b.min, 0.0f));
@@ -228,7 +233,7 @@ ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts, con
   define(root, "ENABLE_AO", q.ao ? 1 : 0);
   define(root, "ENABLE_REFLECTIONS", q.reflections ? 1 : 0);
   define(root, "ENABLE_CHECKER_FILTER", q.checker_filter ? 1 : 0);
-  define_tracer_geometry(root, scene);
+  define_tracer_geometry(root, scene, opts.bounds_uniforms);
   root += sp.defines;
   for (const auto& [name, value] : opts.defines) {
     if (root.find("#define " + name + " ") != std::string::npos)

@@ -41,6 +41,10 @@ struct AssembleOptions {
   GraphEval graph_eval = GraphEval::auto_;
   bool prune = true;
   float cell_size = 0.0f;  // the pruning grid's cells; 0: from the node count
+  // A graph scene's [bounds] read from uniforms (uBoundsA, uBoundsB), not
+  // folded: the viewer's, where they follow the graph's box and a saved
+  // transform moves them without a compile (docs/viewer.md#graphs).
+  bool bounds_uniforms = false;
 };
 
 // How a graph scene's map() is evaluated, and the interpreter's buffers

@@ -21,6 +21,7 @@
 #include "scene/graph_vocab.h"
 #include "scene/load.h"
 #include "scene/quality.h"
+#include "shader/assemble.h"
 
 namespace fs = std::filesystem;
 using ms::test::TempDir;
@@ -271,6 +272,37 @@ TEST(GraphScene, AnInlineGraphNamesItsKeyAndExcludesMap) {
   } catch (const ms::Error& e) {
     EXPECT_NE(std::string(e.what()).find("'scene.map' and 'scene.graph' exclude each other"), std::string::npos);
   }
+}
+
+// The viewer's shader for a graph scene (AssembleOptions::bounds_uniforms)
+// reads the bounds the graph's box gives from uniforms: a translate that
+// moves the box leaves the interpreted shader's text as it was. With
+// opUnionColumns the graph has no pruning grid, whose geometry is the
+// interpreter's to keep out of the text.
+TEST(GraphScene, BoundsAsUniformsKeepTheShaderAcrossAMove) {
+  TempDir dir;
+  const auto graph = [](const std::string& x) {
+    return "{\"root\": {\"op\": \"opUnionColumns\", \"r\": 0.1, \"n\": 3, \"children\": ["
+           "{\"sdf\": \"sdSphere\", \"r\": 1}, {\"sdf\": \"sdBox\", \"b\": [1, 1, 1], \"translate\": [" +
+           x + ", 0, 0]}]}}";
+  };
+  write_file(dir / "s.toml", "[scene]\ngraph = \"g.json\"\n[[materials]]\nname = \"m\"\n");
+  ms::AssembleOptions opts{fs::path(MARCH_SOURCE_DIR) / "sdf_shaders"};
+  opts.specialize = ms::Specialization::folded;
+  opts.graph_eval = ms::GraphEval::interpreter;
+  std::string text[2][2];  // [bounds_uniforms][translate]
+  for (int u = 0; u < 2; ++u)
+    for (int x = 0; x < 2; ++x) {
+      write_file(dir / "g.json", graph(x == 0 ? "3" : "4.5"));
+      const ms::Scene scene = ms::load_scene(dir / "s.toml");
+      opts.bounds_uniforms = u == 1;
+      text[u][x] = ms::assemble_scene(scene, opts).text;
+    }
+  EXPECT_NE(text[0][0], text[0][1]) << "folded, the box is in the text";
+  EXPECT_EQ(text[1][0], text[1][1]);
+  EXPECT_NE(text[1][0].find("#define BOUNDS_UNIFORMS 1\n"), std::string::npos);
+  EXPECT_EQ(text[1][0].find("#define BOUNDS_A vec4("), std::string::npos);
+  EXPECT_NE(text[0][0].find("#define BOUNDS_A vec4("), std::string::npos);
 }
 
 }  // namespace
