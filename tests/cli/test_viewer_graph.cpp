@@ -80,7 +80,7 @@ class ViewerGraph : public ::testing::Test {
 TEST_F(ViewerGraph, AMoveRepointsTheBuffersAndANewNodeCompilesOnce) {
   start("view_edit", {"--graph-eval", "interpreter"});
   ASSERT_EQ(graph_lines().size(), 1u) << read_file(log());
-  // The ball moves inside the frame: the same box, the same grid.
+  // The ball moves inside the frame: the same box.
   save("[-0.45, 1, 0]", "[0.45, 1, 0]", 1);
   std::vector<std::string> lines = graph_lines();
   ASSERT_EQ(lines.size(), 2u) << read_file(log());
@@ -89,15 +89,24 @@ TEST_F(ViewerGraph, AMoveRepointsTheBuffersAndANewNodeCompilesOnce) {
   EXPECT_EQ(compiles(1), 0u) << read_file(log());
   EXPECT_GT(mean_abs_diff(capture(1), capture(0)), 1e-3) << "the move did not change the frame";
   EXPECT_LE(max_abs_diff(capture(1), render({"--graph-eval", "interpreter"})), 2.0 / 255.0);
-  // A third child is a new program: compiled once, on the worker.
-  save("\"material\": \"ball\"}", "\"material\": \"ball\"},\n  {\"sdf\": \"sdSphere\", \"r\": 0.3, \"translate\": [0, 0.4, -0.3]}",
-       2);
+  // The frame moves: a new box, bounds and grid, all in buffers and uniforms.
+  save("[0, 1, 0]", "[0.3, 1.2, -0.2]", 2);
   lines = graph_lines();
   ASSERT_EQ(lines.size(), 3u) << read_file(log());
-  EXPECT_TRUE(std::regex_match(lines[2], std::regex(R"(graph updated: [1-9]\d* programs compiled, pruning .* ms)")))
+  EXPECT_TRUE(std::regex_match(lines[2], std::regex(R"(graph updated: 0 programs compiled, pruning \d+\.\d ms)")))
       << lines[2];
-  EXPECT_EQ(compiles(2), 1u) << read_file(log());
+  EXPECT_EQ(compiles(2), 0u) << read_file(log());
+  EXPECT_GT(mean_abs_diff(capture(2), capture(1)), 1e-3) << "the move did not change the frame";
   EXPECT_LE(max_abs_diff(capture(2), render({"--graph-eval", "interpreter"})), 2.0 / 255.0);
+  // A third child is a new program: compiled once, on the worker.
+  save("\"material\": \"ball\"}", "\"material\": \"ball\"},\n  {\"sdf\": \"sdSphere\", \"r\": 0.3, \"translate\": [0, 0.4, -0.3]}",
+       3);
+  lines = graph_lines();
+  ASSERT_EQ(lines.size(), 4u) << read_file(log());
+  EXPECT_TRUE(std::regex_match(lines[3], std::regex(R"(graph updated: [1-9]\d* programs compiled, pruning .* ms)")))
+      << lines[3];
+  EXPECT_EQ(compiles(3), 1u) << read_file(log());
+  EXPECT_LE(max_abs_diff(capture(3), render({"--graph-eval", "interpreter"})), 2.0 / 255.0);
   EXPECT_TRUE(proc->running());
 }
 
