@@ -7,7 +7,7 @@
 A count of 0 skips that file. Deterministic (fixed seeds), so the
 repository's copy is what this writes:
 
-  tools/make-graph-scenes.py tests/data/graph/ --particles 0
+  tools/make-graph-scenes.py scenes/
   tools/make-graph-scenes.py out/ --molecule 0 --particles 30000   # tools/graph-figures.sh
 """
 import argparse

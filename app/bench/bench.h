@@ -55,6 +55,7 @@ struct BenchCost {
   double step_cap_fraction = 0; // primary ray ran out of MAX_STEPS (neither converged nor escaped)
   double hit_fraction = 0;      // primary ray hit a surface
   long long nonfinite_pixels = 0;  // pixels with NaN/Inf in any channel of the counting pass (colour or AOV)
+  std::optional<CountStats> primitive_evals;  // a graph scene's, when counted (its own pass)
 };
 
 // Cost from the AOVs read back from a spp-1 AOV frame (channels

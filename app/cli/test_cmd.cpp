@@ -114,6 +114,13 @@ PreparedCase prepare_case(const Suite& suite, const SuiteCase& c, const fs::path
       AssembleOptions count_opts = job.assemble_options();
       for (const auto& d : aov_defines()) count_opts.defines.push_back(d);
       pc.counting = assemble_scene(in.scene, count_opts);
+      if (c.cost->mean_primitive_evals) {
+        if (!in.scene.graph)
+          fail_input("case '" + c.name + "': mean_primitive_evals needs a scene graph, and its scene has none",
+                     suite.file.string(), c.line, "cost.mean_primitive_evals");
+        count_opts.defines.push_back({"MS_COST_PRIMS", "1"});
+        pc.counting_prims = assemble_scene(in.scene, count_opts);
+      }
     }
     pc.time = c.time ? *c.time : in.scene.render.time;
     check_frame_memory(frame_memory(fp.width, fp.height, frame_targets(c.cost.has_value()), c.cost.has_value()),

@@ -84,9 +84,14 @@ GraphEvalPlan plan_graph_eval(const SceneGraph& g, GraphEval eval, bool prune, c
   // happened to round two different programs.
   plan.keep_all = !prune;
   if (!plan.prune) return plan;
-  // Level 0: about 32 fine cells a primitive, within 16^3 and 2^17.
+  // Level 0: about 32 fine cells a primitive, within 16^3 and 2^17, over
+  // the bounds grown by a tenth of their largest half side: AO taps and
+  // shadow rays start just outside the bounds, on a floor under the
+  // objects, and are the most numerous map() calls there.
   const double target = std::clamp(32.0 * g.primitives, 4096.0, 131072.0);
-  plan.levels[0] = level_over(box.min, box.max - box.min, target, cell_size);
+  const glm::vec3 b_half = 0.5f * (box.max - box.min);
+  const float margin = 0.1f * std::max({b_half.x, b_half.y, b_half.z});
+  plan.levels[0] = level_over(box.min - margin, box.max - box.min + 2.0f * margin, target, cell_size);
   // The outer levels hold shadow rays, AO taps and reflections that leave
   // the bounds: each around the bounds and the graph, twice the last one's
   // size plus a quarter of its largest half side, in cells twice as large,
@@ -96,7 +101,7 @@ GraphEvalPlan plan_graph_eval(const SceneGraph& g, GraphEval eval, bool prune, c
   const glm::vec3 centre = 0.5f * (hi + lo);
   glm::vec3 half = 0.5f * (hi - lo);
   const float grow = 0.25f * std::max({half.x, half.y, half.z, 1e-3f});
-  float side = 2.0f * std::max({plan.levels[0].cell.x, plan.levels[0].cell.y, plan.levels[0].cell.z});
+  float side = std::max({plan.levels[0].cell.x, plan.levels[0].cell.y, plan.levels[0].cell.z});
   for (int j = 1; j < kGridLevels; ++j) {
     half = 2.0f * half + grow;
     side *= 2.0f;

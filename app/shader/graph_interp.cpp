@@ -181,8 +181,8 @@ std::string run_glsl(int n) {
 // the next finer level are empty (never looked up, but a rounding error
 // on that level's edge may land there, so an empty cell falls through).
 // A far cell (outer levels only) gives the lower bound its centre's value
-// and the Lipschitz bound make, or the whole program where that bound
-// says nothing. Past the last level the field is taken to be at least the
+// and the Lipschitz bound make, or the whole program where that bound is
+// under half the cell's half diagonal. Past the last level the field is taken to be at least the
 // distance to the graph's box, as the shadows' reach already takes it
 // (bounds.glsl shadowBoundsPad).
 std::string lookup_glsl() {
@@ -203,11 +203,13 @@ std::string lookup_glsl() {
       uvec4 cell = msGraphCell[MS_GRID_HEADER + a.w + c.x + d.x * (c.y + d.y * c.z)];
       start = cell.x;
       count = cell.y;
-      if (cell.w == 2u) {
-        vec3 size = uintBitsToFloat(b.xyz) * float(MS_GRID_SPLIT);
-        vec3 centre = uintBitsToFloat(a.xyz) + (vec3(c / uint(MS_GRID_SPLIT)) + 0.5) * size;
+      if (cell.w >= 2u) {  // far: 2 the value at its coarse cell's centre, 3 at its own
+        uint split = cell.w == 2u ? uint(MS_GRID_SPLIT) : 1u;
+        vec3 size = uintBitsToFloat(b.xyz) * float(split);
+        vec3 centre = uintBitsToFloat(a.xyz) + (vec3(c / split) + 0.5) * size;
         float lb = max(uintBitsToFloat(cell.x) - MS_GRAPH_L * length(p - centre), msGraphBoxDistance(p));
-        if (lb > 0.0) return vec2(lb, 0.0);
+        // A bound near 0 would read as a hit (a shadow ray's HIT_EPSILON).
+        if (lb > 0.25 * length(size)) return vec2(lb, 0.0);
         start = 0u;
         count = MS_GRAPH_LEN;
       }

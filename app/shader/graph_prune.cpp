@@ -144,7 +144,8 @@ void main() {
   if (!overflow && uLevel == 0) cell = uvec4(gBase, len, 0u, 0u);
   // An outer coarse cell too crowded for a list is far: it keeps the
   // root's value at its centre, a lower bound by the Lipschitz bound.
-  if (overflow && uLevel == 0 && uGrid > 0) cell = uvec4(floatBitsToUint(st[0].v.x), 0u, 0u, 2u);
+  // So is an outer fine cell, with the root's value at its own centre.
+  if (overflow && uGrid > 0) cell = uvec4(floatBitsToUint(st[0].v.x), 0u, 0u, uLevel == 0 ? 2u : 3u);
   if (!overflow && uLevel == 1) {
     uvec4 pool = msGraphCell[0];  // where the pool starts, its size
     uint at = atomicAdd(msPoolUsed, len);

@@ -39,6 +39,9 @@ struct CostBudget {
   std::optional<double> mean_primary_steps, p99_primary_steps;
   std::optional<double> mean_map_calls, p99_map_calls;  // every map() call of the pixel (sdf_evals)
   std::optional<double> step_cap_fraction;
+  // A scene graph's primitives evaluated per pixel over every map() call
+  // (bench's cost.primitive_evals: a second counting pass).
+  std::optional<double> mean_primitive_evals;
   // A step or map-call bound more than this factor above its measurement
   // protects nothing: fail, so an improvement gets its bound lowered.
   std::optional<double> max_slack;

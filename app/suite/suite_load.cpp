@@ -37,7 +37,7 @@ const Views kCaseKeys = {"name",      "scene",         "shader",     "exclude", 
                          "check",     "cost",          "frame_time"};
 const Views kCheckKeys = {"metric", "threshold", "warn", "pixel_threshold"};
 const Views kCostKeys = {"mean_primary_steps", "p99_primary_steps", "mean_map_calls",
-                         "p99_map_calls",      "step_cap_fraction", "max_slack"};
+                         "p99_map_calls",      "step_cap_fraction", "mean_primitive_evals", "max_slack"};
 const Views kTimeKeys = {"max_ratio", "warn_ratio", "frames", "rounds", "warmup"};
 const Views kBackends = {"auto", "egl", "osmesa"};
 const Views kEffects = {"shadows", "reflections", "ao", "checker-filter", "bloom"};
@@ -100,7 +100,7 @@ CostBudget read_cost(const Reader& r, const CaseTables& t) {
     if (tab) check_keys(r, *tab, p, kCostKeys, "[case.cost]");
   CostBudget b;
   std::optional<double>* fields[] = {&b.mean_primary_steps, &b.p99_primary_steps, &b.mean_map_calls,
-                                     &b.p99_map_calls, &b.step_cap_fraction};
+                                     &b.p99_map_calls, &b.step_cap_fraction, &b.mean_primitive_evals};
   bool any = false;
   for (std::size_t i = 0; i < std::size(fields); ++i) {
     double v = 0;

@@ -87,6 +87,7 @@ Json case_json(const CaseResult& r) {
                  {"step_cap_fraction", k.step_cap_fraction},
                  {"hit_fraction", k.hit_fraction},
                  {"nonfinite_pixels", k.nonfinite_pixels}};
+    if (k.primitive_evals) j["cost"]["primitive_evals"] = stats(*k.primitive_evals);
   } else {
     j["cost"] = nullptr;
   }

@@ -99,7 +99,9 @@ void check_cost(const CostBudget& b, const BenchCost& cost, CaseResult& r) {
               {"p99_primary_steps", b.p99_primary_steps, cost.primary_steps.p99, true},
               {"mean_map_calls", b.mean_map_calls, cost.sdf_evals.mean, true},
               {"p99_map_calls", b.p99_map_calls, cost.sdf_evals.p99, true},
-              {"step_cap_fraction", b.step_cap_fraction, cost.step_cap_fraction, false}};
+              {"step_cap_fraction", b.step_cap_fraction, cost.step_cap_fraction, false},
+              {"mean_primitive_evals", b.mean_primitive_evals,
+               cost.primitive_evals ? cost.primitive_evals->mean : 0.0, true}};
   for (const auto& row : rows) {
     if (!row.bound) continue;
     const double bound = *row.bound;
@@ -164,7 +166,10 @@ CaseResult run_case(Gl& gl, const Suite& suite, const PreparedCase& pc, const Pr
   if (c.cost) {
     FramePrograms& job = gl.job(pc, opts.dispatch);
     const FrameSpec f = frames_of(pc).front();
-    r.cost = count_frame_cost(job, pc.counting, animated(pc.frame.in.scene, f.time), f.time, pc.params);
+    const Scene posed = animated(pc.frame.in.scene, f.time);
+    r.cost = count_frame_cost(job, pc.counting, posed, f.time, pc.params);
+    if (c.cost->mean_primitive_evals)
+      r.cost->primitive_evals = count_frame_cost(job, pc.counting_prims, posed, f.time, pc.params).sdf_evals;
     check_cost(*c.cost, *r.cost, r);
   }
   if (c.time_budget && cal) check_time(gl, suite, pc, *cal, r);

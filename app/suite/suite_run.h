@@ -31,6 +31,7 @@ struct PreparedCase {
   PreparedFrame frame;        // pipeline/prepare.h, for the reference's format: its scene posed per frame
   double fps = 60.0;          // a still's frame rate: a shader's own (60), a scene's render --fps default
   ShaderSource counting;      // the AOV build, when spec->cost
+  ShaderSource counting_prims;  // and counting primitives, when it bounds mean_primitive_evals
   FrameParams params;         // size, spp, exposure, fused_post
   ImageFormat format = ImageFormat::png;  // the reference's (what the render is stored as)
   float time = 0.0f;          // of a still
