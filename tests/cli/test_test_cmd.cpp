@@ -249,6 +249,32 @@ TEST(TestCommand, CostBudgetsAreBenchsCountsAndFailBothWays) {
   EXPECT_NE(slack.out.find("cheaper now, lower the bound"), std::string::npos) << slack.out;
 }
 
+// A scene graph's primitive evaluations: bench's figure, bounded both
+// ways; on a scene without a graph the key is a one-line input error.
+TEST(TestCommand, PrimitiveEvalBudgetsAreBenchsAndNeedAGraph) {
+  SuiteDir d;
+  const std::string part = (source_dir() / "scenes/part.toml").string();
+  const RunResult b = run_marchstudio({"bench", part, "--size", "48x27", "--frames", "1", "--warmup", "0", "--json"});
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const double evals = json::parse(b.out).at("cost").at("primitive_evals").at("mean").get<double>();
+  ASSERT_GT(evals, 0.0);
+  auto suite_with = [&](const std::string& sc, double bound, const std::string& name) {
+    return d.suite("[[case]]\nname = \"c\"\nscene = \"" + sc + "\"\nsize = [48, 27]\n[case.cost]\n" +
+                       "mean_primitive_evals = " + std::to_string(bound) + "\n",
+                   name);
+  };
+  const RunResult ok = test_cmd(suite_with(part, evals * 1.1, "ok.toml"), {"--json"});
+  EXPECT_EQ(ok.exit_code, 0) << ok.err << ok.out;
+  EXPECT_NEAR(json_of(ok)["cases"][0]["cost"]["primitive_evals"]["mean"].get<double>(), evals, 1e-6);
+  const RunResult over = test_cmd(suite_with(part, evals * 0.9, "over.toml"));
+  EXPECT_EQ(over.exit_code, 1);
+  EXPECT_NE(over.out.find("mean_primitive_evals"), std::string::npos) << over.out;
+  const RunResult plain = test_cmd(suite_with(scene("columns"), 10.0, "plain.toml"));
+  EXPECT_NE(plain.exit_code, 0);
+  EXPECT_NE((plain.out + plain.err).find("mean_primitive_evals needs a scene graph"), std::string::npos)
+      << plain.out << plain.err;
+}
+
 // Frame time as a ratio to the calibration case, measured in the same run:
 // 16 samples per pixel cost several times one, whatever the machine's load.
 TEST(TestCommand, FrameTimeBudgetsAreRatiosToTheCalibrationCase) {
