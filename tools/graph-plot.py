@@ -18,7 +18,7 @@ def panel(x0, title, ylabel, series, xs_all):
     lx = (math.floor(math.log10(min(xs_all))), math.ceil(math.log10(max(xs_all))))
     ly = (math.floor(math.log10(min(ys_all))), math.ceil(math.log10(max(ys_all))))
     def px(x):
-        return x0 + PAD + (math.log10(x) - lx[0]) / (lx[1] - lx[0]) * (W - PAD - 12)
+        return x0 + PAD + (math.log10(x) - lx[0]) / (lx[1] - lx[0]) * (W - PAD - 34)
     def py(y):
         return H - PAD + 14 - (math.log10(y) - ly[0]) / (ly[1] - ly[0]) * (H - PAD - 20)
     out = [f'<text x="{x0 + W / 2}" y="16" text-anchor="middle" font-weight="bold">{title}</text>']

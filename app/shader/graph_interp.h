@@ -22,7 +22,7 @@ enum class GraphEval { auto_, inline_, interpreter };
 
 // At or above this many primitives `auto` interprets (docs/scene-graph.md
 // gives the measured crossover).
-inline constexpr int kInterpretFrom = 64;
+inline constexpr int kInterpretFrom = 512;
 
 // One level of the pruning grid: level 0 covers the region rays march,
 // each next one a larger box around it (for the shadows, AO taps and
