@@ -64,7 +64,6 @@ AssembleOptions assemble_options(const std::string& shader_dir, const std::vecto
   AssembleOptions opts{resolve_shader_dir(shader_dir), {}, parse_allow_include(allow_include)};
   opts.specialize = no_specialize ? Specialization::generic : Specialization::folded;
   opts.uniforms = uniforms;
-  opts.graph_eval = GraphEval::inline_;  // sweep's rows bind no node buffers (docs/scene-graph.md)
   return opts;
 }
 

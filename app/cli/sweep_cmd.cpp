@@ -63,6 +63,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   cmd->add_flag("-q,--quiet", a.quiet, "No progress lines on stderr");
   cmd->add_flag("--no-specialize", a.no_specialize,
                 "Measure the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
+  add_graph_flags(cmd, a.graph_eval, a.no_prune);
   add_override_flags(cmd, a.overrides);
   add_dispatch_flag(cmd, a.dispatch,
                     "Draw every row as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
@@ -91,6 +92,9 @@ std::string command_line(const SweepArgs& a) {
   }
   if (a.backend != Backend::automatic) c += std::string(" --backend ") + backend_name(a.backend);
   if (a.no_specialize) c += " --no-specialize";
+  if (a.graph_eval != GraphEval::auto_)
+    c += std::string(" --graph-eval ") + (a.graph_eval == GraphEval::inline_ ? "inline" : "interpreter");
+  if (a.no_prune) c += " --no-prune";
   if (a.dispatch != Dispatch::fragment) c += std::string(" --dispatch ") + dispatch_name(a.dispatch);
   for (const std::string& o : a.overrides.as_given) {  // "--set KEY=VALUE": the value quoted, brackets are shell globs
     const size_t space = o.find(' ');
@@ -106,7 +110,9 @@ std::string command_line(const SweepArgs& a) {
 int run_sweep_command(const SweepArgs& a) {
   const Backend backend = a.backend;
   // The shader render and bench build: specialized to the scene (and each row's quality).
-  const AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
+  AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
+  opts.graph_eval = a.graph_eval;
+  opts.prune = !a.no_prune;
   SweepSettings s;
   const ImageSize size = a.size;
   s.width = size.width;
@@ -134,6 +140,12 @@ int run_sweep_command(const SweepArgs& a) {
   check_compute_input(s.dispatch, in);
 
   std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.preset);
+  if (in.scene.graph) {  // the pruning grid's cells: half and twice the planned size
+    const GraphParts parts = graph_parts(in.scene, opts);
+    const glm::vec3 cell = parts.plan.prune && !parts.plan.keep_all ? parts.plan.levels[0].cell : glm::vec3(0.0f);
+    for (SweepConfig& c : cell_size_rows(in.scene.quality, std::max({cell.x, cell.y, cell.z}), a.preset))
+      configs.push_back(std::move(c));
+  }
   if (!a.only.empty()) {
     std::vector<SweepConfig> kept;
     for (const std::string& name : a.only) {

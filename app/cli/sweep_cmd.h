@@ -37,6 +37,8 @@ struct SweepArgs {
   std::vector<std::string> allow_include;
   bool quiet = false;
   bool no_specialize = false;       // time the generic shader, as bench --no-specialize
+  GraphEval graph_eval = GraphEval::auto_;  // --graph-eval
+  bool no_prune = false;                   // --no-prune
   Overrides overrides;              // --set, --uniform (cli/override_flags.h)
   Dispatch dispatch = Dispatch::fragment;  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
   std::optional<ComputeGroup> compute_group;  // hidden --compute-group; none: 8x8, or auto's measured group

@@ -32,7 +32,7 @@ struct GridLevel {
   glm::vec3 cell{0.0f};  // one cell's size
   glm::ivec3 dims{0};    // cells along x, y, z
 };
-inline constexpr int kGridLevels = 4;
+inline constexpr int kGridLevels = 3;
 struct GraphEvalPlan {
   bool interpret = false;
   bool prune = false;            // the interpreter with a grid of cell lists

@@ -5,6 +5,7 @@
 #include <ctime>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <utility>
 
@@ -14,6 +15,7 @@
 #include "core/error.h"
 #include "render/aov.h"
 #include "render/frame.h"
+#include "render/graph_field.h"
 #include "render/gpu_timer.h"
 #include "render/scene_drawer.h"
 #include "render/uniforms.h"
@@ -51,6 +53,7 @@ class RowRenderer {
   bool fused() const { return s_.spp == 1; }
   AssembleOptions opts_for(const SweepConfig& c, bool aovs, bool fused = false) const {
     AssembleOptions o = opts_;
+    o.cell_size = c.cell_size;
     o.defines.insert(o.defines.end(), c.tunables.begin(), c.tunables.end());
     if (aovs)
       for (const auto& d : aov_defines()) o.defines.push_back(d);
@@ -72,10 +75,29 @@ class RowRenderer {
     return fp;
   }
 
+  // A graph scene's node buffers and pruned grid for the row's cell size,
+  // built the first time a row asks, bound before each of its draws.
+  void bind_field(const SweepConfig& c) {
+    if (!scene_.graph) return;
+    Field& f = fields_[c.cell_size];
+    if (!f.built) {
+      f.built = true;
+      const Scene sc = scene_for(c);
+      const AssembleOptions o = opts_for(c, false);
+      const GraphParts parts = graph_parts(sc, o);
+      if (!parts.plan.interpret) return;  // inline: nothing to bind
+      if (parts.plan.prune && !parts.plan.keep_all)
+        f.prune = std::make_unique<Program>(Program::Compute{}, assemble_graph_prune(sc, parts, o));
+      f.field = std::make_unique<GraphField>(parts.buffers, parts.plan, f.prune.get());
+    }
+    if (f.field) f.field->bind();
+  }
+
   // The image at `spp`, with AOVs when asked.
   Frame render(const SweepConfig& c, int spp, bool aovs) {
     const Scene sc = scene_for(c);
     const std::unique_ptr<Program> prog = renderer_.program(assemble_scene(sc, opts_for(c, aovs)));
+    bind_field(c);
     renderer_.draw_program(*prog, uniforms(sc, s_.width, s_.height), post_, params(spp, aovs));
     Frame f;
     f.color = renderer_.read_color();
@@ -92,6 +114,7 @@ class RowRenderer {
     const ShaderSource src = assemble_scene(sc, opts_for(c, false, fused()));
     const Clock::time_point t0 = Clock::now();
     std::unique_ptr<Program> prog = renderer_.program(src);
+    bind_field(c);
     FrameParams tiny = params(1, false, fused());
     tiny.width = tiny.height = 1;
     renderer_.draw_program(*prog, uniforms(sc, 1, 1), post_, tiny);
@@ -111,6 +134,7 @@ class RowRenderer {
                      std::vector<double>& cpu) {
     const Scene sc = scene_for(c);
     const FrameParams fp = params(s_.spp, false, fused());
+    bind_field(c);
     for (int i = 0; i < s_.warmup; ++i) renderer_.draw_program(prog, uniforms(sc, s_.width, s_.height), post_, fp);
     glFinish();
     std::vector<double> g, w, u;
@@ -139,6 +163,12 @@ class RowRenderer {
   std::string vs_;
   Program post_;
   GpuTimer timer_;
+  struct Field {
+    bool built = false;
+    std::unique_ptr<Program> prune;
+    std::unique_ptr<GraphField> field;  // null for a graph written inline
+  };
+  std::map<float, Field> fields_;
 };
 
 // Depth and hit/miss of `aovs` against a reference given per pixel. A pixel

@@ -115,4 +115,15 @@ std::string tunable(const SweepConfig& c, const std::string& name, const std::st
   return fallback;
 }
 
+std::vector<SweepConfig> cell_size_rows(const Quality& scene, float auto_side, const std::string& base) {
+  std::vector<SweepConfig> rows;
+  if (auto_side <= 0.0f) return rows;
+  for (const float f : {0.5f, 2.0f}) {
+    SweepConfig c{"cell=" + std::string(f < 1.0f ? "0.5x" : "2x"), "cell_size", sweep_preset_quality(scene, base), {}};
+    c.cell_size = auto_side * f;
+    rows.push_back(std::move(c));
+  }
+  return rows;
+}
+
 }  // namespace ms

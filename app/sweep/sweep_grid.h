@@ -19,6 +19,8 @@ struct SweepConfig {
   // Library tunables (#defines before prelude.glsl): NORMAL_EPS_SCALE,
   // NORMAL_EPS_MIN, SHADOW_ESTIMATOR, SHADOW_MAX_STEP. Empty: the defaults.
   std::vector<std::pair<std::string, std::string>> tunables;
+  // A scene graph's pruning cells (axis "cell_size"); 0: sized from the node count.
+  float cell_size = 0.0f;
 };
 
 enum class SweepGrid { quick, full };
@@ -42,6 +44,11 @@ Quality sweep_preset_quality(const Quality& scene, const std::string& preset);
 // planes and no bounds, or analytic planes and bounds). Rows whose settings
 // repeat an earlier row are left out.
 std::vector<SweepConfig> sweep_grid(const Quality& scene, SweepGrid grid, const std::string& base = "balanced");
+
+// A scene graph's rows of the "cell_size" axis: preset `base` with cells
+// of half, and twice, `auto_side` (the pruning grid's cells as planned
+// from the node count); none when auto_side is 0 (no grid).
+std::vector<SweepConfig> cell_size_rows(const Quality& scene, float auto_side, const std::string& base = "balanced");
 
 // The tunable's value in `c`, or `fallback` (the library default) when unset.
 std::string tunable(const SweepConfig& c, const std::string& name, const std::string& fallback);

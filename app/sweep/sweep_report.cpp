@@ -116,6 +116,7 @@ std::string sweep_json(const SweepSubject& subject, const SweepSettings& s, cons
                {"axis", c.axis},
                {"quality", quality_json(c.quality)},
                {"tunables", tun},
+               {"cell_size", c.cell_size},
                {"time_ms",
                 {{"gpu", row.gpu_best_median},
                  {"wall", row.wall_best_median},

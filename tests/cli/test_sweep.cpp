@@ -220,6 +220,40 @@ TEST(Sweep, SceneWithoutExactReferenceSaysWhy) {
   for (const json& row : j.at("rows")) EXPECT_TRUE(row.at("error").at("exact").is_null());
 }
 
+// A graph scene sweeps its pruning grid's cell size: half and twice the
+// planned cells, on the interpreter with the grid; pruning is exact, so
+// every cell size gives the balanced row's image. With --no-prune there is
+// no cell-size axis (every cell holds the whole graph).
+TEST(Sweep, AGraphSceneGetsACellSizeAxis) {
+  TempDir dir;
+  const std::string part = (source_dir() / "tests/data/graph/part.toml").string();
+  const std::vector<std::string> common = {"sweep", part, "--size", "32x18", "--frames", "1", "--warmup", "0",
+                                           "--ref-spp", "2", "--graph-eval", "interpreter", "-q", "-o",
+                                           dir.path().string()};
+  std::vector<std::string> args = common;
+  args.insert(args.end(), {"--only", "balanced,cell=0.5x,cell=2x"});
+  const RunResult r = run_marchstudio(args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(read_file(dir / "part.sweep.json"));
+  ASSERT_EQ(j.at("rows").size(), 3u);
+  std::map<std::string, json> rows;
+  for (const json& row : j.at("rows")) rows[row.at("name")] = row;
+  const double half = rows.at("cell=0.5x").at("cell_size"), twice = rows.at("cell=2x").at("cell_size");
+  EXPECT_EQ(rows.at("balanced").at("cell_size"), 0.0);
+  EXPECT_GT(half, 0.0);
+  EXPECT_NEAR(twice, 4.0 * half, 1e-5 * twice);
+  EXPECT_EQ(rows.at("cell=2x").at("axis"), "cell_size");
+  for (const char* n : {"cell=0.5x", "cell=2x"}) {
+    EXPECT_EQ(rows.at(n).at("error").at("same_spp").at("psnr"), rows.at("balanced").at("error").at("same_spp").at("psnr"))
+        << n;
+    EXPECT_EQ(rows.at(n).at("cost").at("mean_steps"), rows.at("balanced").at("cost").at("mean_steps")) << n;
+  }
+  args = common;
+  args.insert(args.end(), {"--no-prune", "--only", "cell=2x"});
+  const RunResult np = run_marchstudio(args);
+  EXPECT_EQ(np.exit_code, 2) << "no grid, no cell-size rows: " << np.err;
+}
+
 TEST(Sweep, BadInputExitsTwo) {
   TempDir dir;
   for (const std::vector<std::string>& extra :
