@@ -20,10 +20,6 @@ void upload(GLuint buf, const std::vector<T>& data, std::size_t extra_bytes = 0)
     glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data());
 }
 
-std::size_t cell_count_of(const GridLevel& l) {
-  return static_cast<std::size_t>(l.dims.x) * static_cast<std::size_t>(l.dims.y) * static_cast<std::size_t>(l.dims.z);
-}
-
 }  // namespace
 
 GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const Program* prune)
@@ -47,11 +43,12 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
   // Per grid level, coarse cells first, then each fine cell from its coarse cell's list.
   for (int grid = 0; grid < kGridLevels; ++grid) {
     prune->set("uGrid", grid);
-    const glm::ivec3 d = plan.levels[grid].dims, cd = (d + 3) / 4;
+    const GridLevel& l = plan.levels[grid];
     for (int level = 0; level < 2; ++level) {
       prune->set("uLevel", level);
-      const glm::ivec3 n = level == 0 ? cd : d;
-      glDispatchCompute(static_cast<GLuint>((static_cast<std::size_t>(n.x) * n.y * n.z + 63) / 64), 1, 1);
+      const glm::ivec3 c = coarse_dims(l);
+      const std::size_t n = level == 0 ? static_cast<std::size_t>(c.x) * c.y * c.z : cell_count(l);
+      glDispatchCompute(static_cast<GLuint>((n + 63) / 64), 1, 1);
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
   }
@@ -62,7 +59,7 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
   build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   // The mean over level 0, the bounds that rays march; the outer levels'
   // cells are larger and rarely visited.
-  const std::size_t inner = cell_count_of(plan.levels[0]);
+  const std::size_t inner = cell_count(plan.levels[0]);
   double sum = 0.0;
   for (std::size_t i = 0; i < cells; ++i) {
     if (i < inner) sum += out[i * 4 + 1];

@@ -162,7 +162,7 @@ GraphParts graph_parts(const Scene& scene, const AssembleOptions& opts) {
   const GraphBox box = scene.bounds.kind == BoundsKind::box ? GraphBox{scene.bounds.min, scene.bounds.max}
                                                             : scene.graph->root_node().box;
   parts.plan = plan_graph_eval(*scene.graph, opts.graph_eval, opts.prune, box, opts.cell_size);
-  if (parts.plan.interpret) parts.buffers = graph_buffers(*scene.graph, parts.plan);
+  if (parts.plan.interpret) parts.buffers = graph_buffers(*scene.graph);
   return parts;
 }
 

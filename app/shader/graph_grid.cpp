@@ -8,14 +8,7 @@
 
 namespace ms {
 
-using graph_detail::coarse_dims;
 using graph_detail::kCoarseList;
-
-namespace graph_detail {
-
-glm::ivec3 coarse_dims(const GridLevel& level) { return (level.dims + kSplit - 1) / kSplit; }
-
-}  // namespace graph_detail
 
 namespace {
 
@@ -25,10 +18,6 @@ constexpr int kPruneLoopLimit = 65000;
 // All fine lists together, in instructions (64 MiB); past it a cell keeps
 // its coarse cell's list, which is as exact and only longer.
 constexpr std::size_t kPoolMax = std::size_t{16} << 20;
-
-std::size_t volume(glm::ivec3 d) {
-  return static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y) * static_cast<std::size_t>(d.z);
-}
 
 GridLevel level_over(glm::vec3 lo, glm::vec3 extent, double cells, float side) {
   extent = glm::max(extent, glm::vec3(1e-4f));
@@ -46,17 +35,25 @@ std::uint32_t bits(float f) {
   return u;
 }
 
+std::size_t volume_of(glm::ivec3 d) {
+  return static_cast<std::size_t>(d.x) * static_cast<std::size_t>(d.y) * static_cast<std::size_t>(d.z);
+}
+
 }  // namespace
+
+glm::ivec3 coarse_dims(const GridLevel& level) { return (level.dims + graph_detail::kSplit - 1) / graph_detail::kSplit; }
+
+std::size_t cell_count(const GridLevel& level) { return volume_of(level.dims); }
 
 std::size_t coarse_cell_count(const GraphEvalPlan& plan) {
   std::size_t n = 0;
-  for (const GridLevel& l : plan.levels) n += volume(coarse_dims(l));
+  for (const GridLevel& l : plan.levels) n += volume_of(coarse_dims(l));
   return n;
 }
 
 std::size_t cell_count(const GraphEvalPlan& plan) {
   std::size_t n = 0;
-  for (const GridLevel& l : plan.levels) n += volume(l.dims);
+  for (const GridLevel& l : plan.levels) n += cell_count(l);
   return n;
 }
 
@@ -129,8 +126,8 @@ std::vector<std::uint32_t> grid_header(const GraphEvalPlan& plan, const GraphBuf
     }
     e[3] = static_cast<std::uint32_t>(cells);
     e[7] = static_cast<std::uint32_t>(coarse);
-    cells += volume(l.dims);
-    coarse += volume(coarse_dims(l));
+    cells += cell_count(l);
+    coarse += volume_of(coarse_dims(l));
   }
   std::uint32_t* s = h.data() + 4 * (1 + 3 * kGridLevels);
   for (int k = 0; k < 3; ++k) {

@@ -87,7 +87,7 @@ namespace {
 
 using namespace graph_detail;
 
-constexpr std::uint32_t kLeaf = 0x80000000u, kSwap = 0x40000000u, kIndex = 0x3FFFFFFFu;
+constexpr std::uint32_t kLeaf = 0x80000000u, kSwap = 0x40000000u;
 
 std::uint32_t bits(float f) {
   std::uint32_t u;
@@ -222,7 +222,7 @@ std::string lookup_glsl() {
 
 }  // namespace
 
-GraphBuffers graph_buffers(const SceneGraph& g, const GraphEvalPlan&) {
+GraphBuffers graph_buffers(const SceneGraph& g) {
   GraphBuffers b;
   for (const GraphNode& n : g.nodes) {
     const std::uint32_t offset = static_cast<std::uint32_t>(b.floats.size());

@@ -4,7 +4,7 @@
 // per grid cell only the nodes that can change the field there.
 //
 //   GraphEvalPlan plan = plan_graph_eval(g, GraphEval::auto_, true, bounds);
-//   GraphBuffers b = graph_buffers(g, plan);        // uploaded by render/graph_field.h
+//   GraphBuffers b = graph_buffers(g);              // uploaded by render/graph_field.h
 //   std::string glsl = graph_map_interpreter(g, plan, b);
 //   std::string prune = graph_prune_source(g, plan, b);  // the pruning compute pass's map part
 #pragma once
@@ -53,7 +53,9 @@ struct GraphBuffers {
   std::vector<std::uint32_t> program;  // postfix, the deeper child first (Sethi-Ullman): the least stack
   int stack = 0;                     // the stack the program needs
 };
-GraphBuffers graph_buffers(const SceneGraph& g, const GraphEvalPlan& plan);
+GraphBuffers graph_buffers(const SceneGraph& g);
+std::size_t cell_count(const GridLevel& level);            // one level's fine cells
+glm::ivec3 coarse_dims(const GridLevel& level);            // its coarse cells (kSplit^3 fine ones each) along x, y, z
 std::size_t cell_count(const GraphEvalPlan& plan);         // fine cells of every level: the tracer's
 std::size_t coarse_cell_count(const GraphEvalPlan& plan);  // the pruning pass's first level
 // Instructions the program buffer holds: the program, the coarse cells'

@@ -16,7 +16,6 @@ inline constexpr std::size_t kCoarseList = 2048;
 // level, two for the graph's box (grid_header()).
 inline constexpr int kHeader = 3 + 3 * kGridLevels;
 
-glm::ivec3 coarse_dims(const GridLevel& level);
 // Binding points 3-6 (and 7, the coarse cells, when writable).
 std::string buffers_glsl(bool writable);
 // msGraphPrim and msGraphOp: a case for each function the graph uses.
