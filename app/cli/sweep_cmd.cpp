@@ -142,7 +142,7 @@ int run_sweep_command(const SweepArgs& a) {
   std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.preset);
   if (in.scene.graph) {  // the pruning grid's cells: half and twice the planned size
     const GraphParts parts = graph_parts(in.scene, opts);
-    const glm::vec3 cell = parts.plan.prune && !parts.plan.keep_all ? parts.plan.levels[0].cell : glm::vec3(0.0f);
+    const glm::vec3 cell = parts.plan.pruned() ? parts.plan.levels[0].cell : glm::vec3(0.0f);
     for (SweepConfig& c : cell_size_rows(in.scene.quality, std::max({cell.x, cell.y, cell.z}), a.preset))
       configs.push_back(std::move(c));
   }

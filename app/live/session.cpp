@@ -169,7 +169,7 @@ void Session::prepare_graph(const AssembleOptions& opts, PreparedReload& p) cons
   GraphParts parts = graph_parts(scene_, opts);
   if (!parts.plan.interpret) return;
   p.graph_of = scene_.graph;
-  if (parts.plan.prune && !parts.plan.keep_all) p.prune_src = assemble_graph_prune(scene_, parts, opts);
+  if (parts.plan.pruned()) p.prune_src = assemble_graph_prune(scene_, parts, opts);
   p.graph = std::make_shared<const GraphParts>(std::move(parts));
 }
 
@@ -192,7 +192,7 @@ std::shared_ptr<GraphField> Session::adopt_field(PreparedReload& p, ReloadResult
     }
     field = std::make_shared<GraphField>(p.graph->buffers, p.graph->plan, p.prune.get());
   }
-  if (p.graph->plan.prune && !p.graph->plan.keep_all) r.prune_ms = field->build_ms();
+  if (p.graph->plan.pruned()) r.prune_ms = field->build_ms();
   return field;
 }
 

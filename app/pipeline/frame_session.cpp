@@ -16,7 +16,7 @@ FramePrograms::FramePrograms(const Context& ctx, ProgramCache& cache, const Prep
   bloom_ = make_bloom_stage(p.in, p.display, p.opts, cache);  // pipeline/bloom_setup.h; null without bloom
   drawer_ = std::make_unique<SceneDrawer>(ctx, *graph_, Dispatch::fragment);
   if (p.graph && p.graph->plan.interpret) {
-    if (p.graph->plan.prune && !p.graph->plan.keep_all) prune_ = std::make_unique<Program>(Program::Compute{}, p.prune_src);
+    if (p.graph->plan.pruned()) prune_ = std::make_unique<Program>(Program::Compute{}, p.prune_src);
     field_ = std::make_unique<GraphField>(p.graph->buffers, p.graph->plan, prune_.get());
   }
 }

@@ -35,7 +35,7 @@ PreparedFrame prepare(const FrameJob& job, bool display) {
   p.post_src = assemble_still(p.in, p.opts, p.fp.spp, job.aovs(), display, p.fp.fused_post);
   if (p.in.scene.graph) {
     p.graph = std::make_shared<const GraphParts>(graph_parts(p.in.scene, p.opts));
-    if (p.graph->plan.prune && !p.graph->plan.keep_all) p.prune_src = assemble_graph_prune(p.in.scene, *p.graph, p.opts);
+    if (p.graph->plan.pruned()) p.prune_src = assemble_graph_prune(p.in.scene, *p.graph, p.opts);
   }
   return p;
 }

@@ -37,7 +37,7 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
   // The pool's count, three words of padding, then the coarse cells.
   upload(buffers_[4], std::vector<std::uint32_t>((coarse + 1) * 4, 0u));
   bind();
-  if (!plan.prune || plan.keep_all || !prune) return;
+  if (!plan.pruned() || !prune) return;
   const auto start = std::chrono::steady_clock::now();
   glUseProgram(prune->id());
   // Per grid level, coarse cells first, then each fine cell from its coarse cell's list.
@@ -69,6 +69,7 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
 }
 
 std::string GraphField::summary() const {
+  if (!plan_.prune) return {};  // no grid (a combinator without a rule, or too many nodes)
   const glm::ivec3 d = plan_.levels[0].dims;
   const std::string grid = "grid " + std::to_string(d.x) + "x" + std::to_string(d.y) + "x" + std::to_string(d.z) +
                            " and " + std::to_string(kGridLevels - 1) + " outer levels";

@@ -58,7 +58,7 @@ std::size_t cell_count(const GraphEvalPlan& plan) {
 }
 
 std::size_t program_capacity(const GraphEvalPlan& plan, const GraphBuffers& b) {
-  if (!plan.prune || plan.keep_all) return b.program.size();
+  if (!plan.pruned()) return b.program.size();
   return b.program.size() + coarse_cell_count(plan) * kCoarseList + plan.pool;
 }
 

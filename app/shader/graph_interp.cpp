@@ -139,7 +139,7 @@ int emit_program(const SceneGraph& g, std::vector<std::uint32_t>& out) {
 // walks the whole program, get what 512 calls of it need, within 8 for
 // one primitive and one combinator kind, fewer as the kinds grow.
 int copies(const SceneGraph& g, const GraphEvalPlan& plan, std::size_t program) {
-  if (plan.prune && !plan.keep_all) return 1;
+  if (plan.pruned()) return 1;
   std::set<std::pair<bool, int>> kinds;
   for (const GraphNode& n : g.nodes) kinds.insert({n.leaf, n.fn});
   int cap = 8;

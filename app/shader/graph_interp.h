@@ -37,6 +37,8 @@ struct GraphEvalPlan {
   bool interpret = false;
   bool prune = false;            // the interpreter with a grid of cell lists
   bool keep_all = false;         // --no-prune: every cell's list is the whole program
+  // The pruning pass runs: a grid whose cells get pruned lists.
+  bool pruned() const { return prune && !keep_all; }
   GridLevel levels[kGridLevels];
   GraphBox surfaces;             // the graph's box: past the last level map() is the distance to it
   int list_max = 0;              // a fine cell's list holds at most this many instructions, else its coarse cell's

@@ -86,7 +86,7 @@ class RowRenderer {
       const AssembleOptions o = opts_for(c, false);
       const GraphParts parts = graph_parts(sc, o);
       if (!parts.plan.interpret) return;  // inline: nothing to bind
-      if (parts.plan.prune && !parts.plan.keep_all)
+      if (parts.plan.pruned())
         f.prune = std::make_unique<Program>(Program::Compute{}, assemble_graph_prune(sc, parts, o));
       f.field = std::make_unique<GraphField>(parts.buffers, parts.plan, f.prune.get());
     }
