@@ -73,7 +73,9 @@ struct Material {
 uniform Material uMaterials[NUM_MATERIALS];
 #endif
 
+#if !defined(FIELD_SAMPLER)  // the mesh exporter's compute pass (field_sample.glsl) has no outputs
 layout(location = 0) out vec4 outColor;   // linear HDR radiance of this sample; alpha: main.frag
+#endif
 
 // ---- library tunables: not in the contract; defaults unless #defined before this file ----
 #ifndef NORMAL_EPS_MIN

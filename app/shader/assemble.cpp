@@ -240,14 +240,16 @@ ShaderSource assemble_scene(const Scene& scene, const AssembleOptions& opts, con
       fail_input("define '" + name + "' is already set by the scene", display_path(scene.file), 0, name);
     define(root, name, value);
   }
+  if (opts.field_sampler) define(root, "FIELD_SAMPLER", 1);
   root += "#include \"prelude.glsl\"\n";
   root += sp.constants;
   root += "#include \"primitives.glsl\"\n";
   root += "#include \"operators.glsl\"\n";
   root += "#include \"noise.glsl\"\n";
   root += map;
-  root += "#include \"main.frag\"\n";
-  ShaderSource src = preprocess(root, scene_display_name(scene) + ".frag (generated)", opts.shader_dir, popts);
+  root += opts.field_sampler ? "#include \"field_sample.glsl\"\n" : "#include \"main.frag\"\n";
+  ShaderSource src = preprocess(root, scene_display_name(scene) + (opts.field_sampler ? ".comp" : ".frag") + " (generated)",
+                                opts.shader_dir, popts);
   // Without it the driver would blame the library line that calls map().
   if (const std::string code = strip_comments(src.text); find_definition(code, "map", "vec2") == std::string::npos) {
     if (const std::string type = definition_type(code, "map"); !type.empty())

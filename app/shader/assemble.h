@@ -45,6 +45,9 @@ struct AssembleOptions {
   // folded: the viewer's, where they follow the graph's box and a saved
   // transform moves them without a compile (docs/viewer.md#graphs).
   bool bounds_uniforms = false;
+  // The mesh exporter's compute pass (sdf_shaders/field_sample.glsl) in
+  // place of main.frag: the same defines, library and map(), no image.
+  bool field_sampler = false;
 };
 
 // How a graph scene's map() is evaluated, and the interpreter's buffers

@@ -1,0 +1,206 @@
+#include "mesh/dual_contour.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "mesh/cell_table.h"
+#include "mesh/qef.h"
+
+namespace ms {
+
+namespace {
+
+constexpr int kB = kBrick;
+constexpr int kCells = kB * kB * kB;
+constexpr int kCorners = (kB + 1) * (kB + 1) * (kB + 1);
+
+int cell_local(const glm::ivec3& l) { return (l.z * kB + l.y) * kB + l.x; }
+int corner_local(const glm::ivec3& l) { return (l.z * (kB + 1) + l.y) * (kB + 1) + l.x; }
+glm::ivec3 unit(int axis) { return glm::ivec3(axis == 0, axis == 1, axis == 2); }
+
+// Every sign-changing edge, each once: in the brick that holds its first
+// voxel, at that voxel's local index.
+struct Edges {
+  std::vector<glm::ivec4> list;           // first voxel, axis
+  std::vector<std::uint8_t> inside_first;
+  std::vector<std::int32_t> at;           // slot * kCells * 3 + local * 3 + axis -> list index, or -1
+  std::vector<glm::vec4> roots;           // per edge: unit normal, t
+};
+
+Edges find_edges(const SparseField& f) {
+  Edges e;
+  e.at.assign(f.bricks.size() * kCells * 3, -1);
+  for (std::size_t s = 0; s < f.bricks.size(); ++s) {
+    const float* v = &f.values[s * kCorners];
+    const glm::ivec3 first = f.bricks[s] * kB;
+    for (int z = 0; z < kB; ++z)
+      for (int y = 0; y < kB; ++y)
+        for (int x = 0; x < kB; ++x) {
+          const glm::ivec3 l(x, y, z);
+          const bool in = v[corner_local(l)] < 0.0f;
+          for (int a = 0; a < 3; ++a) {
+            if ((v[corner_local(l + unit(a))] < 0.0f) == in) continue;
+            e.at[(s * kCells + static_cast<std::size_t>(cell_local(l))) * 3 + a] = static_cast<std::int32_t>(e.list.size());
+            e.list.emplace_back(first + l, a);
+            e.inside_first.push_back(in);
+          }
+        }
+  }
+  return e;
+}
+
+int edge_at(const SparseField& f, const Edges& e, const glm::ivec3& voxel, int axis) {
+  const int slot = f.slot_of_cell(voxel);
+  if (slot < 0) return -1;
+  const glm::ivec3 l = voxel - f.bricks[static_cast<std::size_t>(slot)] * kB;
+  return e.at[(static_cast<std::size_t>(slot) * kCells + static_cast<std::size_t>(cell_local(l))) * 3 + axis];
+}
+
+// Per brick and cell, the first vertex of its patches (-1: no surface).
+struct Vertices {
+  std::vector<std::int32_t> first;
+  std::vector<std::uint8_t> mask;
+};
+
+int cell_mask(const float* v, const glm::ivec3& l) {
+  int m = 0;
+  for (int c = 0; c < 8; ++c)
+    if (v[corner_local(l + glm::ivec3(c & 1, (c >> 1) & 1, (c >> 2) & 1))] < 0.0f) m |= 1 << c;
+  return m;
+}
+
+// One cell's vertices, one per patch, appended to dc.
+void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell, int mask, DualContour& dc) {
+  const CellPatches& p = cell_patches(mask);
+  for (int k = 0; k < p.count; ++k) {
+    Qef q;
+    for (int i = 0; i < 12; ++i) {
+      if (p.patch[i] != k) continue;
+      const int axis = edge_axis(i);
+      const int idx = edge_at(f, e, cell + edge_start(i), axis);
+      if (idx < 0) {
+        ++dc.missing;
+        continue;
+      }
+      const glm::vec4 r = e.roots[static_cast<std::size_t>(idx)];
+      glm::dvec3 local(edge_start(i));
+      local[axis] += static_cast<double>(r.w);
+      q.add(local, glm::dvec3(r));
+    }
+    QefSolution s = q.solve();
+    s.point = glm::clamp(s.point, glm::dvec3(0.0), glm::dvec3(1.0));
+    dc.mesh.positions.push_back(glm::vec3(f.grid.origin + (glm::dvec3(cell) + s.point) * f.grid.voxel));
+    dc.rank.push_back(static_cast<std::uint8_t>(std::max(s.rank, 1)));
+  }
+  ++dc.cells;
+  dc.split_cells += p.count > 1;
+}
+
+Vertices place_vertices(const SparseField& f, const Edges& e, DualContour& dc) {
+  Vertices v;
+  v.first.assign(f.bricks.size() * kCells, -1);
+  v.mask.assign(f.bricks.size() * kCells, 0);
+  for (std::size_t s = 0; s < f.bricks.size(); ++s) {
+    const float* vals = &f.values[s * kCorners];
+    for (int z = 0; z < kB; ++z)
+      for (int y = 0; y < kB; ++y)
+        for (int x = 0; x < kB; ++x) {
+          const glm::ivec3 l(x, y, z);
+          const int m = cell_mask(vals, l);
+          if (m == 0 || m == 255) continue;
+          const std::size_t i = s * kCells + static_cast<std::size_t>(cell_local(l));
+          v.first[i] = static_cast<std::int32_t>(dc.mesh.positions.size());
+          v.mask[i] = static_cast<std::uint8_t>(m);
+          cell_vertices(f, e, f.bricks[s] * kB + l, m, dc);
+        }
+  }
+  return v;
+}
+
+// Smooth-patch vertices onto the surface: one Newton step along the
+// gradient, at most a voxel.
+void project_smooth(FieldSource& source, const SparseField& f, DualContour& dc) {
+  std::vector<glm::vec3> pts;
+  std::vector<std::size_t> which;
+  for (std::size_t i = 0; i < dc.rank.size(); ++i)
+    if (dc.rank[i] == 1) {
+      pts.push_back(dc.mesh.positions[i]);
+      which.push_back(i);
+    }
+  const std::vector<FieldPoint> r = source.points(pts);
+  const double limit = f.grid.voxel;
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    const glm::dvec3 g(r[k].gradient);
+    const double gg = glm::dot(g, g);
+    if (!(gg > 0.25)) continue;
+    glm::dvec3 step = g * (static_cast<double>(r[k].value) / gg);
+    if (glm::length(step) > limit) continue;
+    dc.mesh.positions[which[k]] = glm::vec3(glm::dvec3(pts[k]) - step);
+  }
+}
+
+int vertex_of(const SparseField& f, const Vertices& v, const glm::ivec3& cell, int edge) {
+  const int slot = f.slot_of_cell(cell);
+  if (slot < 0) return -1;
+  const glm::ivec3 l = cell - f.bricks[static_cast<std::size_t>(slot)] * kB;
+  const std::size_t i = static_cast<std::size_t>(slot) * kCells + static_cast<std::size_t>(cell_local(l));
+  if (v.first[i] < 0) return -1;
+  const int patch = cell_patches(v.mask[i]).patch[edge];
+  return patch < 0 ? -1 : v.first[i] + patch;
+}
+
+// One quad per crossing edge, counter-clockwise from outside, split along
+// the diagonal that keeps its two triangles closest to coplanar.
+void make_quads(const SparseField& f, const Edges& e, const Vertices& v, DualContour& dc) {
+  const int order[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  dc.crossing_quad.assign(e.list.size(), 0xffffffffu);
+  auto& pos = dc.mesh.positions;
+  for (std::size_t i = 0; i < e.list.size(); ++i) {
+    const int a = e.list[i].w, b = (a + 1) % 3, c = (a + 2) % 3;
+    const glm::ivec3 corner(e.list[i]);
+    int q[4];
+    bool ok = true;
+    for (int k = 0; k < 4 && ok; ++k) {
+      const glm::ivec3 cell = corner - unit(b) * order[k][0] - unit(c) * order[k][1];
+      q[k] = vertex_of(f, v, cell, edge_id(a, order[k][0], order[k][1]));
+      ok = q[k] >= 0;
+    }
+    if (!ok) {
+      ++dc.missing;
+      continue;
+    }
+    if (!e.inside_first[i]) std::swap(q[1], q[3]);
+    auto normal = [&](int x, int y, int z) { return glm::cross(pos[y] - pos[x], pos[z] - pos[x]); };
+    const float d02 = glm::dot(normal(q[0], q[1], q[2]), normal(q[0], q[2], q[3]));
+    const float d13 = glm::dot(normal(q[0], q[1], q[3]), normal(q[1], q[2], q[3]));
+    dc.crossing_quad[i] = static_cast<std::uint32_t>(dc.mesh.triangles());
+    const int t[6] = {q[0], q[1], q[2], q[0], q[2], q[3]};
+    const int u[6] = {q[0], q[1], q[3], q[1], q[2], q[3]};
+    for (int k = 0; k < 6; ++k) dc.mesh.indices.push_back(static_cast<std::uint32_t>(d02 >= d13 ? t[k] : u[k]));
+  }
+}
+
+}  // namespace
+
+DualContour dual_contour(FieldSource& source, const SparseField& f, const MeshProgress& progress) {
+  DualContour dc;
+  Edges e = find_edges(f);
+  if (progress) progress("edges", 0.3);
+  e.roots = source.edges(e.list);
+  dc.crossings.reserve(e.list.size());
+  for (std::size_t i = 0; i < e.list.size(); ++i) {
+    glm::dvec3 p(e.list[i]);
+    p[e.list[i].w] += static_cast<double>(e.roots[i].w);
+    dc.crossings.push_back(glm::vec3(f.grid.origin + p * f.grid.voxel));
+  }
+  if (progress) progress("vertices", 0.55);
+  const Vertices v = place_vertices(f, e, dc);
+  project_smooth(source, f, dc);
+  if (progress) progress("faces", 0.7);
+  make_quads(f, e, v, dc);
+  return dc;
+}
+
+}  // namespace ms

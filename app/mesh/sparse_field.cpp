@@ -1,0 +1,159 @@
+#include "mesh/sparse_field.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ms {
+
+namespace {
+
+constexpr int kCorners = (kBrick + 1) * (kBrick + 1) * (kBrick + 1);
+
+glm::ivec3 brick_of(const glm::ivec3& c) {
+  return {c.x >= 0 ? c.x / kBrick : -1, c.y >= 0 ? c.y / kBrick : -1, c.z >= 0 ? c.z / kBrick : -1};
+}
+
+// Whether a cube of `side` voxels whose centre reads `d` may hold a point
+// within `band` voxels of the surface. The 1e-3 voxel slack covers the
+// float rounding of the two positions the test compares.
+bool may_hold(float d, int side, const SparseOptions& o, double voxel) {
+  const double r = 0.5 * std::sqrt(3.0) * side;
+  return std::abs(d) <= (o.lipschitz * (r + 1e-3) + o.band) * voxel;
+}
+
+// The cells of sign change on a brick's faces whose neighbours across
+// them were skipped: a field that breaks its Lipschitz bound, or rounding.
+// Returns the missing bricks' coordinates.
+std::vector<glm::ivec3> missing_neighbours(const SparseField& f, std::size_t from) {
+  std::vector<glm::ivec3> out;
+  std::unordered_map<std::uint64_t, bool> seen;
+  const glm::ivec3 nb = f.grid.cells / kBrick;
+  for (std::size_t s = from; s < f.bricks.size(); ++s) {
+    const float* v = &f.values[s * kCorners];
+    bool neg = false, pos = false;
+    for (int i = 0; i < kCorners; ++i) (v[i] < 0.0f ? neg : pos) = true;
+    if (!neg || !pos) continue;
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const glm::ivec3 b = f.bricks[s] + glm::ivec3(dx, dy, dz);
+          if (b.x < 0 || b.y < 0 || b.z < 0 || b.x >= nb.x || b.y >= nb.y || b.z >= nb.z) continue;
+          const std::uint64_t k = SparseField::key(b);
+          if (f.index.count(k) || seen.count(k)) continue;
+          // Only a neighbour sharing a face, edge or corner that changes sign.
+          bool near = false;
+          for (int z = 0; z <= kBrick && !near; ++z)
+            for (int y = 0; y <= kBrick && !near; ++y)
+              for (int x = 0; x <= kBrick && !near; ++x) {
+                const glm::ivec3 l(x, y, z);
+                const glm::ivec3 side = glm::ivec3(dx, dy, dz);
+                bool on = true;
+                for (int a = 0; a < 3; ++a)
+                  on = on && (side[a] == 0 || (side[a] < 0 ? l[a] == 0 : l[a] == kBrick));
+                if (!on) continue;
+                const float c = v[(z * (kBrick + 1) + y) * (kBrick + 1) + x];
+                // A face corner next to a sign change inside this brick.
+                for (int a = 0; a < 3 && !near; ++a)
+                  for (int o = -1; o <= 1 && !near; o += 2) {
+                    glm::ivec3 m = l;
+                    m[a] += o;
+                    if (m[a] < 0 || m[a] > kBrick) continue;
+                    near = (v[(m.z * (kBrick + 1) + m.y) * (kBrick + 1) + m.x] < 0.0f) != (c < 0.0f);
+                  }
+              }
+          if (near) {
+            seen[k] = true;
+            out.push_back(b);
+          }
+        }
+  }
+  return out;
+}
+
+void add_bricks(FieldSource& source, SparseField& f, const std::vector<glm::ivec3>& bricks) {
+  std::vector<glm::ivec3> first(bricks.size());
+  for (std::size_t i = 0; i < bricks.size(); ++i) first[i] = bricks[i] * kBrick;
+  const std::vector<float> v = source.bricks(first, kBrick);
+  for (const glm::ivec3& b : bricks) {
+    f.index[SparseField::key(b)] = static_cast<std::uint32_t>(f.bricks.size());
+    f.bricks.push_back(b);
+  }
+  f.values.insert(f.values.end(), v.begin(), v.end());
+}
+
+}  // namespace
+
+std::uint64_t SparseField::key(const glm::ivec3& b) {
+  return (static_cast<std::uint64_t>(b.x) << 42) | (static_cast<std::uint64_t>(b.y) << 21) |
+         static_cast<std::uint64_t>(b.z);
+}
+
+int SparseField::slot_of_cell(const glm::ivec3& c) const {
+  const auto it = index.find(key(brick_of(c)));
+  return it == index.end() ? -1 : static_cast<int>(it->second);
+}
+
+float SparseField::at(int slot, const glm::ivec3& v) const {
+  const glm::ivec3 l = v - bricks[static_cast<std::size_t>(slot)] * kBrick;
+  return values[static_cast<std::size_t>(slot) * kCorners + (l.z * (kBrick + 1) + l.y) * (kBrick + 1) + l.x];
+}
+
+MeshGrid mesh_grid(const glm::dvec3& lo, const glm::dvec3& hi, int resolution, double voxel) {
+  MeshGrid g;
+  const glm::dvec3 size = hi - lo;
+  g.voxel = voxel > 0.0 ? voxel : std::max({size.x, size.y, size.z}) / std::max(resolution, 1);
+  for (int a = 0; a < 3; ++a) {
+    const int n = static_cast<int>(std::ceil(size[a] / g.voxel - 1e-9)) + 4;
+    g.cells[a] = (n + kBrick - 1) / kBrick * kBrick;
+    // Centred: the padding splits evenly around the box.
+    g.origin[a] = 0.5 * (lo[a] + hi[a]) - 0.5 * g.cells[a] * g.voxel;
+  }
+  return g;
+}
+
+SparseField sample_sparse(FieldSource& source, const MeshGrid& grid, const SparseOptions& opts) {
+  SparseField f;
+  f.grid = grid;
+  int side = kBrick;
+  while (side * 8 < std::max({grid.cells.x, grid.cells.y, grid.cells.z})) side *= 2;
+  std::vector<glm::ivec4> cubes;
+  for (int z = 0; z < grid.cells.z; z += side)
+    for (int y = 0; y < grid.cells.y; y += side)
+      for (int x = 0; x < grid.cells.x; x += side) cubes.emplace_back(x, y, z, side);
+  // Coarse to fine: each kept cube's eight children, down to bricks.
+  for (int level = 0;; ++level) {
+    if (opts.progress) opts.progress("sampling", 0.05 * level / 8.0);
+    const std::vector<float> d = source.cells(cubes);
+    f.cube_tests += cubes.size();
+    std::vector<glm::ivec4> next;
+    for (std::size_t i = 0; i < cubes.size(); ++i) {
+      const glm::ivec4 c = cubes[i];
+      if (!may_hold(d[i], c.w, opts, grid.voxel)) continue;
+      if (c.w == kBrick) {
+        next.push_back(c);
+        continue;
+      }
+      const int h = c.w / 2;
+      for (int k = 0; k < 8; ++k) {
+        const glm::ivec3 o(c.x + (k & 1) * h, c.y + ((k >> 1) & 1) * h, c.z + ((k >> 2) & 1) * h);
+        if (o.x < grid.cells.x && o.y < grid.cells.y && o.z < grid.cells.z) next.emplace_back(o, h);
+      }
+    }
+    cubes.swap(next);
+    if (cubes.empty() || cubes.front().w == kBrick) break;
+  }
+  std::vector<glm::ivec3> bricks;
+  for (const glm::ivec4& c : cubes) bricks.push_back(glm::ivec3(c) / kBrick);
+  if (opts.progress) opts.progress("sampling", 0.1);
+  add_bricks(source, f, bricks);
+  // A surface that leaves a brick into a skipped one: sample that too.
+  for (std::size_t from = 0, round = 0; round < 4; ++round) {
+    const std::vector<glm::ivec3> more = missing_neighbours(f, from);
+    if (more.empty()) break;
+    from = f.bricks.size();
+    add_bricks(source, f, more);
+  }
+  return f;
+}
+
+}  // namespace ms

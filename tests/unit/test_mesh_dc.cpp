@@ -1,0 +1,163 @@
+// Manifold dual contouring on analytic fields evaluated on the CPU (the GPU
+// path is tests/cli/test_mesh.cpp): the mesh is closed, manifold, outward,
+// free of self-intersections; its vertices lie on the surface; a box's
+// corners land on the true corners; skipped bricks never hold surface.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include <glm/geometric.hpp>
+
+#include "mesh/cell_table.h"
+#include "mesh/dual_contour.h"
+#include "mesh/mesh_check.h"
+#include "mesh/sparse_field.h"
+
+namespace ms {
+namespace {
+
+using Field = std::function<float(const glm::vec3&)>;
+
+// A FieldSource over a C++ function, computed as field_sample.glsl does.
+class Analytic : public FieldSource {
+ public:
+  Analytic(Field f, const MeshGrid& g) : f_(std::move(f)), g_(g) {}
+  glm::vec3 at(const glm::dvec3& v) const { return glm::vec3(g_.origin + g_.voxel * v); }
+  std::vector<float> cells(const std::vector<glm::ivec4>& c) override {
+    std::vector<float> out;
+    for (const glm::ivec4& x : c) out.push_back(f_(at(glm::dvec3(glm::ivec3(x)) + 0.5 * x.w)));
+    evals += c.size();
+    return out;
+  }
+  std::vector<float> bricks(const std::vector<glm::ivec3>& first, int b) override {
+    std::vector<float> out;
+    for (const glm::ivec3& o : first)
+      for (int z = 0; z <= b; ++z)
+        for (int y = 0; y <= b; ++y)
+          for (int x = 0; x <= b; ++x) out.push_back(f_(at(glm::dvec3(o + glm::ivec3(x, y, z)))));
+    evals += out.size();
+    return out;
+  }
+  std::vector<glm::vec4> edges(const std::vector<glm::ivec4>& e) override {
+    std::vector<glm::vec4> out;
+    for (const glm::ivec4& x : e) {
+      const glm::dvec3 a{glm::ivec3(x)};
+      glm::dvec3 b = a;
+      b[x.w] += 1.0;
+      double lo = 0.0, hi = 1.0;
+      const bool in = f_(at(a)) < 0.0f;
+      for (int i = 0; i < 40; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        ((f_(at(a + (b - a) * mid)) < 0.0f) == in ? lo : hi) = mid;
+      }
+      const double t = 0.5 * (lo + hi);
+      out.emplace_back(gradient(at(a + (b - a) * t)), static_cast<float>(t));
+    }
+    return out;
+  }
+  std::vector<FieldPoint> points(const std::vector<glm::vec3>& p) override {
+    std::vector<FieldPoint> out;
+    for (const glm::vec3& x : p) out.push_back({gradient(x), f_(x), 0});
+    return out;
+  }
+  glm::vec3 gradient(const glm::vec3& p) const {
+    const float h = 0.01f * static_cast<float>(g_.voxel);
+    glm::vec3 g(f_(p + glm::vec3(h, 0, 0)) - f_(p - glm::vec3(h, 0, 0)), f_(p + glm::vec3(0, h, 0)) - f_(p - glm::vec3(0, h, 0)),
+                f_(p + glm::vec3(0, 0, h)) - f_(p - glm::vec3(0, 0, h)));
+    return g / (2.0f * h);
+  }
+  std::size_t evals = 0;
+
+ private:
+  Field f_;
+  MeshGrid g_;
+};
+
+float box(const glm::vec3& p, const glm::vec3& c, const glm::vec3& b) {
+  const glm::vec3 q = glm::abs(p - c) - b;
+  return glm::length(glm::max(q, 0.0f)) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f);
+}
+
+struct Result {
+  DualContour dc;
+  MeshCheck check;
+  MeshAccuracy acc;
+  MeshGrid grid;
+  std::size_t evals = 0;
+};
+
+Result mesh_of(const Field& f, glm::dvec3 lo, glm::dvec3 hi, int res) {
+  Result r;
+  r.grid = mesh_grid(lo, hi, res, 0.0);
+  Analytic src(f, r.grid);
+  const SparseField sf = sample_sparse(src, r.grid, {});
+  r.dc = dual_contour(src, sf);
+  r.check = check_mesh(r.dc.mesh, r.grid.voxel);
+  r.acc = measure_accuracy(src, r.dc, r.grid.voxel);
+  r.evals = src.evals;
+  return r;
+}
+
+TEST(MeshCells, FacesAgreeAndEveryCrossingHasAPatch) {
+  for (int m = 1; m < 255; ++m) {
+    const CellPatches& p = cell_patches(m);
+    EXPECT_GE(p.count, 1) << m;
+    EXPECT_LE(p.count, 4) << m;
+    for (int e = 0; e < 12; ++e) {
+      glm::ivec3 a = edge_start(e), b = a;
+      b[edge_axis(e)] = 1;
+      const bool ia = (m >> (a.x | a.y << 1 | a.z << 2)) & 1, ib = (m >> (b.x | b.y << 1 | b.z << 2)) & 1;
+      EXPECT_EQ(p.patch[e] >= 0, ia != ib) << m << " edge " << e;
+    }
+  }
+  EXPECT_EQ(cell_patches(0b10000001).count, 2);  // two opposite corners: two patches
+}
+
+TEST(MeshDualContour, ASphereIsClosedManifoldAndOnTheSurface) {
+  const Result r = mesh_of([](const glm::vec3& p) { return glm::length(p) - 1.0f; }, {-1.02, -1.02, -1.02},
+                           {1.02, 1.02, 1.02}, 64);
+  EXPECT_TRUE(r.check.ok()) << r.check.summary();
+  EXPECT_EQ(r.check.euler, 2);
+  EXPECT_LT(r.acc.max_vertex, 0.05);
+  EXPECT_LT(r.acc.hausdorff, 0.1);
+  EXPECT_EQ(r.dc.missing, 0u);
+}
+
+TEST(MeshSparseField, CostGrowsWithAreaNotVolume) {
+  const Field sphere = [](const glm::vec3& p) { return glm::length(p) - 1.0f; };
+  const Result a = mesh_of(sphere, {-1.02, -1.02, -1.02}, {1.02, 1.02, 1.02}, 64);
+  const Result b = mesh_of(sphere, {-1.02, -1.02, -1.02}, {1.02, 1.02, 1.02}, 128);
+  // Twice the resolution: four times the area, eight times the volume.
+  EXPECT_LT(static_cast<double>(b.evals) / a.evals, 5.0) << a.evals << " -> " << b.evals;
+  const double dense = std::pow(b.grid.cells.x + 1.0, 3.0);
+  EXPECT_LT(static_cast<double>(b.evals), dense);
+}
+
+TEST(MeshDualContour, ABoxKeepsItsCornersAndEdges) {
+  // Off the grid on purpose: no face on a grid plane.
+  const glm::vec3 c(0.013f, -0.021f, 0.007f), b(0.61f, 0.43f, 0.37f);
+  const Result r = mesh_of([&](const glm::vec3& p) { return box(p, c, b); }, {-0.7, -0.5, -0.45}, {0.7, 0.5, 0.45}, 64);
+  EXPECT_TRUE(r.check.ok()) << r.check.summary();
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 corner = c + b * glm::vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+    float best = 1e9f;
+    for (const glm::vec3& v : r.dc.mesh.positions) best = std::min(best, glm::length(v - corner));
+    EXPECT_LT(best / r.grid.voxel, 0.1) << "corner " << k;
+  }
+  EXPECT_LT(r.acc.max_vertex, 0.05);
+}
+
+TEST(MeshDualContour, TwoTouchingSpheresStayManifold) {
+  // A neck thinner than a voxel: cells with two patches.
+  const Result r = mesh_of(
+      [](const glm::vec3& p) {
+        return std::min(glm::length(p - glm::vec3(-0.5f, 0, 0)) - 0.5f, glm::length(p - glm::vec3(0.503f, 0, 0)) - 0.5f);
+      },
+      {-1.02, -0.52, -0.52}, {1.02, 0.52, 0.52}, 48);
+  EXPECT_TRUE(r.check.ok()) << r.check.summary();
+}
+
+}  // namespace
+}  // namespace ms
