@@ -1,0 +1,165 @@
+#include "pipeline/mesh_job.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "core/deadline.h"
+#include "core/error.h"
+#include "io/atomic_file.h"
+#include "mesh/dual_contour.h"
+#include "mesh/sparse_field.h"
+#include "pipeline/input.h"
+#include "render/field_sampler.h"
+#include "render/graph_field.h"
+#include "render/program.h"
+
+namespace ms {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The box the export covers and the cut that closes every surface there:
+// --bounds, else the scene's [bounds] (a sphere cuts as a sphere).
+FieldClip clip_for(const MeshJob& job, const Scene& scene, MeshBox& box) {
+  FieldClip c;
+  c.planes = job.planes;
+  if (job.bounds) {
+    box = *job.bounds;
+  } else if (scene.bounds.kind == BoundsKind::sphere) {
+    box = {scene.bounds.center - scene.bounds.radius, scene.bounds.center + scene.bounds.radius};
+    c.sphere = true;
+    c.a = glm::vec4(scene.bounds.center, scene.bounds.radius);
+    return c;
+  } else if (scene.bounds.kind == BoundsKind::box) {
+    box = {scene.bounds.min, scene.bounds.max};
+  } else {
+    fail_input("the scene declares no [bounds]: mesh needs a box to cover", scene.file.string(), 0, "bounds",
+               "add [bounds] to the scene, or give --bounds x0,y0,z0,x1,y1,z1");
+  }
+  c.a = glm::vec4(box.min, 0.0f);
+  c.b = glm::vec4(box.max, 0.0f);
+  return c;
+}
+
+std::vector<MeshMaterial> materials_of(const Scene& scene) {
+  std::vector<MeshMaterial> out;
+  for (const Material& m : scene.materials) out.push_back({m.name, m.color});
+  return out;
+}
+
+// Every sampled voxel within the band, from the bricks as sampled (a voxel
+// two bricks share is listed twice, with one value).
+LevelSetBand band_of(const SparseField& f, const Scene& scene, int band) {
+  LevelSetBand b;
+  b.name = scene.name.empty() ? "surface" : scene.name;
+  b.voxel = f.grid.voxel;
+  b.origin = f.grid.origin;
+  b.band = static_cast<float>(band * f.grid.voxel);
+  const int n = kBrick + 1;
+  for (std::size_t s = 0; s < f.bricks.size(); ++s)
+    for (int i = 0; i < n * n * n; ++i) {
+      const float v = f.values[s * n * n * n + static_cast<std::size_t>(i)];
+      if (std::abs(v) >= b.band) continue;
+      b.ijk.push_back(f.bricks[s] * kBrick + glm::ivec3(i % n, (i / n) % n, i / (n * n)));
+      b.value.push_back(v);
+    }
+  return b;
+}
+
+}  // namespace
+
+MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  MeshReport r;
+  r.output = job.output.string();
+  const std::optional<MeshFormat> format = mesh_format_for(job.output);
+  if (!format)
+    fail_input("cannot tell the mesh format of '" + job.output.string() + "'", {}, 0, "-o",
+               "name the output .obj, .ply, .stl, .glb or .vdb");
+  r.format = *format;
+  output_kind(job.output, "-o");
+  const LoadedInput in = load_input_scene(job.frame.input, job.frame.disable, job.frame.preset, job.frame.set);
+  const Scene& scene = in.scene;
+  if (in.shadertoy)
+    fail_input("a Shadertoy shader has no map(): there is no field to mesh", job.frame.input.string(), 0, "scene",
+               "mesh a scene .toml with [scene] map or graph");
+  MeshBox box;
+  const FieldClip clip = clip_for(job, scene, box);
+  const MeshGrid grid = mesh_grid(glm::dvec3(box.min), glm::dvec3(box.max), job.resolution, job.voxel);
+  r.cells = grid.cells;
+  r.voxel = grid.voxel;
+  AssembleOptions opts = job.frame.assemble_options();
+  opts.field_sampler = true;
+  const ShaderSource src = assemble_scene(scene, opts);
+  std::unique_ptr<GraphParts> parts;
+  ShaderSource prune_src;
+  if (scene.graph) {
+    parts = std::make_unique<GraphParts>(graph_parts(scene, opts));
+    if (parts->plan.pruned()) prune_src = assemble_graph_prune(scene, *parts, opts);
+  }
+
+  session.context(job.frame.backend);
+  const Program prog(Program::Compute{}, src);
+  std::unique_ptr<Program> prune;
+  std::unique_ptr<GraphField> field;
+  if (parts) {
+    if (parts->plan.pruned()) prune = std::make_unique<Program>(Program::Compute{}, prune_src);
+    field = std::make_unique<GraphField>(parts->buffers, parts->plan, prune.get());
+    field->bind();
+  }
+  const float time = job.frame.time ? *job.frame.time : scene.render.time;
+  FieldSampler sampler(prog, {glm::vec3(grid.origin), static_cast<float>(grid.voxel)}, clip, time);
+  SparseOptions so;
+  so.lipschitz = std::max(scene.quality.lipschitz, 1e-3f);
+  so.band = r.format == MeshFormat::vdb ? static_cast<float>(job.band) : 0.0f;
+  so.progress = progress;
+  const SparseField sparse = sample_sparse(sampler, grid, so);
+  r.bricks = sparse.bricks.size();
+  r.sample_s = since(start);
+
+  if (r.format == MeshFormat::vdb) {
+    const LevelSetBand band = band_of(sparse, scene, job.band);
+    r.band_voxels = band.ijk.size();
+    r.samples = sampler.evaluations();
+    r.readback_bytes = sampler.readback_bytes();
+    if (progress) progress("writing", 0.9);
+    const auto w = std::chrono::steady_clock::now();
+    write_level_set(band, job.output);
+    r.write_s = since(w);
+    r.seconds = since(start);
+    return r;
+  }
+  const auto m = std::chrono::steady_clock::now();
+  DualContour dc = dual_contour(sampler, sparse, progress);
+  if (dc.mesh.positions.empty())
+    fail_input("no surface inside the box: map() is positive (or negative) everywhere there", scene.file.string(),
+               0, job.bounds ? "--bounds" : "bounds");
+  r.accuracy = measure_accuracy(sampler, dc, grid.voxel);
+  r.mesh_s = since(m);
+  if (progress) progress("checking", 0.8);
+  const auto c = std::chrono::steady_clock::now();
+  r.check = check_mesh(dc.mesh, grid.voxel);
+  r.check_s = since(c);
+  r.vertices = dc.mesh.positions.size();
+  r.triangles = dc.mesh.triangles();
+  r.surface_cells = dc.cells;
+  r.split_cells = dc.split_cells;
+  r.missing = dc.missing;
+  r.samples = sampler.evaluations();
+  r.readback_bytes = sampler.readback_bytes();
+  if (progress) progress("writing", 0.9);
+  const auto w = std::chrono::steady_clock::now();
+  write_mesh(dc.mesh, materials_of(scene), job.output);
+  r.write_s = since(w);
+  r.seconds = since(start);
+  return r;
+}
+
+}  // namespace ms
