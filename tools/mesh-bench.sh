@@ -111,7 +111,7 @@ done
 
 # The machine: cores, architecture and the GL renderer marchstudio draws with.
 renderer=$("$MS" render "$(scene_of seed)" -o "$tmp/probe.png" --size 32x18 -v 2>&1 |
-  sed -n 's/.*renderer[: ]*//Ip' | head -n 1)
+  sed -n 's/.*GL_RENDERER \(.*\), GL_VERSION.*/\1/p' | head -n 1)
 machine="$(nproc) cores, $(uname -m), GL renderer ${renderer:-unknown (marchstudio did not run)}, $(date +%Y-%m-%d)"
 
 $PY - "$RESULTS" "$DOC" "$machine" "$SUBJECTS" <<'EOF'
