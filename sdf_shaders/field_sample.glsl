@@ -8,8 +8,10 @@
 // modes that meet at a point read the same value.
 //   mode 0 bricks: in[b] = brick's first voxel; out[b * S^3 + l] = field at its l-th corner (S = uBrick + 1)
 //   mode 1 cells:  in[c] = (first voxel, side in voxels); out[c] = field at its centre
-//   mode 2 edges:  in[e] = (voxel, axis); outV[e] = (unit gradient, t) at the root on the edge, t in [0, 1]
+//   mode 2 edges:  in[e] = (voxel, axis); outV[e] = (unit gradient, t) at the root on the edge, t in [0, 1];
+//                  out[e] = the map() calls it took
 //   mode 3 points: pts[i] = world point; outV[i] = (gradient, field), out[i] = material id
+//   mode 4 values: pts[i] = world point; outV[i].w = field, out[i] = material id (no gradient)
 #pragma once
 #include "bounds.glsl"
 
@@ -58,7 +60,8 @@ vec3 fieldGradient(vec3 p) {
 
 // The root of the field on a sign-changing edge: regula falsi with the
 // Illinois fix (the kept end's value halved), exact in one step on a plane.
-float edgeRoot(vec3 a, vec3 b) {
+float edgeRoot(vec3 a, vec3 b, inout int calls) {
+  calls += 2;
   float fa = fieldMap(a).x, fb = fieldMap(b).x;
   float ta = 0.0, tb = 1.0;
   int side = 0;
@@ -66,7 +69,9 @@ float edgeRoot(vec3 a, vec3 b) {
     float t = (ta * fb - tb * fa) / (fb - fa);
     if (!(t > ta && t < tb)) t = 0.5 * (ta + tb);
     float ft = fieldMap(mix(a, b, t)).x;
-    if (ft == 0.0 || tb - ta < 1e-6) return t;
+    ++calls;
+    // A millionth of a voxel is as close as a float position gets.
+    if (abs(ft) <= 1e-6 * uFieldVoxel || tb - ta < 1e-6) return t;
     if ((ft < 0.0) == (fa < 0.0)) {
       ta = t; fa = ft;
       if (side == -1) fb *= 0.5;
@@ -93,13 +98,15 @@ void main() {
   } else if (uFieldMode == 2) {
     ivec4 e = fieldIn[g];
     vec3 a = voxelPoint(e.xyz), b = voxelPoint(e.xyz + ivec3(e.w == 0, e.w == 1, e.w == 2));
-    float t = edgeRoot(a, b);
+    int calls = 4;
+    float t = edgeRoot(a, b, calls);
     vec3 n = fieldGradient(mix(a, b, t));
     fieldOutV[g] = vec4(n / max(length(n), 1e-20), t);
+    fieldOut[g] = float(calls);
   } else {
     vec3 p = fieldPts[g].xyz;
     vec2 m = fieldMap(p);
-    fieldOutV[g] = vec4(fieldGradient(p), m.x);
+    fieldOutV[g] = vec4(uFieldMode == 3 ? fieldGradient(p) : vec3(0.0), m.x);
     fieldOut[g] = m.y;
   }
 }

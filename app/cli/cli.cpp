@@ -16,6 +16,7 @@
 #include "cli/flag_checks.h"
 #include "cli/glslviewer_flags.h"
 #include "cli/info_cmd.h"
+#include "cli/mesh_cmd.h"
 #include "cli/render_cmd.h"
 #include "cli/sweep_cmd.h"
 #include "cli/test_cmd.h"
@@ -77,6 +78,8 @@ int run_cli(int argc, char** argv) {
   CLI::App* test = add_test_command(app, test_args);
   InfoArgs info_args;
   CLI::App* info = add_info_command(app, info_args);
+  MeshArgs mesh_args;
+  CLI::App* mesh = add_mesh_command(app, mesh_args);
 
   if (const std::string bad = unknown_subcommand(app, argc, argv); !bad.empty()) {
     std::fprintf(stderr, "marchstudio: %s (see 'marchstudio --help')\n", bad.c_str());
@@ -114,6 +117,7 @@ int run_cli(int argc, char** argv) {
     if (sweep->parsed()) return run_sweep_command(sweep_args);
     if (test->parsed()) return run_test(test_args);
     if (info->parsed()) return run_info(info_args);
+    if (mesh->parsed()) return run_mesh(mesh_args);
   } catch (const Error& e) {
     std::fprintf(stderr, "marchstudio: %s\n", e.what());
     if (!e.info().detail.empty() && verbose(app)) std::fputs(valid_utf8(e.info().detail).c_str(), stderr);

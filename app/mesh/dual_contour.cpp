@@ -119,25 +119,30 @@ Vertices place_vertices(const SparseField& f, const Edges& e, DualContour& dc) {
   return v;
 }
 
-// Smooth-patch vertices onto the surface: one Newton step along the
-// gradient, at most a voxel.
-void project_smooth(FieldSource& source, const SparseField& f, DualContour& dc) {
-  std::vector<glm::vec3> pts;
-  std::vector<std::size_t> which;
-  for (std::size_t i = 0; i < dc.rank.size(); ++i)
-    if (dc.rank[i] == 1) {
-      pts.push_back(dc.mesh.positions[i]);
-      which.push_back(i);
+// Every vertex onto the surface: Newton steps along the gradient, each at
+// most a voxel. A vertex where a crease's or corner's planes meet reads
+// zero there already and stays; one the QEF put beside a tight rounding
+// (its planes' meeting point off the curved surface) moves onto it.
+void project_vertices(FieldSource& source, const SparseField& f, DualContour& dc) {
+  std::vector<std::size_t> which(dc.mesh.positions.size());
+  for (std::size_t i = 0; i < which.size(); ++i) which[i] = i;
+  // A second step only where the first moved far: the field curved there.
+  for (int pass = 0; pass < 2 && !which.empty(); ++pass) {
+    std::vector<glm::vec3> pts(which.size());
+    for (std::size_t k = 0; k < which.size(); ++k) pts[k] = dc.mesh.positions[which[k]];
+    const std::vector<FieldPoint> r = source.points(pts);
+    std::vector<std::size_t> again;
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      const glm::dvec3 g(r[k].gradient);
+      const double gg = glm::dot(g, g);
+      if (!(gg > 0.25)) continue;
+      const glm::dvec3 step = g * (static_cast<double>(r[k].value) / gg);
+      const double len = glm::length(step);
+      if (len > f.grid.voxel) continue;
+      dc.mesh.positions[which[k]] = glm::vec3(glm::dvec3(pts[k]) - step);
+      if (len > 0.01 * f.grid.voxel) again.push_back(which[k]);
     }
-  const std::vector<FieldPoint> r = source.points(pts);
-  const double limit = f.grid.voxel;
-  for (std::size_t k = 0; k < which.size(); ++k) {
-    const glm::dvec3 g(r[k].gradient);
-    const double gg = glm::dot(g, g);
-    if (!(gg > 0.25)) continue;
-    glm::dvec3 step = g * (static_cast<double>(r[k].value) / gg);
-    if (glm::length(step) > limit) continue;
-    dc.mesh.positions[which[k]] = glm::vec3(glm::dvec3(pts[k]) - step);
+    which.swap(again);
   }
 }
 
@@ -197,7 +202,7 @@ DualContour dual_contour(FieldSource& source, const SparseField& f, const MeshPr
   }
   if (progress) progress("vertices", 0.55);
   const Vertices v = place_vertices(f, e, dc);
-  project_smooth(source, f, dc);
+  project_vertices(source, f, dc);
   if (progress) progress("faces", 0.7);
   make_quads(f, e, v, dc);
   return dc;

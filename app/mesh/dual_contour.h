@@ -2,9 +2,9 @@
 // roots and normals on every sign-changing edge from the field itself, one
 // vertex per surface patch of a cell (mesh/cell_table.h) at its QEF's
 // minimum (mesh/qef.h), one quad per crossing edge joining the vertices
-// of the four cells around it, split into two triangles. A vertex on a
-// smooth patch (the QEF's rank 1) is then moved onto the surface along the
-// gradient; one on a crease or a corner stays where the planes meet.
+// of the four cells around it, split into two triangles. Each vertex is
+// then moved onto the surface along the gradient: a crease's or corner's
+// vertex, where its planes meet, is on it already and stays.
 //
 //   DualContour dc = dual_contour(source, sparse, progress);
 //   dc.mesh;              // counter-clockwise from outside, a material per vertex

@@ -32,8 +32,8 @@ class FieldSource {
   // On each edge (xyz: its first voxel, w: axis 0..2) whose ends differ in
   // sign: (unit gradient, t) at the root, t in [0, 1] from the first end.
   virtual std::vector<glm::vec4> edges(const std::vector<glm::ivec4>& edges) = 0;
-  // The field, its gradient and material at world points.
-  virtual std::vector<FieldPoint> points(const std::vector<glm::vec3>& points) = 0;
+  // The field, its gradient (unless !gradient: zero) and material at world points.
+  virtual std::vector<FieldPoint> points(const std::vector<glm::vec3>& points, bool gradient = true) = 0;
 };
 
 // Called between steps with the stage's name and the fraction of the

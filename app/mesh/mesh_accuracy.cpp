@@ -36,7 +36,7 @@ double point_triangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3
 MeshAccuracy measure_accuracy(FieldSource& source, DualContour& dc, double voxel) {
   MeshAccuracy a;
   TriMesh& m = dc.mesh;
-  const std::vector<FieldPoint> at = source.points(m.positions);
+  const std::vector<FieldPoint> at = source.points(m.positions, false);
   m.material.resize(m.positions.size());
   double sum = 0.0;
   for (std::size_t i = 0; i < at.size(); ++i) {
@@ -50,7 +50,7 @@ MeshAccuracy measure_accuracy(FieldSource& source, DualContour& dc, double voxel
   std::vector<glm::vec3> centroids(m.triangles());
   for (std::size_t t = 0; t < m.triangles(); ++t)
     centroids[t] = (m.positions[m.indices[t * 3]] + m.positions[m.indices[t * 3 + 1]] + m.positions[m.indices[t * 3 + 2]]) / 3.0f;
-  for (const FieldPoint& p : source.points(centroids))
+  for (const FieldPoint& p : source.points(centroids, false))
     a.hausdorff = std::max(a.hausdorff, std::abs(static_cast<double>(p.value)) / voxel);
   // Surface to mesh: each crossing to the quad made for it.
   for (std::size_t i = 0; i < dc.crossings.size(); ++i) {

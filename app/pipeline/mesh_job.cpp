@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <memory>
 
@@ -113,7 +114,9 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
     if (parts->plan.pruned()) prune = std::make_unique<Program>(Program::Compute{}, prune_src);
     field = std::make_unique<GraphField>(parts->buffers, parts->plan, prune.get());
     field->bind();
+    if (job.frame.verbose) std::fprintf(stderr, "  %s\n", field->summary().c_str());
   }
+  r.setup_s = since(start);
   const float time = job.frame.time ? *job.frame.time : scene.render.time;
   FieldSampler sampler(prog, {glm::vec3(grid.origin), static_cast<float>(grid.voxel)}, clip, time);
   SparseOptions so;

@@ -10,9 +10,8 @@ namespace {
 // that no single one runs long enough for a desktop driver's watchdog.
 constexpr std::size_t kFieldChunk = std::size_t{1} << 20;
 
-// map() calls per item, by mode: bricks and cells one per value, an edge
-// its two ends, up to 12 refinements and a 4-tap gradient, a point 5.
-constexpr std::uint64_t kEdgeEvaluations = 18;
+// map() calls per point: its value and a 4-tap gradient. (Bricks and
+// cells take one per value; an edge says how many it took.)
 constexpr std::uint64_t kPointEvaluations = 5;
 
 }  // namespace
@@ -87,14 +86,17 @@ std::vector<glm::vec4> FieldSampler::edges(const std::vector<glm::ivec4>& edges)
   std::vector<glm::vec4> out(edges.size());
   if (out.empty()) return out;
   upload(buffers_[0], edges.data(), edges.size() * sizeof(glm::ivec4));
+  upload(buffers_[1], nullptr, out.size() * sizeof(float));
   upload(buffers_[2], nullptr, out.size() * sizeof(glm::vec4));
   run(2, edges.size());
   read(buffers_[2], out.data(), out.size() * sizeof(glm::vec4));
-  evaluations_ += edges.size() * kEdgeEvaluations;
+  std::vector<float> calls(out.size());
+  read(buffers_[1], calls.data(), calls.size() * sizeof(float));
+  for (float c : calls) evaluations_ += static_cast<std::uint64_t>(c);
   return out;
 }
 
-std::vector<FieldPoint> FieldSampler::points(const std::vector<glm::vec3>& points) {
+std::vector<FieldPoint> FieldSampler::points(const std::vector<glm::vec3>& points, bool gradient) {
   std::vector<FieldPoint> out(points.size());
   if (out.empty()) return out;
   std::vector<glm::vec4> in(points.size());
@@ -102,13 +104,13 @@ std::vector<FieldPoint> FieldSampler::points(const std::vector<glm::vec3>& point
   upload(buffers_[3], in.data(), in.size() * sizeof(glm::vec4));
   upload(buffers_[1], nullptr, out.size() * sizeof(float));
   upload(buffers_[2], nullptr, out.size() * sizeof(glm::vec4));
-  run(3, out.size());
+  run(gradient ? 3 : 4, out.size());
   std::vector<glm::vec4> v(out.size());
   std::vector<float> m(out.size());
   read(buffers_[2], v.data(), v.size() * sizeof(glm::vec4));
   read(buffers_[1], m.data(), m.size() * sizeof(float));
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = {glm::vec3(v[i]), v[i].w, static_cast<int>(m[i] + 0.5f)};
-  evaluations_ += out.size() * kPointEvaluations;
+  evaluations_ += out.size() * (gradient ? kPointEvaluations : 1);
   return out;
 }
 

@@ -49,7 +49,7 @@ class FieldSampler : public FieldSource {
   std::vector<float> cells(const std::vector<glm::ivec4>& cells) override;
   std::vector<float> bricks(const std::vector<glm::ivec3>& first_voxels, int brick) override;
   std::vector<glm::vec4> edges(const std::vector<glm::ivec4>& edges) override;
-  std::vector<FieldPoint> points(const std::vector<glm::vec3>& points) override;
+  std::vector<FieldPoint> points(const std::vector<glm::vec3>& points, bool gradient = true) override;
 
   // map() calls so far (each gradient is 4, each edge root up to 14), bytes read back.
   std::uint64_t evaluations() const { return evaluations_; }

@@ -57,9 +57,9 @@ class Analytic : public FieldSource {
     }
     return out;
   }
-  std::vector<FieldPoint> points(const std::vector<glm::vec3>& p) override {
+  std::vector<FieldPoint> points(const std::vector<glm::vec3>& p, bool grad) override {
     std::vector<FieldPoint> out;
-    for (const glm::vec3& x : p) out.push_back({gradient(x), f_(x), 0});
+    for (const glm::vec3& x : p) out.push_back({grad ? gradient(x) : glm::vec3(0.0f), f_(x), 0});
     return out;
   }
   glm::vec3 gradient(const glm::vec3& p) const {

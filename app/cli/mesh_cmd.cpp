@@ -1,0 +1,117 @@
+#include "cli/mesh_cmd.h"
+
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "cli/common_flags.h"
+#include "cli/flag_checks.h"
+#include "cli/input_flags.h"
+#include "core/deadline.h"
+#include "core/error.h"
+#include "pipeline/mesh_job.h"
+#include "pipeline/progress.h"
+#include "pipeline/shader_dir.h"
+
+namespace ms {
+
+namespace fs = std::filesystem;
+
+CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
+  CLI::App* cmd = app.add_subcommand("mesh", "Export a scene's surface as a mesh or an OpenVDB level set (docs/mesh.md)");
+  cmd->add_option("scene", a.input, "Scene .toml with a map() or a graph")->required();
+  cmd->add_option("-o,--output", a.output,
+                  "Output: .obj (with .mtl), .ply, .stl, .glb, or .vdb (a level set) (default: <scene>.obj)");
+  cmd->add_option("--resolution", a.resolution, "Cells along the longest side of the box (default 256)")
+      ->check(CLI::Range(8, 4096));
+  cmd->add_option("--voxel", a.voxel, "The cell's size in world units, instead of --resolution")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--bounds", a.bounds, "The box to mesh, x0,y0,z0,x1,y1,z1 (default: the scene's [bounds])")
+      ->delimiter(',')
+      ->expected(6);
+  cmd->add_flag("--planes", a.planes, "Include the scene's [[planes]], cut by the box (default: left out)");
+  cmd->add_option("--band", a.band, "A .vdb level set's half-width in voxels (default 3)")->check(CLI::Range(1, 64));
+  cmd->add_option("--time", a.time, "Scene time in seconds (default: the scene's)")
+      ->each([&a](const std::string&) { a.time_set = true; });
+  cmd->add_flag("--json", a.json, "Print the report as one JSON object (schema marchstudio.mesh/1)");
+  cmd->add_flag("-v,--verbose", a.verbose, "Print the grid, accuracy, check and stage times");
+  cmd->add_option("--timeout", a.timeout, "Give up after this many seconds: exit 3, nothing written")
+      ->check(seconds_value());
+  add_backend_flag(cmd, a.backend);
+  add_shader_dir_flag(cmd, a.shader_dir);
+  add_allow_include_flag(cmd, a.allow_include);
+  add_define_flag(cmd, a.defines);
+  add_preset_flag(cmd, a.preset);
+  add_override_flags(cmd, a.overrides);
+  add_graph_flags(cmd, a.graph_eval, a.no_prune);
+  cmd->add_flag("--no-specialize", a.no_specialize, "Sample with the generic shader (docs/specialization.md)");
+  return cmd;
+}
+
+namespace {
+
+MeshJob job_from(const MeshArgs& a) {
+  MeshJob job;
+  set_input_fields(job.frame, a);
+  job.frame.input = a.input;
+  job.frame.backend = a.backend;
+  job.frame.defines = a.defines;
+  job.frame.verbose = a.verbose;
+  job.frame.timeout = a.timeout;
+  if (a.time_set) job.frame.time = static_cast<float>(a.time);
+  job.output = a.output.empty() ? fs::path(fs::path(a.input).stem().string() + ".obj") : fs::path(a.output);
+  job.resolution = a.resolution;
+  job.voxel = a.voxel;
+  if (!a.bounds.empty()) {
+    const MeshBox b{{a.bounds[0], a.bounds[1], a.bounds[2]}, {a.bounds[3], a.bounds[4], a.bounds[5]}};
+    if (!(b.min.x < b.max.x && b.min.y < b.max.y && b.min.z < b.max.z))
+      fail_input("--bounds must be x0,y0,z0,x1,y1,z1 with each minimum below its maximum", {}, 0, "--bounds");
+    job.bounds = b;
+  }
+  job.planes = a.planes;
+  job.band = a.band;
+  return job;
+}
+
+// On a terminal, one line redrawn in place: the stage, a percentage and an
+// ETA from the fraction done; elsewhere nothing (the summary line says it).
+MeshProgress progress_for(const Deadline& deadline, bool tty) {
+  const auto start = std::chrono::steady_clock::now();
+  return [deadline, tty, start](const char* stage, double fraction) {
+    deadline.check("the mesh export");
+    if (!tty) return;
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double eta = fraction > 0.02 ? t * (1.0 - fraction) / fraction : -1.0;
+    std::fprintf(stderr, "\r\033[Kmesh: %-9s %3d%%  %s elapsed, ETA %s", stage, static_cast<int>(fraction * 100.0),
+                 format_duration(t).c_str(), eta < 0 ? "-" : format_duration(eta).c_str());
+    std::fflush(stderr);
+  };
+}
+
+}  // namespace
+
+int run_mesh(const MeshArgs& a) {
+  const MeshJob job = job_from(a);
+  const Deadline deadline = Deadline::after(a.timeout);
+  std::optional<Watchdog> watchdog;
+  if (deadline.limited()) watchdog.emplace().arm(deadline, "the mesh export");
+  const bool tty = isatty(STDERR_FILENO) && !a.json;
+  FrameSession session;
+  const MeshReport r = mesh_scene(job, session, progress_for(deadline, tty));
+  if (tty) std::fputs("\r\033[K", stderr);
+  if (a.json) {
+    std::printf("%s\n", mesh_report_json(r).c_str());
+  } else {
+    std::fprintf(stderr, "marchstudio: wrote %s\n", mesh_summary(r).c_str());
+    if (a.verbose)
+      for (const std::string& line : mesh_report_lines(r)) std::fprintf(stderr, "  %s\n", line.c_str());
+  }
+  if (!r.check.ok() && r.format != MeshFormat::vdb)
+    std::fprintf(stderr, "marchstudio: warning: %s: the mesh check found %s\n", r.output.c_str(),
+                 r.check.summary().c_str());
+  return 0;
+}
+
+}  // namespace ms

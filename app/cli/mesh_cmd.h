@@ -1,0 +1,53 @@
+// `marchstudio mesh`: a scene's surface to a mesh (.obj .ply .stl .glb) or
+// an OpenVDB level set (.vdb), headless (pipeline/mesh_job.h, docs/mesh.md).
+#pragma once
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli/override_flags.h"
+#include "gl/context.h"
+#include "io/sequence.h"
+#include "pipeline/input.h"
+#include "shader/graph_interp.h"
+
+namespace CLI {
+class App;
+}
+
+namespace ms {
+
+struct MeshArgs {
+  std::string input;
+  std::string output;        // empty: <input stem>.obj in the current directory
+  int resolution = 256;      // cells along the box's longest side
+  double voxel = 0.0;        // --voxel: the cell's size instead
+  std::vector<float> bounds; // --bounds x0,y0,z0,x1,y1,z1
+  bool planes = false;
+  int band = 3;
+  double time = 0.0;
+  bool time_set = false;
+  std::optional<FrameRange> frames;  // --frames A..B: one file per frame
+  double fps = 24.0;
+  bool force = false;
+  bool json = false;
+  bool verbose = false;
+  double timeout = 0.0;
+  Backend backend = Backend::automatic;
+  std::string shader_dir;
+  std::vector<std::string> allow_include;
+  std::vector<std::pair<std::string, std::string>> defines;
+  std::string preset;
+  std::vector<std::string> disable;
+  bool no_specialize = false;
+  GraphEval graph_eval = GraphEval::auto_;
+  bool no_prune = false;
+  Overrides overrides;
+  ShadertoyOptions shadertoy;  // never set: set_input_fields() reads it
+};
+
+CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);
+int run_mesh(const MeshArgs& args);
+
+}  // namespace ms
