@@ -118,5 +118,29 @@ TEST(LevelSet, AFullDeviceIsASystemError) {
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"s.vdb"});
 }
 
+// In a child process of its own (the module is looked up once per
+// process): one Exit::system error naming the module, and no file.
+[[noreturn]] void write_without_the_module() {
+  int code = 0;
+  {
+    TempDir dir;
+    ::setenv("MARCH_VDB_MODULE", "/nonexistent/marchstudio-vdb.so", 1);
+    try {
+      write_level_set(sphere_band(), dir / "s.vdb");
+    } catch (const Error& e) {
+      std::fprintf(stderr, "%s\n", format_error(e.info()).c_str());
+      code = static_cast<int>(e.code());
+    }
+    if (!dir.entries().empty()) code = 99;
+  }
+  std::_Exit(code);
+}
+
+TEST(LevelSetDeathTest, AMissingModuleIsOneSystemErrorNamingIt) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(write_without_the_module(), ::testing::ExitedWithCode(3),
+              "/nonexistent/marchstudio-vdb.so: cannot load the OpenVDB module");
+}
+
 }  // namespace
 }  // namespace ms
