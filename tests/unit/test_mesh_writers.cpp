@@ -5,6 +5,7 @@
 // write that fails throws Exit::system naming the file and leaves nothing.
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstring>
@@ -247,18 +248,39 @@ TEST(MeshWriters, ADirectoryThatCannotBeMadeIsASystemErrorAndLeavesNothing) {
   }
 }
 
+// Root ignores a directory's permissions, so as root the writes run in a
+// child that has become nobody (65534) first.
 TEST(MeshWriters, AReadOnlyDirectoryIsASystemErrorAndLeavesNothing) {
   TempDir dir;
-  fs::create_directory(dir / "ro");
-  fs::permissions(dir / "ro", fs::perms::owner_read | fs::perms::owner_exec);
-  if (::access((dir / "ro").c_str(), W_OK) == 0) {
-    fs::permissions(dir / "ro", fs::perms::owner_all);
-    GTEST_SKIP() << "permissions do not bind this user (root): the read-only case is untested";
+  const fs::path ro = dir / "ro";
+  fs::create_directory(ro);
+  fs::permissions(dir.path(), fs::perms::owner_all | fs::perms::others_exec | fs::perms::group_exec);
+  fs::permissions(ro, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::others_read |
+                          fs::perms::others_exec | fs::perms::group_read | fs::perms::group_exec);
+  const auto write_all = [&] {
+    int failures = 0;
+    for (const char* name : {"m.obj", "m.ply", "m.stl", "m.glb"})
+      failures += code_of([&] { write_mesh(tetrahedron(), materials(), ro / name); }) != Exit::system;
+    return failures;
+  };
+  if (::geteuid() != 0) {
+    EXPECT_EQ(write_all(), 0);
+  } else {
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      if (::setresgid(65534, 65534, 65534) != 0 || ::setresuid(65534, 65534, 65534) != 0) std::_Exit(100);
+      if (::access(ro.c_str(), R_OK | X_OK) != 0) std::_Exit(102);  // the failure must be the directory's mode
+      std::_Exit(::access(ro.c_str(), W_OK) == 0 ? 101 : write_all());
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "100: could not become nobody; 101: nobody may write; 102: nor "
+                                         "read; else: writes that did not fail with Exit::system";
   }
-  for (const char* name : {"m.obj", "m.ply", "m.stl", "m.glb"})
-    EXPECT_EQ(code_of([&] { write_mesh(tetrahedron(), materials(), dir / "ro" / name); }), Exit::system) << name;
-  fs::permissions(dir / "ro", fs::perms::owner_all);
-  EXPECT_TRUE(fs::is_empty(dir / "ro"));
+  fs::permissions(ro, fs::perms::owner_all);
+  EXPECT_TRUE(fs::is_empty(ro));
 }
 
 }  // namespace
