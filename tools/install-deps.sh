@@ -21,6 +21,10 @@ PACKAGES=(
   chromium                          # tests/cli/test_test_report.cpp: the test --report page in a real browser
   slurm-wlm munge                   # tests/slurm: a real job array on a localhost cluster
   clang-14 libclang-rt-14-dev       # tests/fuzz: libFuzzer targets (CMakePresets.json "fuzz")
+  libtinygltf-dev                   # mesh/: .glb export (glTF 2.0 binary)
+  libopenvdb-dev                    # mesh/vdb/: .vdb level sets, in the dlopen'd marchstudio-vdb.so
+  python3-openvdb                   # tests read the .vdb back with pyopenvdb (skipped without)
+  python3-numpy python3-skimage     # tools/: the mesh baseline script (marching cubes)
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq

@@ -1,6 +1,7 @@
 // docs/performance.md#start-up: what a run loads. OpenImageIO (~260
 // libraries) and OSMesa (LLVM) are opened only when a run needs them, so
-// --version, --help and a PNG or EXR still never load them; a TIFF does,
+// --version, --help and a PNG or EXR still never load them (nor OpenVDB,
+// which only mesh/'s .vdb writer loads, from marchstudio-vdb.so); a TIFF does,
 // from the module beside the binary; and a missing module is one line,
 // exit 3, no file. Checked with the dynamic loader's own log
 // (LD_DEBUG=files), never with a clock.
@@ -22,7 +23,7 @@ RunResult run_logged(const std::vector<std::string>& args, const TempDir& dir) {
   return run_marchstudio(args, dir.path(), "LD_DEBUG=files; export LD_DEBUG; ");
 }
 
-TEST(StartUp, VersionAndHelpLoadNeitherOpenImageIONorOSMesa) {
+TEST(StartUp, VersionAndHelpLoadNeitherOpenImageIONorOSMesaNorOpenVDB) {
   TempDir dir;
   for (const std::vector<std::string>& args : {std::vector<std::string>{"--version"}, {"--help"}, {"render", "--help"}}) {
     const RunResult r = run_logged(args, dir);
@@ -31,6 +32,8 @@ TEST(StartUp, VersionAndHelpLoadNeitherOpenImageIONorOSMesa) {
     EXPECT_FALSE(loaded(r, "libOpenImageIO.so.2.4")) << args[0];
     EXPECT_FALSE(loaded(r, "libOSMesa.so.8")) << args[0];
     EXPECT_FALSE(loaded(r, "marchstudio-oiio.so")) << args[0];
+    EXPECT_FALSE(loaded(r, "libopenvdb.so.10.0")) << args[0];  // only mesh/'s .vdb writer loads it
+    EXPECT_FALSE(loaded(r, "marchstudio-vdb.so")) << args[0];
   }
 }
 

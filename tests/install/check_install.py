@@ -30,7 +30,7 @@ def main():
     ap.add_argument('--build', required=True)
     ap.add_argument('--source', required=True)
     a = ap.parse_args()
-    env = {k: v for k, v in os.environ.items() if k not in ('MARCH_SHADER_DIR', 'MARCH_IMAGE_MODULE')}
+    env = {k: v for k, v in os.environ.items() if k not in ('MARCH_SHADER_DIR', 'MARCH_IMAGE_MODULE', 'MARCH_VDB_MODULE')}
     with tempfile.TemporaryDirectory() as tmp:
         first = os.path.join(tmp, 'first')
         run([a.cmake, '--install', a.build, '--prefix', first], tmp, env)
@@ -39,8 +39,9 @@ def main():
         shutil.move(first, prefix)
         exe = os.path.join(prefix, 'bin', 'marchstudio')
         module = os.path.join(prefix, 'lib', 'marchstudio', 'marchstudio-oiio.so')
+        vdb_module = os.path.join(prefix, 'lib', 'marchstudio', 'marchstudio-vdb.so')  # mesh/'s .vdb writer
         shaders = os.path.join(prefix, 'share', 'marchstudio', 'sdf_shaders')
-        for p in (exe, module, os.path.join(shaders, 'main.frag')):
+        for p in (exe, module, vdb_module, os.path.join(shaders, 'main.frag')):
             if not os.path.isfile(p):
                 fail('the install has no ' + os.path.relpath(p, prefix))
         if os.listdir(os.path.join(prefix, 'bin')) != ['marchstudio']:
