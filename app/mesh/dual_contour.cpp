@@ -122,27 +122,44 @@ Vertices place_vertices(const SparseField& f, const Edges& e, DualContour& dc) {
 // Every vertex onto the surface: Newton steps along the gradient, each at
 // most a voxel. A vertex where a crease's or corner's planes meet reads
 // zero there already and stays; one the QEF put beside a tight rounding
-// (its planes' meeting point off the curved surface) moves onto it.
+// (its planes' meeting point off the curved surface) moves onto it. Where
+// a step made |f| larger (across a kink of a field that is only a bound),
+// the vertex goes back and takes half the step next time.
 void project_vertices(FieldSource& source, const SparseField& f, DualContour& dc) {
-  std::vector<std::size_t> which(dc.mesh.positions.size());
-  for (std::size_t i = 0; i < which.size(); ++i) which[i] = i;
-  // A second step only where the first moved far: the field curved there.
-  for (int pass = 0; pass < 2 && !which.empty(); ++pass) {
-    std::vector<glm::vec3> pts(which.size());
-    for (std::size_t k = 0; k < which.size(); ++k) pts[k] = dc.mesh.positions[which[k]];
+  struct Walk {
+    std::size_t v;
+    glm::dvec3 from;
+    double value, scale;
+  };
+  std::vector<Walk> walks;
+  for (std::size_t i = 0; i < dc.mesh.positions.size(); ++i) walks.push_back({i, glm::dvec3(dc.mesh.positions[i]), 1e30, 1.0});
+  const double done = 1e-4 * f.grid.voxel;
+  for (int pass = 0; pass < 8 && !walks.empty(); ++pass) {
+    std::vector<glm::vec3> pts(walks.size());
+    for (std::size_t k = 0; k < walks.size(); ++k) pts[k] = dc.mesh.positions[walks[k].v];
     const std::vector<FieldPoint> r = source.points(pts);
-    std::vector<std::size_t> again;
+    std::vector<Walk> next;
     for (std::size_t k = 0; k < r.size(); ++k) {
+      Walk w = walks[k];
+      const double value = static_cast<double>(r[k].value);
+      if (std::abs(value) > std::abs(w.value)) {  // worse: back, and half the step
+        dc.mesh.positions[w.v] = glm::vec3(w.from);
+        w.scale *= 0.5;
+        next.push_back(w);
+        continue;
+      }
+      if (std::abs(value) <= done) continue;
       const glm::dvec3 g(r[k].gradient);
       const double gg = glm::dot(g, g);
-      if (!(gg > 0.25)) continue;
-      const glm::dvec3 step = g * (static_cast<double>(r[k].value) / gg);
-      const double len = glm::length(step);
-      if (len > f.grid.voxel) continue;
-      dc.mesh.positions[which[k]] = glm::vec3(glm::dvec3(pts[k]) - step);
-      if (len > 0.01 * f.grid.voxel) again.push_back(which[k]);
+      if (!(gg > 1e-6)) continue;
+      const glm::dvec3 step = g * (w.scale * value / gg);
+      if (glm::length(step) > f.grid.voxel) continue;
+      w.from = glm::dvec3(pts[k]);
+      w.value = value;
+      dc.mesh.positions[w.v] = glm::vec3(w.from - step);
+      next.push_back(w);
     }
-    which.swap(again);
+    walks.swap(next);
   }
 }
 

@@ -1,5 +1,7 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -51,18 +53,28 @@ MeshAccuracy measure_accuracy(FieldSource& source, DualContour& dc, double voxel
   for (std::size_t t = 0; t < m.triangles(); ++t)
     centroids[t] = (m.positions[m.indices[t * 3]] + m.positions[m.indices[t * 3 + 1]] + m.positions[m.indices[t * 3 + 2]]) / 3.0f;
   for (const FieldPoint& p : source.points(centroids, false))
-    a.hausdorff = std::max(a.hausdorff, std::abs(static_cast<double>(p.value)) / voxel);
-  // Surface to mesh: each crossing to the quad made for it.
+    a.mesh_to_surface = std::max(a.mesh_to_surface, std::abs(static_cast<double>(p.value)) / voxel);
+  // Surface to mesh: each crossing to the triangles around its quad's
+  // four vertices (the mesh near it; the nearest point is there or nearer).
+  std::vector<std::uint32_t> start(m.positions.size() + 1, 0), ring(m.indices.size());
+  for (std::uint32_t i : m.indices) ++start[i + 1];
+  for (std::size_t i = 0; i < m.positions.size(); ++i) start[i + 1] += start[i];
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t k = 0; k < m.indices.size(); ++k) ring[fill[m.indices[k]]++] = static_cast<std::uint32_t>(k / 3);
+  auto tri = [&m](std::uint32_t t, const glm::dvec3& p) {
+    return point_triangle(p, glm::dvec3(m.positions[m.indices[t * 3]]), glm::dvec3(m.positions[m.indices[t * 3 + 1]]),
+                          glm::dvec3(m.positions[m.indices[t * 3 + 2]]));
+  };
   for (std::size_t i = 0; i < dc.crossings.size(); ++i) {
     const std::uint32_t t = dc.crossing_quad[i];
     if (t == 0xffffffffu) continue;
-    double d = 1e300;
-    for (std::uint32_t k = t; k < t + 2; ++k)
-      d = std::min(d, point_triangle(glm::dvec3(dc.crossings[i]), glm::dvec3(m.positions[m.indices[k * 3]]),
-                                     glm::dvec3(m.positions[m.indices[k * 3 + 1]]),
-                                     glm::dvec3(m.positions[m.indices[k * 3 + 2]])));
-    a.hausdorff = std::max(a.hausdorff, d / voxel);
+    const glm::dvec3 p(dc.crossings[i]);
+    double d = std::min(tri(t, p), tri(t + 1, p));
+    for (std::uint32_t k = t * 3; k < t * 3 + 6; ++k)
+      for (std::uint32_t j = start[m.indices[k]]; j < start[m.indices[k] + 1]; ++j) d = std::min(d, tri(ring[j], p));
+    a.surface_to_mesh = std::max(a.surface_to_mesh, d / voxel);
   }
+  a.hausdorff = std::max(a.mesh_to_surface, a.surface_to_mesh);
   return a;
 }
 

@@ -34,7 +34,11 @@ MeshCheck check_mesh(const TriMesh& mesh, double voxel);
 struct MeshAccuracy {
   double max_vertex = 0.0;   // largest |f(v)| over the vertices, in voxels
   double mean_vertex = 0.0;
-  double hausdorff = 0.0;    // two-sided, estimated: triangle centroids' |f| and crossings' distance to their quad, in voxels
+  // Two-sided, estimated, in voxels: the larger of the mesh's distance to
+  // the surface (|f| at every triangle's centroid) and the surface's to the
+  // mesh (each edge crossing's distance to the quad made for it).
+  double hausdorff = 0.0;
+  double mesh_to_surface = 0.0, surface_to_mesh = 0.0;
 };
 
 // Evaluates the field at the final vertices (their materials come from

@@ -114,7 +114,7 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
     if (parts->plan.pruned()) prune = std::make_unique<Program>(Program::Compute{}, prune_src);
     field = std::make_unique<GraphField>(parts->buffers, parts->plan, prune.get());
     field->bind();
-    if (job.frame.verbose) std::fprintf(stderr, "  %s\n", field->summary().c_str());
+    if (job.frame.verbose && !field->summary().empty()) std::fprintf(stderr, "  %s\n", field->summary().c_str());
   }
   r.setup_s = since(start);
   const float time = job.frame.time ? *job.frame.time : scene.render.time;

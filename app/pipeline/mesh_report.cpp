@@ -27,6 +27,8 @@ std::string mesh_report_json(const MeshReport& r) {
     j["max_vertex_error_voxels"] = r.accuracy.max_vertex;
     j["mean_vertex_error_voxels"] = r.accuracy.mean_vertex;
     j["hausdorff_voxels"] = r.accuracy.hausdorff;
+    j["mesh_to_surface_voxels"] = r.accuracy.mesh_to_surface;
+    j["surface_to_mesh_voxels"] = r.accuracy.surface_to_mesh;
     j["manifold"] = r.check.ok();
     j["check"] = {{"summary", r.check.summary()},
                   {"boundary_edges", r.check.boundary_edges},
@@ -60,8 +62,9 @@ std::vector<std::string> mesh_report_lines(const MeshReport& r) {
                 r.cells.x, r.cells.y, r.cells.z, r.voxel, r.bricks, r.samples, r.readback_bytes / 1e6);
   out.push_back(buf);
   if (r.format != MeshFormat::vdb) {
-    std::snprintf(buf, sizeof buf, "vertices |map| max %.4f, mean %.4f voxel; Hausdorff (estimated) %.4f voxel",
-                  r.accuracy.max_vertex, r.accuracy.mean_vertex, r.accuracy.hausdorff);
+    std::snprintf(buf, sizeof buf, "vertices |map| max %.4f, mean %.4f voxel; Hausdorff (estimated) %.4f voxel (mesh to surface %.4f, surface to mesh %.4f)",
+                  r.accuracy.max_vertex, r.accuracy.mean_vertex, r.accuracy.hausdorff, r.accuracy.mesh_to_surface,
+                  r.accuracy.surface_to_mesh);
     out.push_back(buf);
     std::snprintf(buf, sizeof buf, "check: %s; Euler characteristic %lld; %zu cells, %zu with split vertices",
                   r.check.summary().c_str(), r.check.euler, r.surface_cells, r.split_cells);
