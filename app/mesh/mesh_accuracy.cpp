@@ -70,7 +70,7 @@ MeshAccuracy measure_accuracy(FieldSource& source, DualContour& dc, double voxel
     if (t == 0xffffffffu) continue;
     const glm::dvec3 p(dc.crossings[i]);
     double d = std::min(tri(t, p), tri(t + 1, p));
-    for (std::uint32_t k = t * 3; k < t * 3 + 6; ++k)
+    for (std::uint32_t k = d > 0.01 * voxel ? t * 3 : t * 3 + 6; k < t * 3 + 6; ++k)
       for (std::uint32_t j = start[m.indices[k]]; j < start[m.indices[k] + 1]; ++j) d = std::min(d, tri(ring[j], p));
     a.surface_to_mesh = std::max(a.surface_to_mesh, d / voxel);
   }

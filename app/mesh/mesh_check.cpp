@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -12,57 +13,74 @@ namespace ms {
 
 namespace {
 
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return (static_cast<std::uint64_t>(a) << 32) | b; }
+// Per vertex, its corners: the vertex after it in each of its triangles
+// and the one after that (counter-clockwise), in one flat array.
+struct Corners {
+  std::vector<std::uint32_t> start;          // vertex -> first corner
+  std::vector<std::uint32_t> next, prev;
+};
 
-// Counts per undirected edge, and directed edges seen twice.
-void check_edges(const TriMesh& m, MeshCheck& c, std::size_t& edges) {
-  std::unordered_map<std::uint64_t, std::uint32_t> directed;
-  directed.reserve(m.indices.size() * 2);
+Corners corners_of(const TriMesh& m) {
+  Corners c;
+  const std::size_t nv = m.positions.size();
+  c.start.assign(nv + 1, 0);
+  for (std::uint32_t i : m.indices) ++c.start[i + 1];
+  for (std::size_t i = 0; i < nv; ++i) c.start[i + 1] += c.start[i];
+  c.next.resize(m.indices.size());
+  c.prev.resize(m.indices.size());
+  std::vector<std::uint32_t> fill(c.start.begin(), c.start.end() - 1);
   for (std::size_t t = 0; t < m.triangles(); ++t)
     for (int k = 0; k < 3; ++k) {
-      const std::uint32_t a = m.indices[t * 3 + k], b = m.indices[t * 3 + (k + 1) % 3];
-      if (++directed[edge_key(a, b)] == 2) ++c.flipped_edges;
+      const std::uint32_t v = m.indices[t * 3 + k], at = fill[v]++;
+      c.next[at] = m.indices[t * 3 + (k + 1) % 3];
+      c.prev[at] = m.indices[t * 3 + (k + 2) % 3];
     }
-  for (const auto& [key, n] : directed) {
-    const std::uint32_t a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key);
-    const auto back = directed.find(edge_key(b, a));
-    const std::uint32_t total = n + (back == directed.end() ? 0u : back->second);
-    if (a > b && back != directed.end()) continue;  // counted from the other side
-    ++edges;
-    if (total == 1) ++c.boundary_edges;
-    if (total > 2) ++c.nonmanifold_edges;
-  }
+  return c;
 }
 
-// A vertex is manifold when its triangles, joined across shared edges
-// around it, form one fan: count the fans by union-find on its corners.
-void check_fans(const TriMesh& m, MeshCheck& c) {
-  const std::size_t nv = m.positions.size();
-  std::vector<std::uint32_t> start(nv + 1, 0);
-  for (std::uint32_t i : m.indices) ++start[i + 1];
-  for (std::size_t i = 0; i < nv; ++i) start[i + 1] += start[i];
-  std::vector<std::uint32_t> tris(m.indices.size()), fill(start.begin(), start.end() - 1);
-  for (std::size_t k = 0; k < m.indices.size(); ++k) tris[fill[m.indices[k]]++] = static_cast<std::uint32_t>(k / 3);
-  std::vector<int> parent;
-  for (std::size_t v = 0; v < nv; ++v) {
-    const std::uint32_t b = start[v], e = start[v + 1];
-    parent.resize(e - b);
-    for (std::uint32_t i = 0; i < e - b; ++i) parent[i] = static_cast<int>(i);
-    auto find = [&](int x) { while (parent[x] != x) x = parent[x] = parent[parent[x]]; return x; };
-    // Two triangles around v are joined when they share another vertex.
-    for (std::uint32_t i = b; i < e; ++i)
-      for (std::uint32_t j = i + 1; j < e; ++j) {
-        int shared = 0;
-        for (int x = 0; x < 3; ++x)
-          for (int y = 0; y < 3; ++y) {
-            const std::uint32_t p = m.indices[tris[i] * 3 + x], q = m.indices[tris[j] * 3 + y];
-            shared += p == q && p != v;
-          }
-        if (shared > 0) parent[find(static_cast<int>(i - b))] = find(static_cast<int>(j - b));
-      }
-    int fans = 0;
-    for (std::uint32_t i = 0; i < e - b; ++i) fans += find(static_cast<int>(i)) == static_cast<int>(i);
-    c.nonmanifold_vertices += fans > 1;
+std::uint32_t count_next(const Corners& c, std::uint32_t v, std::uint32_t n) {
+  std::uint32_t k = 0;
+  for (std::uint32_t i = c.start[v]; i < c.start[v + 1]; ++i) k += c.next[i] == n;
+  return k;
+}
+
+// Each directed edge v -> n: once (else two neighbours disagree on the
+// orientation), and n -> v once (else the edge has one face, or three or
+// more). Each undirected edge counted once.
+void check_edges(const Corners& c, MeshCheck& out, std::size_t& edges) {
+  const std::size_t nv = c.start.size() - 1;
+  for (std::uint32_t v = 0; v < nv; ++v)
+    for (std::uint32_t i = c.start[v]; i < c.start[v + 1]; ++i) {
+      const std::uint32_t n = c.next[i];
+      bool first = true;
+      for (std::uint32_t j = c.start[v]; j < i && first; ++j) first = c.next[j] != n;
+      if (!first) continue;
+      const std::uint32_t here = count_next(c, v, n), back = count_next(c, n, v);
+      if (back > 0 && n < v) continue;  // counted from n
+      ++edges;
+      out.flipped_edges += here > 1 || back > 1;
+      if (here + back == 1) ++out.boundary_edges;
+      if (here + back > 2) ++out.nonmanifold_edges;
+    }
+}
+
+// A vertex is manifold when its link (each triangle's edge opposite it,
+// next -> prev) is one cycle through all its triangles: one fan.
+void check_fans(const Corners& c, MeshCheck& out) {
+  const std::size_t nv = c.start.size() - 1;
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    const std::uint32_t b = c.start[v], e = c.start[v + 1];
+    if (b == e) continue;
+    std::uint32_t at = b, steps = 0;
+    do {
+      std::uint32_t following = e;
+      for (std::uint32_t j = b; j < e && following == e; ++j)
+        if (c.next[j] == c.prev[at]) following = j;
+      if (following == e) break;
+      at = following;
+      ++steps;
+    } while (at != b && steps <= e - b);
+    out.nonmanifold_vertices += !(at == b && steps == e - b);
   }
 }
 
@@ -97,47 +115,64 @@ bool triangles_cross(const TriMesh& m, std::size_t s, std::size_t t) {
   return false;
 }
 
-// Triangles bucketed by centroid in cubes of two voxels; each pair in
-// neighbouring buckets that shares no vertex and whose boxes overlap is tested.
+// Triangles bucketed by centroid in cubes of two voxels (sorted, not
+// hashed: a pass over memory in order), and each pair in neighbouring
+// buckets that shares no vertex and whose boxes overlap tested, each pair
+// once; the buckets split between two threads.
 std::size_t self_intersections(const TriMesh& m, double voxel) {
-  const double cell = 2.0 * voxel;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> buckets;
-  auto key = [](long long x, long long y, long long z) {
-    return (static_cast<std::uint64_t>(x & 0x1fffff) << 42) | (static_cast<std::uint64_t>(y & 0x1fffff) << 21) |
-           static_cast<std::uint64_t>(z & 0x1fffff);
+  const std::size_t nt = m.triangles();
+  std::vector<glm::vec3> lo(nt), hi(nt);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(nt);
+  auto key = [](const glm::ivec3& c) {
+    return (static_cast<std::uint64_t>(c.x & 0x1fffff) << 42) | (static_cast<std::uint64_t>(c.y & 0x1fffff) << 21) |
+           static_cast<std::uint64_t>(c.z & 0x1fffff);
   };
-  std::vector<glm::ivec3> where(m.triangles());
-  for (std::size_t t = 0; t < m.triangles(); ++t) {
-    const glm::dvec3 c = (glm::dvec3(m.positions[m.indices[t * 3]]) + glm::dvec3(m.positions[m.indices[t * 3 + 1]]) +
-                          glm::dvec3(m.positions[m.indices[t * 3 + 2]])) / 3.0;
-    where[t] = glm::ivec3(glm::floor(c / cell));
-    buckets[key(where[t].x, where[t].y, where[t].z)].push_back(static_cast<std::uint32_t>(t));
+  for (std::size_t t = 0; t < nt; ++t) {
+    const glm::vec3 a = m.positions[m.indices[t * 3]], b = m.positions[m.indices[t * 3 + 1]],
+                    c = m.positions[m.indices[t * 3 + 2]];
+    lo[t] = glm::min(glm::min(a, b), c);
+    hi[t] = glm::max(glm::max(a, b), c);
+    keyed[t] = {key(glm::ivec3(glm::floor(glm::dvec3(a + b + c) / (6.0 * voxel)))), static_cast<std::uint32_t>(t)};
   }
-  std::size_t n = 0;
-  for (std::size_t s = 0; s < m.triangles(); ++s) {
-    const std::uint32_t* a = &m.indices[s * 3];
-    glm::vec3 lo = glm::min(glm::min(m.positions[a[0]], m.positions[a[1]]), m.positions[a[2]]);
-    glm::vec3 hi = glm::max(glm::max(m.positions[a[0]], m.positions[a[1]]), m.positions[a[2]]);
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const auto it = buckets.find(key(where[s].x + dx, where[s].y + dy, where[s].z + dz));
-          if (it == buckets.end()) continue;
-          for (std::uint32_t t : it->second) {
-            if (t <= s) continue;
-            const std::uint32_t* b = &m.indices[static_cast<std::size_t>(t) * 3];
-            bool shares = false;
-            for (int i = 0; i < 3; ++i)
-              for (int j = 0; j < 3; ++j) shares = shares || a[i] == b[j];
-            if (shares) continue;
-            const glm::vec3 lo2 = glm::min(glm::min(m.positions[b[0]], m.positions[b[1]]), m.positions[b[2]]);
-            const glm::vec3 hi2 = glm::max(glm::max(m.positions[b[0]], m.positions[b[1]]), m.positions[b[2]]);
-            if (glm::any(glm::lessThan(hi, lo2)) || glm::any(glm::lessThan(hi2, lo))) continue;
-            n += triangles_cross(m, s, t);
-          }
-        }
-  }
-  return n;
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::size_t> first;  // each bucket's first entry
+  for (std::size_t i = 0; i < nt; ++i)
+    if (i == 0 || keyed[i].first != keyed[i - 1].first) first.push_back(i);
+  first.push_back(nt);
+  auto bucket = [&](std::uint64_t k) {  // index into first, or -1
+    std::size_t a = 0, b = first.size() - 1;
+    while (a < b) {
+      const std::size_t mid = (a + b) / 2;
+      if (keyed[first[mid]].first < k) a = mid + 1;
+      else b = mid;
+    }
+    return a < first.size() - 1 && keyed[first[a]].first == k ? static_cast<long>(a) : -1L;
+  };
+  auto test = [&](std::uint32_t s, std::uint32_t t) {
+    const std::uint32_t *a = &m.indices[std::size_t{s} * 3], *b = &m.indices[std::size_t{t} * 3];
+    for (int i = 0; i < 3; ++i)
+      if (a[i] == b[0] || a[i] == b[1] || a[i] == b[2]) return false;
+    if (glm::any(glm::lessThan(hi[s], lo[t])) || glm::any(glm::lessThan(hi[t], lo[s]))) return false;
+    return triangles_cross(m, s, t);
+  };
+  auto run = [&](std::size_t from, std::size_t step, std::size_t& n) {
+    for (std::size_t bi = from; bi + 1 < first.size(); bi += step) {
+      const std::uint64_t k = keyed[first[bi]].first;
+      const glm::ivec3 c(static_cast<int>(k >> 42), static_cast<int>((k >> 21) & 0x1fffff), static_cast<int>(k & 0x1fffff));
+      for (int d = 0; d < 27; ++d) {
+        const long other = bucket(key(c + glm::ivec3(d % 3 - 1, (d / 3) % 3 - 1, d / 9 - 1)));
+        if (other < static_cast<long>(bi)) continue;  // each pair of buckets once
+        for (std::size_t i = first[bi]; i < first[bi + 1]; ++i)
+          for (std::size_t j = other == static_cast<long>(bi) ? i + 1 : first[other]; j < first[other + 1]; ++j)
+            n += test(keyed[i].second, keyed[j].second);
+      }
+    }
+  };
+  std::size_t n0 = 0, n1 = 0;
+  std::thread other([&] { run(1, 2, n1); });
+  run(0, 2, n0);
+  other.join();
+  return n0 + n1;
 }
 
 }  // namespace
@@ -172,8 +207,9 @@ MeshCheck check_mesh(const TriMesh& m, double voxel) {
     const glm::dvec3 a(m.positions[i[0]]), b(m.positions[i[1]]), d(m.positions[i[2]]);
     c.volume += glm::dot(a, glm::cross(b, d)) / 6.0;
   }
-  check_edges(m, c, edges);
-  check_fans(m, c);
+  const Corners corners = corners_of(m);
+  check_edges(corners, c, edges);
+  check_fans(corners, c);
   c.self_intersections = self_intersections(m, voxel);
   c.euler = static_cast<long long>(m.positions.size()) - static_cast<long long>(edges) +
             static_cast<long long>(m.triangles());

@@ -161,3 +161,55 @@ TEST(MeshDualContour, TwoTouchingSpheresStayManifold) {
 
 }  // namespace
 }  // namespace ms
+
+namespace ms {
+namespace {
+
+// A closed cube of 12 triangles, counter-clockwise from outside, at `o`.
+void add_cube(TriMesh& m, const glm::vec3& o, float s = 1.0f) {
+  const std::uint32_t base = static_cast<std::uint32_t>(m.positions.size());
+  for (int i = 0; i < 8; ++i) m.positions.push_back(o + s * glm::vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
+  const std::uint32_t q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& f : q)
+    for (std::uint32_t k : {f[0], f[1], f[2], f[0], f[2], f[3]}) m.indices.push_back(base + k);
+  m.material.resize(m.positions.size(), 0);
+}
+
+TEST(MeshCheck, ACubeIsClosedAndEveryFaultIsFound) {
+  TriMesh cube;
+  add_cube(cube, glm::vec3(0.0f));
+  MeshCheck c = check_mesh(cube, 0.1);
+  EXPECT_TRUE(c.ok()) << c.summary();
+  EXPECT_EQ(c.euler, 2);
+  EXPECT_NEAR(c.volume, 1.0, 1e-6);
+
+  TriMesh hole = cube;
+  hole.indices.resize(hole.indices.size() - 3);
+  EXPECT_EQ(check_mesh(hole, 0.1).boundary_edges, 3u);
+
+  TriMesh flipped = cube;
+  std::swap(flipped.indices[1], flipped.indices[2]);
+  EXPECT_GT(check_mesh(flipped, 0.1).flipped_edges, 0u);
+
+  TriMesh inside_out = cube;
+  for (std::size_t t = 0; t < inside_out.triangles(); ++t) std::swap(inside_out.indices[t * 3 + 1], inside_out.indices[t * 3 + 2]);
+  c = check_mesh(inside_out, 0.1);
+  EXPECT_FALSE(c.ok());
+  EXPECT_LT(c.volume, 0.0);
+
+  TriMesh overlapping = cube;
+  add_cube(overlapping, glm::vec3(0.5f, 0.3f, 0.2f));
+  EXPECT_GT(check_mesh(overlapping, 0.5).self_intersections, 0u);
+
+  // Two cubes sharing one corner vertex: closed, but that vertex has two fans.
+  TriMesh bowtie = cube;
+  add_cube(bowtie, glm::vec3(1.0f));
+  for (std::uint32_t& i : bowtie.indices)
+    if (i == 8) i = 7;
+  c = check_mesh(bowtie, 0.5);
+  EXPECT_EQ(c.nonmanifold_vertices, 1u);
+  EXPECT_EQ(c.boundary_edges, 0u);
+}
+
+}  // namespace
+}  // namespace ms
