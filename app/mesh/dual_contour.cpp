@@ -20,6 +20,13 @@ int cell_local(const glm::ivec3& l) { return (l.z * kB + l.y) * kB + l.x; }
 int corner_local(const glm::ivec3& l) { return (l.z * (kB + 1) + l.y) * (kB + 1) + l.x; }
 glm::ivec3 unit(int axis) { return glm::ivec3(axis == 0, axis == 1, axis == 2); }
 
+// Whether a brick's corners differ in sign: only those hold surface.
+bool mixed(const float* v) {
+  bool neg = false, pos = false;
+  for (int i = 0; i < kCorners && !(neg && pos); ++i) (v[i] < 0.0f ? neg : pos) = true;
+  return neg && pos;
+}
+
 // Every sign-changing edge, each once: in the brick that holds its first
 // voxel, at that voxel's local index.
 struct Edges {
@@ -34,6 +41,7 @@ Edges find_edges(const SparseField& f) {
   e.at.assign(f.bricks.size() * kCells * 3, -1);
   for (std::size_t s = 0; s < f.bricks.size(); ++s) {
     const float* v = &f.values[s * kCorners];
+    if (!mixed(v)) continue;
     const glm::ivec3 first = f.bricks[s] * kB;
     for (int z = 0; z < kB; ++z)
       for (int y = 0; y < kB; ++y)
@@ -51,8 +59,11 @@ Edges find_edges(const SparseField& f) {
   return e;
 }
 
-int edge_at(const SparseField& f, const Edges& e, const glm::ivec3& voxel, int axis) {
-  const int slot = f.slot_of_cell(voxel);
+// `hint`: the brick of the cell asking, looked up only when the voxel is in another.
+int edge_at(const SparseField& f, const Edges& e, const glm::ivec3& voxel, int axis, int hint) {
+  const glm::ivec3 in = voxel - f.bricks[static_cast<std::size_t>(hint)] * kB;
+  const bool here = in.x >= 0 && in.y >= 0 && in.z >= 0 && in.x < kB && in.y < kB && in.z < kB;
+  const int slot = here ? hint : f.slot_of_cell(voxel);
   if (slot < 0) return -1;
   const glm::ivec3 l = voxel - f.bricks[static_cast<std::size_t>(slot)] * kB;
   return e.at[(static_cast<std::size_t>(slot) * kCells + static_cast<std::size_t>(cell_local(l))) * 3 + axis];
@@ -72,14 +83,14 @@ int cell_mask(const float* v, const glm::ivec3& l) {
 }
 
 // One cell's vertices, one per patch, appended to dc.
-void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell, int mask, DualContour& dc) {
+void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell, int mask, int slot, DualContour& dc) {
   const CellPatches& p = cell_patches(mask);
   for (int k = 0; k < p.count; ++k) {
     Qef q;
     for (int i = 0; i < 12; ++i) {
       if (p.patch[i] != k) continue;
       const int axis = edge_axis(i);
-      const int idx = edge_at(f, e, cell + edge_start(i), axis);
+      const int idx = edge_at(f, e, cell + edge_start(i), axis, slot);
       if (idx < 0) {
         ++dc.missing;
         continue;
@@ -104,6 +115,7 @@ Vertices place_vertices(const SparseField& f, const Edges& e, DualContour& dc) {
   v.mask.assign(f.bricks.size() * kCells, 0);
   for (std::size_t s = 0; s < f.bricks.size(); ++s) {
     const float* vals = &f.values[s * kCorners];
+    if (!mixed(vals)) continue;
     for (int z = 0; z < kB; ++z)
       for (int y = 0; y < kB; ++y)
         for (int x = 0; x < kB; ++x) {
@@ -113,7 +125,7 @@ Vertices place_vertices(const SparseField& f, const Edges& e, DualContour& dc) {
           const std::size_t i = s * kCells + static_cast<std::size_t>(cell_local(l));
           v.first[i] = static_cast<std::int32_t>(dc.mesh.positions.size());
           v.mask[i] = static_cast<std::uint8_t>(m);
-          cell_vertices(f, e, f.bricks[s] * kB + l, m, dc);
+          cell_vertices(f, e, f.bricks[s] * kB + l, m, static_cast<int>(s), dc);
         }
   }
   return v;

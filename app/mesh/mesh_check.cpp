@@ -149,10 +149,12 @@ std::size_t self_intersections(const TriMesh& m, double voxel) {
     return a < first.size() - 1 && keyed[first[a]].first == k ? static_cast<long>(a) : -1L;
   };
   auto test = [&](std::uint32_t s, std::uint32_t t) {
+    if (hi[s].x < lo[t].x || hi[s].y < lo[t].y || hi[s].z < lo[t].z || hi[t].x < lo[s].x || hi[t].y < lo[s].y ||
+        hi[t].z < lo[s].z)
+      return false;
     const std::uint32_t *a = &m.indices[std::size_t{s} * 3], *b = &m.indices[std::size_t{t} * 3];
     for (int i = 0; i < 3; ++i)
       if (a[i] == b[0] || a[i] == b[1] || a[i] == b[2]) return false;
-    if (glm::any(glm::lessThan(hi[s], lo[t])) || glm::any(glm::lessThan(hi[t], lo[s]))) return false;
     return triangles_cross(m, s, t);
   };
   auto run = [&](std::size_t from, std::size_t step, std::size_t& n) {

@@ -17,7 +17,7 @@
 
 namespace ms {
 
-constexpr int kBrick = 8;  // cells along a brick's side
+constexpr int kBrick = 4;  // cells along a brick's side
 
 struct MeshGrid {
   glm::dvec3 origin{0.0};  // world position of voxel (0, 0, 0)
