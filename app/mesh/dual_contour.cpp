@@ -15,6 +15,8 @@ namespace {
 constexpr int kB = kBrick;
 constexpr int kCells = kB * kB * kB;
 constexpr int kCorners = (kB + 1) * (kB + 1) * (kB + 1);
+// How far (in voxels) a projected vertex may leave its cell.
+constexpr double kCellMargin = 0.1;
 
 int cell_local(const glm::ivec3& l) { return (l.z * kB + l.y) * kB + l.x; }
 int corner_local(const glm::ivec3& l) { return (l.z * (kB + 1) + l.y) * (kB + 1) + l.x; }
@@ -69,11 +71,26 @@ int edge_at(const SparseField& f, const Edges& e, const glm::ivec3& voxel, int a
   return e.at[(static_cast<std::size_t>(slot) * kCells + static_cast<std::size_t>(cell_local(l))) * 3 + axis];
 }
 
-// Per brick and cell, the first vertex of its patches (-1: no surface).
+// Per brick and cell, the first vertex of its patches (-1: no surface)
+// and its patch table's key (mask * 64 + joined faces).
 struct Vertices {
   std::vector<std::int32_t> first;
-  std::vector<std::uint8_t> mask;
+  std::vector<std::uint16_t> key;
 };
+
+// Which of the cell's ambiguous faces join their inside corners, by the
+// asymptotic decider on the face's own values: both cells of a face agree.
+int joined_faces(const float* v, const glm::ivec3& l, int mask) {
+  int joined = 0x3f;
+  const int amb = ambiguous_faces(mask);
+  for (int f = 0; f < 6; ++f) {
+    if (!(amb >> f & 1)) continue;
+    float c[4];
+    for (int k = 0; k < 4; ++k) c[k] = v[corner_local(l + face_corner(f, k))];
+    if (!face_joined(c[0], c[1], c[2], c[3])) joined &= ~(1 << f);
+  }
+  return joined;
+}
 
 int cell_mask(const float* v, const glm::ivec3& l) {
   int m = 0;
@@ -83,8 +100,8 @@ int cell_mask(const float* v, const glm::ivec3& l) {
 }
 
 // One cell's vertices, one per patch, appended to dc.
-void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell, int mask, int slot, DualContour& dc) {
-  const CellPatches& p = cell_patches(mask);
+void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell, int key, int slot, DualContour& dc) {
+  const CellPatches& p = cell_patches(key >> 6, key & 63);
   for (int k = 0; k < p.count; ++k) {
     Qef q;
     for (int i = 0; i < 12; ++i) {
@@ -100,19 +117,61 @@ void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell,
       local[axis] += static_cast<double>(r.w);
       q.add(local, glm::dvec3(r));
     }
-    QefSolution s = q.solve();
+    // A cell with several patches: each vertex at its own crossings' mean,
+    // where the patches stay apart (their QEF points may cross).
+    QefSolution s = q.solve(p.count > 1 ? 2.0 : 0.01);
     s.point = glm::clamp(s.point, glm::dvec3(0.0), glm::dvec3(1.0));
     dc.mesh.positions.push_back(glm::vec3(f.grid.origin + (glm::dvec3(cell) + s.point) * f.grid.voxel));
     dc.rank.push_back(static_cast<std::uint8_t>(std::max(s.rank, 1)));
+    dc.cell.push_back(cell);
+    dc.mass.push_back(glm::vec3(f.grid.origin + (glm::dvec3(cell) + glm::clamp(s.mass, glm::dvec3(0.0), glm::dvec3(1.0))) * f.grid.voxel));
   }
   ++dc.cells;
   dc.split_cells += p.count > 1;
 }
 
+// Whether all four crossing edges of face `f` belong to one patch of the
+// cell: its two segments there are on the same polygon.
+bool one_patch_on(int key, int f) {
+  int edges[4];
+  face_edges(f, edges);
+  const CellPatches& p = cell_patches(key >> 6, key & 63);
+  for (int k = 0; k < 4; ++k)
+    if (p.patch[edges[k]] < 0 || p.patch[edges[k]] != p.patch[edges[0]]) return false;
+  return true;
+}
+
+// Where both cells of an ambiguous face meet it with one patch each, their
+// two vertices would be joined by two quad sides, four faces on one edge:
+// that face takes the other diagonal, in both cells (the decider's rule
+// is the face's own, so the two stay in agreement).
+void fix_doubled_faces(const SparseField& f, Vertices& v) {
+  for (std::size_t i = 0; i < v.first.size(); ++i) {
+    if (v.first[i] != -2) continue;
+    const std::size_t s = i / kCells;
+    const int li = static_cast<int>(i % kCells);
+    const glm::ivec3 cell = f.bricks[s] * kB + glm::ivec3(li % kB, (li / kB) % kB, li / (kB * kB));
+    for (int axis = 0; axis < 3; ++axis) {
+      const int face = 2 * axis + 1;
+      if (!(ambiguous_faces(v.key[i] >> 6) >> face & 1)) continue;
+      const glm::ivec3 nb = cell + unit(axis);
+      const int slot = f.slot_of_cell(nb);
+      if (slot < 0) continue;
+      const glm::ivec3 l = nb - f.bricks[static_cast<std::size_t>(slot)] * kB;
+      const std::size_t j = static_cast<std::size_t>(slot) * kCells + static_cast<std::size_t>(cell_local(l));
+      if (v.first[j] != -2 || !one_patch_on(v.key[i], face) || !one_patch_on(v.key[j], face - 1)) continue;
+      v.key[i] = static_cast<std::uint16_t>(v.key[i] ^ (1 << face));
+      v.key[j] = static_cast<std::uint16_t>(v.key[j] ^ (1 << (face - 1)));
+    }
+  }
+}
+
 Vertices place_vertices(const SparseField& f, const Edges& e, DualContour& dc) {
   Vertices v;
   v.first.assign(f.bricks.size() * kCells, -1);
-  v.mask.assign(f.bricks.size() * kCells, 0);
+  v.key.assign(f.bricks.size() * kCells, 0);
+  // The patch tables of every cell first (-2: a cell with surface), then
+  // the faces mended, then the vertices.
   for (std::size_t s = 0; s < f.bricks.size(); ++s) {
     const float* vals = &f.values[s * kCorners];
     if (!mixed(vals)) continue;
@@ -123,10 +182,18 @@ Vertices place_vertices(const SparseField& f, const Edges& e, DualContour& dc) {
           const int m = cell_mask(vals, l);
           if (m == 0 || m == 255) continue;
           const std::size_t i = s * kCells + static_cast<std::size_t>(cell_local(l));
-          v.first[i] = static_cast<std::int32_t>(dc.mesh.positions.size());
-          v.mask[i] = static_cast<std::uint8_t>(m);
-          cell_vertices(f, e, f.bricks[s] * kB + l, m, static_cast<int>(s), dc);
+          v.first[i] = -2;
+          v.key[i] = static_cast<std::uint16_t>(m * 64 + joined_faces(vals, l, m));
         }
+  }
+  fix_doubled_faces(f, v);
+  for (std::size_t i = 0; i < v.first.size(); ++i) {
+    if (v.first[i] != -2) continue;
+    const std::size_t s = i / kCells;
+    const int li = static_cast<int>(i % kCells);
+    v.first[i] = static_cast<std::int32_t>(dc.mesh.positions.size());
+    cell_vertices(f, e, f.bricks[s] * kB + glm::ivec3(li % kB, (li / kB) % kB, li / (kB * kB)), v.key[i],
+                  static_cast<int>(s), dc);
   }
   return v;
 }
@@ -168,7 +235,11 @@ void project_vertices(FieldSource& source, const SparseField& f, DualContour& dc
       if (glm::length(step) > f.grid.voxel) continue;
       w.from = glm::dvec3(pts[k]);
       w.value = value;
-      dc.mesh.positions[w.v] = glm::vec3(w.from - step);
+      // Kept in its cell (and a margin): a vertex that wandered into the
+      // next cell could fold its quads through their neighbours'.
+      const glm::dvec3 lo = f.grid.origin + (glm::dvec3(dc.cell[w.v]) - kCellMargin) * f.grid.voxel;
+      const glm::dvec3 hi = lo + (1.0 + 2.0 * kCellMargin) * f.grid.voxel;
+      dc.mesh.positions[w.v] = glm::vec3(glm::clamp(w.from - step, lo, hi));
       next.push_back(w);
     }
     walks.swap(next);
@@ -181,7 +252,7 @@ int vertex_of(const SparseField& f, const Vertices& v, const glm::ivec3& cell, i
   const glm::ivec3 l = cell - f.bricks[static_cast<std::size_t>(slot)] * kB;
   const std::size_t i = static_cast<std::size_t>(slot) * kCells + static_cast<std::size_t>(cell_local(l));
   if (v.first[i] < 0) return -1;
-  const int patch = cell_patches(v.mask[i]).patch[edge];
+  const int patch = cell_patches(v.key[i] >> 6, v.key[i] & 63).patch[edge];
   return patch < 0 ? -1 : v.first[i] + patch;
 }
 

@@ -24,11 +24,14 @@ namespace ms {
 struct DualContour {
   TriMesh mesh;
   std::vector<std::uint8_t> rank;      // per vertex: 1 smooth, 2 crease, 3 corner
+  std::vector<glm::ivec3> cell;        // per vertex: its cell's first voxel
+  std::vector<glm::vec3> mass;         // per vertex: its crossings' mean, world units
   std::vector<glm::vec3> crossings;    // every edge's root, world units
   std::vector<std::uint32_t> crossing_quad;  // per crossing: its first triangle (-1 if no quad)
   std::size_t cells = 0;               // cells the surface crosses
   std::size_t split_cells = 0;         // of which with more than one patch
   std::size_t missing = 0;             // crossing edges next to a skipped brick (no quad)
+  std::size_t untangled = 0;           // vertices moved to undo self-intersections (mesh/untangle.h)
 };
 
 DualContour dual_contour(FieldSource& source, const SparseField& field, const MeshProgress& progress = {});

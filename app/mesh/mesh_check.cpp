@@ -119,7 +119,9 @@ bool triangles_cross(const TriMesh& m, std::size_t s, std::size_t t) {
 // hashed: a pass over memory in order), and each pair in neighbouring
 // buckets that shares no vertex and whose boxes overlap tested, each pair
 // once; the buckets split between two threads.
-std::size_t self_intersections(const TriMesh& m, double voxel) {
+}  // namespace
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> crossing_pairs(const TriMesh& m, double voxel) {
   const std::size_t nt = m.triangles();
   std::vector<glm::vec3> lo(nt), hi(nt);
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(nt);
@@ -157,7 +159,8 @@ std::size_t self_intersections(const TriMesh& m, double voxel) {
       if (a[i] == b[0] || a[i] == b[1] || a[i] == b[2]) return false;
     return triangles_cross(m, s, t);
   };
-  auto run = [&](std::size_t from, std::size_t step, std::size_t& n) {
+  using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+  auto run = [&](std::size_t from, std::size_t step, Pairs& n) {
     for (std::size_t bi = from; bi + 1 < first.size(); bi += step) {
       const std::uint64_t k = keyed[first[bi]].first;
       const glm::ivec3 c(static_cast<int>(k >> 42), static_cast<int>((k >> 21) & 0x1fffff), static_cast<int>(k & 0x1fffff));
@@ -166,18 +169,17 @@ std::size_t self_intersections(const TriMesh& m, double voxel) {
         if (other < static_cast<long>(bi)) continue;  // each pair of buckets once
         for (std::size_t i = first[bi]; i < first[bi + 1]; ++i)
           for (std::size_t j = other == static_cast<long>(bi) ? i + 1 : first[other]; j < first[other + 1]; ++j)
-            n += test(keyed[i].second, keyed[j].second);
+            if (test(keyed[i].second, keyed[j].second)) n.emplace_back(keyed[i].second, keyed[j].second);
       }
     }
   };
-  std::size_t n0 = 0, n1 = 0;
+  Pairs n0, n1;
   std::thread other([&] { run(1, 2, n1); });
   run(0, 2, n0);
   other.join();
-  return n0 + n1;
+  n0.insert(n0.end(), n1.begin(), n1.end());
+  return n0;
 }
-
-}  // namespace
 
 bool MeshCheck::ok() const {
   return boundary_edges == 0 && nonmanifold_edges == 0 && flipped_edges == 0 && nonmanifold_vertices == 0 &&
@@ -212,7 +214,7 @@ MeshCheck check_mesh(const TriMesh& m, double voxel) {
   const Corners corners = corners_of(m);
   check_edges(corners, c, edges);
   check_fans(corners, c);
-  c.self_intersections = self_intersections(m, voxel);
+  c.self_intersections = crossing_pairs(m, voxel).size();
   c.euler = static_cast<long long>(m.positions.size()) - static_cast<long long>(edges) +
             static_cast<long long>(m.triangles());
   return c;

@@ -7,7 +7,10 @@
 //   MeshAccuracy a = measure_accuracy(source, dc, voxel);  // also fills dc.mesh.material
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "mesh/dual_contour.h"
 #include "mesh/field_source.h"
@@ -30,6 +33,8 @@ struct MeshCheck {
 
 // `voxel`: the grid's cell, the scale of the self-intersection search.
 MeshCheck check_mesh(const TriMesh& mesh, double voxel);
+// The pairs of triangles, not neighbours, that cross (each pair once).
+std::vector<std::pair<std::uint32_t, std::uint32_t>> crossing_pairs(const TriMesh& mesh, double voxel);
 
 struct MeshAccuracy {
   double max_vertex = 0.0;   // largest |f(v)| over the vertices, in voxels

@@ -78,6 +78,7 @@ QefSolution Qef::solve(double cutoff) const {
     ++s.rank;
   }
   s.point = x;
+  s.mass = mass;
   return s;
 }
 

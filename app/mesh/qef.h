@@ -13,6 +13,7 @@ namespace ms {
 
 struct QefSolution {
   glm::dvec3 point{0.0};
+  glm::dvec3 mass{0.0};  // the crossings' mean
   int rank = 0;
 };
 

@@ -11,6 +11,7 @@
 #include "io/atomic_file.h"
 #include "mesh/dual_contour.h"
 #include "mesh/sparse_field.h"
+#include "mesh/untangle.h"
 #include "pipeline/input.h"
 #include "render/field_sampler.h"
 #include "render/graph_field.h"
@@ -144,6 +145,7 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   if (dc.mesh.positions.empty())
     fail_input("no surface inside the box: map() is positive (or negative) everywhere there", scene.file.string(),
                0, job.bounds ? "--bounds" : "bounds");
+  untangle(dc, grid);
   r.accuracy = measure_accuracy(sampler, dc, grid.voxel);
   r.mesh_s = since(m);
   if (progress) progress("checking", 0.8);
@@ -155,6 +157,7 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   r.surface_cells = dc.cells;
   r.split_cells = dc.split_cells;
   r.missing = dc.missing;
+  r.untangled = dc.untangled;
   r.samples = sampler.evaluations();
   r.readback_bytes = sampler.readback_bytes();
   if (progress) progress("writing", 0.9);

@@ -44,7 +44,7 @@ struct MeshReport {
   glm::ivec3 cells{0};
   double voxel = 0.0;
   std::size_t bricks = 0, samples = 0, readback_bytes = 0;
-  std::size_t vertices = 0, triangles = 0, surface_cells = 0, split_cells = 0, missing = 0;
+  std::size_t vertices = 0, triangles = 0, surface_cells = 0, split_cells = 0, missing = 0, untangled = 0;
   std::size_t band_voxels = 0;     // a level set's voxels
   MeshCheck check;
   MeshAccuracy accuracy;

@@ -24,6 +24,7 @@ std::string mesh_report_json(const MeshReport& r) {
     j["triangles"] = r.triangles;
     j["surface_cells"] = r.surface_cells;
     j["split_cells"] = r.split_cells;
+    j["untangled_vertices"] = r.untangled;
     j["max_vertex_error_voxels"] = r.accuracy.max_vertex;
     j["mean_vertex_error_voxels"] = r.accuracy.mean_vertex;
     j["hausdorff_voxels"] = r.accuracy.hausdorff;
@@ -66,8 +67,8 @@ std::vector<std::string> mesh_report_lines(const MeshReport& r) {
                   r.accuracy.max_vertex, r.accuracy.mean_vertex, r.accuracy.hausdorff, r.accuracy.mesh_to_surface,
                   r.accuracy.surface_to_mesh);
     out.push_back(buf);
-    std::snprintf(buf, sizeof buf, "check: %s; Euler characteristic %lld; %zu cells, %zu with split vertices",
-                  r.check.summary().c_str(), r.check.euler, r.surface_cells, r.split_cells);
+    std::snprintf(buf, sizeof buf, "check: %s; Euler characteristic %lld; %zu cells, %zu with split vertices, %zu vertices moved to untangle",
+                  r.check.summary().c_str(), r.check.euler, r.surface_cells, r.split_cells, r.untangled);
     out.push_back(buf);
   }
   std::snprintf(buf, sizeof buf, "time: setup %.3f s, sampling %.3f s, meshing %.3f s, check %.3f s, writing %.3f s",
