@@ -139,9 +139,10 @@ def cell(r):
 order = {s: i for i, s in enumerate(subjects.split())}
 keys = sorted({(s, n) for s, n, _ in runs}, key=lambda k: (order.get(k[0], 99), k[0], k[1]))
 lines = ["", f"Measured on {machine}: wall seconds of the whole process (start-up included) / peak RSS, "
-         "by tools/mesh-bench.sh.", "",
-         "| subject | resolution | baseline (numpy + marching cubes) | marchstudio mesh | speed-up |",
-         "|---|---:|---:|---:|---:|"]
+         "by tools/mesh-bench.sh. Errors are in voxels, from marchstudio's own report.", "",
+         "| subject | resolution | baseline (numpy + marching cubes) | marchstudio mesh | speed-up "
+         "| triangles | max vertex error | Hausdorff | check |",
+         "|---|---:|---:|---:|---:|---:|---:|---:|---|"]
 for s, n in keys:
     b, m = runs.get((s, n, "baseline")), runs.get((s, n, "marchstudio"))
     up = "—"
@@ -149,7 +150,12 @@ for s, n in keys:
         up = f"{b['wall_s'] / m['wall_s']:.1f}x"
     elif b and m and b["status"] == "timeout" and m["status"] == "ok":
         up = f"> {b['timebox_s'] / m['wall_s']:.0f}x"
-    lines.append(f"| {s} | {n} | {cell(b)} | {cell(m)} | {up} |")
+    acc = "| — | — | — | — |"
+    if m and m["status"] == "ok":
+        o = m["result"]
+        acc = (f"| {o['triangles']:,} | {o['max_vertex_error_voxels']:.4f} | {o['hausdorff_voxels']:.3f} "
+               f"| {'watertight' if o['manifold'] else o['check']['summary']} |")
+    lines.append(f"| {s} | {n} | {cell(b)} | {cell(m)} | {up} {acc}")
 errors = sorted({r["error"] for r in runs.values() if r["status"] == "error"})
 lines += [""] + [f"Error: `{e}`" for e in errors[:5]] + ([""] if errors else [])
 if not os.path.exists(doc):
