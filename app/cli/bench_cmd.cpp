@@ -39,7 +39,8 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("--json", a.json, "Print one JSON object (schema marchstudio.bench/1) instead of a table");
   cmd->add_flag("--shader-cache", a.shader_cache,
-                "Allow the driver's on-disk shader cache (default: off, so compile times are cold)");
+                "Allow the driver's on-disk shader cache and the pruned-grid cache (default: off, so compile and "
+                "pruning times are cold)");
   add_backend_flag(cmd, a.backend);
   add_shader_dir_flag(cmd, a.shader_dir);
   add_preset_flag(cmd, a.preset);
@@ -79,7 +80,8 @@ int run_bench_command(const BenchArgs& a) {
   set_input_fields(job, a);
   // Timed frames as render draws them to a PNG: one pass at spp 1, bloom
   // as the scene says (docs/post.md).
-  const PreparedFrame p = prepare(job, true);
+  PreparedFrame p = prepare(job, true);
+  p.keep_pruned = a.shader_cache;  // cold, like the driver's cache: the pruning pass is timed
   const LoadedInput& in = p.in;
   // The counting pass: the same scene with the AOV counters compiled in (a
   // Shadertoy shader has no step counters: its passes are timed only).

@@ -17,7 +17,8 @@ FramePrograms::FramePrograms(const Context& ctx, ProgramCache& cache, const Prep
   drawer_ = std::make_unique<SceneDrawer>(ctx, *graph_, Dispatch::fragment);
   if (p.graph && p.graph->plan.interpret) {
     if (p.graph->plan.pruned()) prune_ = std::make_unique<Program>(Program::Compute{}, p.prune_src);
-    field_ = std::make_unique<GraphField>(p.graph->buffers, p.graph->plan, prune_.get());
+    field_ = std::make_unique<GraphField>(p.graph->buffers, p.graph->plan, prune_.get(),
+                                          p.keep_pruned ? p.prune_src.text : std::string());
   }
 }
 

@@ -113,7 +113,7 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   std::unique_ptr<GraphField> field;
   if (parts) {
     if (parts->plan.pruned()) prune = std::make_unique<Program>(Program::Compute{}, prune_src);
-    field = std::make_unique<GraphField>(parts->buffers, parts->plan, prune.get());
+    field = std::make_unique<GraphField>(parts->buffers, parts->plan, prune.get(), prune_src.text);
     field->bind();
     if (job.frame.verbose && !field->summary().empty()) std::fprintf(stderr, "  %s\n", field->summary().c_str());
   }

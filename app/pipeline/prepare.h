@@ -25,6 +25,9 @@ struct PreparedFrame {
   // the pruning pass's source (render/graph_field.h builds the grid).
   std::shared_ptr<const GraphParts> graph;
   ShaderSource prune_src;
+  // A long pruning pass's grid may be read from, and kept in, the disk
+  // cache (render/graph_field_cache.h); bench turns it off to time the pass.
+  bool keep_pruned = true;
 };
 
 // `display`: whether the output is a display format. A sequence's

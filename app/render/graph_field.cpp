@@ -7,6 +7,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/graph_field_cache.h"
+#include "shader/graph_interp_detail.h"
+
 namespace ms {
 
 namespace {
@@ -22,7 +25,8 @@ void upload(GLuint buf, const std::vector<T>& data, std::size_t extra_bytes = 0)
 
 }  // namespace
 
-GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const Program* prune)
+GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const Program* prune,
+                       const std::string& prune_source)
     : plan_(plan), program_(b.program.size()) {
   glGenBuffers(5, buffers_);
   const std::size_t cells = plan.prune ? cell_count(plan) : 0, coarse = plan.prune ? coarse_cell_count(plan) : 0;
@@ -39,19 +43,12 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
   bind();
   if (!plan.pruned() || !prune) return;
   const auto start = std::chrono::steady_clock::now();
-  glUseProgram(prune->id());
-  // Per grid level, coarse cells first, then each fine cell from its coarse cell's list.
-  for (int grid = 0; grid < kGridLevels; ++grid) {
-    prune->set("uGrid", grid);
-    const GridLevel& l = plan.levels[grid];
-    for (int level = 0; level < 2; ++level) {
-      prune->set("uLevel", level);
-      const glm::ivec3 c = coarse_dims(l);
-      const std::size_t n = level == 0 ? static_cast<std::size_t>(c.x) * c.y * c.z : cell_count(l);
-      glDispatchCompute(static_cast<GLuint>((n + 63) / 64), 1, 1);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    }
-  }
+  const PrunedCache cache(b, plan, prune_source);
+  const GLuint kept[3] = {buffers_[2], buffers_[3], buffers_[4]};
+  const std::size_t bytes[3] = {program_capacity(plan, b) * sizeof(std::uint32_t), head.size() * sizeof(std::uint32_t),
+                                (coarse + 1) * 4 * sizeof(std::uint32_t)};
+  from_cache_ = cache.load(kept, bytes);
+  if (!from_cache_) run_pass(*prune);
   std::vector<std::uint32_t> out(cells * 4);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[3]);
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(first * sizeof(std::uint32_t)),
@@ -66,6 +63,24 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
     overflowed_ += out[i * 4 + 3] == 1u;
   }
   mean_list_ = inner > 0 ? sum / static_cast<double>(inner) : 0.0;
+  if (!from_cache_ && build_ms_ >= prune_cache_ms())
+    cache.save(kept, bytes, (b.program.size() + coarse * graph_detail::kCoarseList) * sizeof(std::uint32_t));
+}
+
+void GraphField::run_pass(const Program& prune) {
+  glUseProgram(prune.id());
+  // Per grid level, coarse cells first, then each fine cell from its coarse cell's list.
+  for (int grid = 0; grid < kGridLevels; ++grid) {
+    prune.set("uGrid", grid);
+    const GridLevel& l = plan_.levels[grid];
+    for (int level = 0; level < 2; ++level) {
+      prune.set("uLevel", level);
+      const glm::ivec3 c = coarse_dims(l);
+      const std::size_t n = level == 0 ? static_cast<std::size_t>(c.x) * c.y * c.z : cell_count(l);
+      glDispatchCompute(static_cast<GLuint>((n + 63) / 64), 1, 1);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+  }
 }
 
 std::string GraphField::summary() const {
@@ -77,9 +92,9 @@ std::string GraphField::summary() const {
     return grid + ", not pruned (--no-prune): every cell runs all " + std::to_string(program_) + " instructions";
   if (mean_list_ < 0.0) return {};
   char buf[256];
-  std::snprintf(buf, sizeof buf,
-                ", pruning %.1f ms, mean list %.1f instructions (of %zu), %d cells kept their coarse list", build_ms_,
-                mean_list_, program_, overflowed_);
+  std::snprintf(buf, sizeof buf, ", %s %.1f ms, mean list %.1f instructions (of %zu), %d cells kept their coarse list",
+                from_cache_ ? "pruned grid read from the cache in" : "pruning", build_ms_, mean_list_, program_,
+                overflowed_);
   return grid + buf;
 }
 

@@ -5,7 +5,7 @@
 //
 //   GraphField field(parts.buffers, parts.plan, &prune_program);
 //   field.bind();              // before each draw: binding points 3-7, as map() reads them
-//   field.build_ms();          // the pruning pass's time
+//   field.build_ms();          // the pruning pass's time (or the cache's read)
 //   field.mean_list();         // instructions a cell keeps, on average
 #pragma once
 #include <string>
@@ -20,20 +20,27 @@ namespace ms {
 class GraphField {
  public:
   // `prune` is the compiled assemble_graph_prune() when plan.prune, else null.
-  GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const Program* prune);
+  // `prune_source`, its text: a pass that took long is kept on disk under
+  // a key of everything it was made from, and read back next time
+  // (render/graph_field_cache.h); empty: always run the pass.
+  GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const Program* prune,
+             const std::string& prune_source = {});
   ~GraphField();
   GraphField(const GraphField&) = delete;
   GraphField& operator=(const GraphField&) = delete;
 
   void bind() const;
   double build_ms() const { return build_ms_; }
+  bool from_cache() const { return from_cache_; }
   // "grid 16x23x22, pruning 412.3 ms, mean list 23.4 instructions (of 1999), 3 cells kept their coarse list";
   // "" without a grid.
   std::string summary() const;
 
  private:
+  void run_pass(const Program& prune);
   GLuint buffers_[5] = {0, 0, 0, 0, 0};  // nodes, floats, program and lists, cells, coarse cells
   double build_ms_ = 0.0;
+  bool from_cache_ = false;
   // Over the fine cells: the mean list length (a cell that would overflow
   // keeps its coarse cell's list), -1 before a pruning pass; and how many overflowed.
   double mean_list_ = -1.0;
