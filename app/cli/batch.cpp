@@ -14,6 +14,7 @@
 #include "cli/render_cmd.h"
 #include "cli/sequence_cmd.h"
 #include "core/error.h"
+#include "pipeline/mesh_sequence.h"
 #include "pipeline/progress.h"
 #include "pipeline/still_job.h"
 
@@ -83,9 +84,9 @@ void refuse_shared_outputs(const std::vector<BatchEntry>& entries) {
 class Outputs {
  public:
   void claim(const BatchEntry& e) {
-    const auto [it, fresh] = by_output_.emplace(output_key(e.job->output).string(), e.label);
+    const auto [it, fresh] = by_output_.emplace(output_key(e.output()).string(), e.label);
     if (!fresh)
-      fail_input("'" + it->second + "' already writes " + e.job->output.string(), {}, 0, {},
+      fail_input("'" + it->second + "' already writes " + e.output().string(), {}, 0, {},
                  "give each line of --jobs its own \"output\"");
   }
 
@@ -126,17 +127,24 @@ int run_batch(const RenderArgs& a) {
   };
   FrameSession session;
   Outputs outputs;
-  int total = 0, failed = 0, worst = 0;
+  int total = 0, failed = 0, worst = 0, meshes = 0;
   const auto render = [&](const BatchEntry& e) {
     const auto t0 = std::chrono::steady_clock::now();
     int code = 0;
     try {
       if (e.error) throw *e.error;
       outputs.claim(e);
-      say_removed_temps({e.job->output});  // per job: a job file's outputs are known only as it is read
-      render_still_job(*e.job, session);
+      say_removed_temps({e.output()});  // per job: a job file's outputs are known only as it is read
+      if (e.mesh) {
+        const MeshReport r = mesh_scene_timed(*e.mesh, session, e.label);
+        if (!r.check.ok() && r.format != MeshFormat::vdb)
+          say("marchstudio: warning: " + r.output + ": the mesh check found " + r.check.summary());
+        ++meshes;
+      } else {
+        render_still_job(*e.job, session);
+      }
       if (paths_on_bar) std::fprintf(stderr, "\r\x1b[K");  // the bar redraws below the path
-      std::printf("%s\n", e.job->output.string().c_str());
+      std::printf("%s\n", e.output().string().c_str());
       std::fflush(stdout);
     } catch (const Error& err) {
       say(job_error_line(e.label, err));
@@ -159,7 +167,8 @@ int run_batch(const RenderArgs& a) {
   progress.finish();
   if (total == 0) fail_input("the batch has no jobs", a.jobs, 0, "--jobs", "one JSON object per line");
   if (a.verbose)
-    std::fprintf(stderr, "marchstudio: batch: %d images, %ld programs compiled, %ld from the cache\n", total - failed,
+    std::fprintf(stderr, "marchstudio: batch: %d images%s, %ld programs compiled, %ld from the cache\n",
+                 total - failed - meshes, meshes > 0 ? (", " + std::to_string(meshes) + " meshes").c_str() : "",
                  session.cache().misses(), session.cache().hits());
   if (failed > 0)
     std::fprintf(stderr, "marchstudio: %d of %d job%s failed\n", failed, total, total == 1 ? "" : "s");

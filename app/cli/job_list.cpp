@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -15,6 +16,7 @@
 
 #include "cli/dispatch_flag.h"
 #include "cli/input_flags.h"
+#include "cli/mesh_cmd.h"
 #include "cli/override_flags.h"
 #include "cli/render_cmd.h"
 #include "pipeline/input.h"
@@ -138,36 +140,146 @@ const std::map<std::string, Handler>& handlers() {
       {"missing-media",
        [](const KeyValue& kv, RenderArgs& a) { a.shadertoy.missing_media = parse_missing_media(text(kv)); }},
       {"mouse", [](const KeyValue& kv, RenderArgs& a) { a.shadertoy.mouse = parse_mouse_flag(text(kv)); }},
+      {"graph-eval", [](const KeyValue& kv, RenderArgs& a) { a.graph_eval = parse_graph_eval(text(kv)); }},
+      {"no-prune", [](const KeyValue& kv, RenderArgs& a) { a.no_prune = boolean(kv); }},
   };
   return h;
 }
 
-// One line's object over the defaults, then the same checks as the flags.
-FrameJob job_from_line(const std::string& line, const RenderArgs& defaults, const fs::path& base,
-                        const DefaultOutput& default_output) {
+// The keys of a render line that mean nothing to a mesh: an image's size,
+// samples, channels, dispatch and Shadertoy's inputs.
+bool render_only(const std::string& key) {
+  static const char* const keys[] = {"size", "spp", "frame", "fps", "aov", "dispatch", "strict",
+                                     "media-dir", "missing-media", "mouse"};
+  for (const char* k : keys)
+    if (key == k) return true;
+  return false;
+}
+
+// A mesh line's own keys: `mesh`'s flags without the dashes.
+using MeshHandler = std::function<void(const KeyValue&, MeshArgs&)>;
+
+int in_range(const KeyValue& kv, int lo, int hi) {
+  if (!kv.value.is_number_integer() || kv.value.get<double>() < lo || kv.value.get<double>() > hi)
+    wrong_type(kv, "an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
+  return kv.value.get<int>();
+}
+
+const std::map<std::string, MeshHandler>& mesh_handlers() {
+  static const std::map<std::string, MeshHandler> h = {
+      {"resolution", [](const KeyValue& kv, MeshArgs& m) { m.resolution = in_range(kv, 8, 4096); }},
+      {"voxel",
+       [](const KeyValue& kv, MeshArgs& m) {
+         m.voxel = number(kv);
+         if (m.voxel <= 0) wrong_type(kv, "a positive number");
+       }},
+      {"bounds",
+       [](const KeyValue& kv, MeshArgs& m) {
+         if (!kv.value.is_array() || kv.value.size() != 6) wrong_type(kv, "[x0, y0, z0, x1, y1, z1]");
+         m.bounds.clear();
+         for (const json& v : kv.value) m.bounds.push_back(static_cast<float>(number(KeyValue{v, kv.base, kv.key})));
+       }},
+      {"planes", [](const KeyValue& kv, MeshArgs& m) { m.planes = boolean(kv); }},
+      {"band", [](const KeyValue& kv, MeshArgs& m) { m.band = in_range(kv, 1, 64); }},
+  };
+  return h;
+}
+
+// A line is a mesh when it has a "mesh" object or its output is a mesh file.
+bool is_mesh_line(const json& obj) {
+  if (obj.contains("mesh")) return true;
+  const auto out = obj.find("output");
+  return out != obj.end() && out->is_string() && mesh_format_for(fs::path(out->get<std::string>())).has_value();
+}
+
+[[noreturn]] void unknown_key(const std::string& key, const std::string& pointer, const std::vector<std::string>& known) {
+  std::vector<std::string_view> names;
+  for (const std::string& k : known) names.push_back(k);
+  fail_input("unknown key '" + pointer + "'", {}, 0, pointer, did_you_mean(key, names));
+}
+
+// A mesh line's "mesh" object: the mesh keys, each named by its JSON pointer.
+void apply_mesh_object(const KeyValue& kv, MeshArgs& m) {
+  if (!kv.value.is_object()) wrong_type(kv, "an object of mesh keys, e.g. {\"resolution\": 64}");
+  std::vector<std::string> known;
+  for (const auto& [name, h] : mesh_handlers()) known.push_back(name);
+  for (const auto& [key, value] : kv.value.items()) {
+    const std::string pointer = "/mesh/" + key;
+    const auto h = mesh_handlers().find(key);
+    if (h == mesh_handlers().end()) unknown_key(key, pointer, known);
+    h->second(KeyValue{value, kv.base, pointer}, m);
+  }
+}
+
+// The render flags a mesh shares, from the line over the command line's.
+MeshArgs mesh_args_from(const RenderArgs& a) {
+  MeshArgs m;
+  m.input = a.input;
+  m.output = a.output;
+  m.time = a.time;
+  m.time_set = a.time_set;
+  m.verbose = a.verbose;
+  m.timeout = a.timeout;
+  m.backend = a.backend;
+  m.shader_dir = a.shader_dir;
+  m.allow_include = a.allow_include;
+  m.defines = a.defines;
+  m.preset = a.preset;
+  m.disable = a.disable;
+  m.no_specialize = a.no_specialize;
+  m.graph_eval = a.graph_eval;
+  m.no_prune = a.no_prune;
+  m.overrides = a.overrides;
+  return m;
+}
+
+// One line's object over the defaults, then the same checks as the flags:
+// into e.job, or for a mesh line into e.mesh.
+void job_from_line(const std::string& line, const RenderArgs& defaults, const fs::path& base,
+                   const DefaultOutput& default_output, BatchEntry& e) {
   json obj;
   try {
     obj = json::parse(line);
-  } catch (const json::exception& e) {
-    std::string what = e.what();  // "[json.exception.parse_error.101] parse error at ..."
+  } catch (const json::exception& ex) {
+    std::string what = ex.what();  // "[json.exception.parse_error.101] parse error at ..."
     if (const std::size_t close = what.find("] "); close != std::string::npos) what = what.substr(close + 2);
     fail_input("not a JSON object: " + what, {}, 0, {}, "one object per line, e.g. {\"scene\": \"a.toml\"}");
   }
   if (!obj.is_object()) fail_input("not a JSON object: " + json_brief(obj), {}, 0, {}, "one object per line");
+  const bool mesh = is_mesh_line(obj);
   RenderArgs a = defaults;
   a.output.clear();  // -o names one file; a job names its own
   a.input.clear();
+  MeshArgs m;
+  std::vector<std::pair<std::string, const json*>> mesh_keys;  // applied once the shared keys are
   for (const auto& [key, value] : obj.items()) {
-    const auto h = handlers().find(key);
-    if (h == handlers().end()) {
-      std::vector<std::string_view> names;
-      for (const std::string& k : job_keys()) names.push_back(k);
-      fail_input("unknown key '" + key + "'", {}, 0, key, did_you_mean(key, names));
+    if (key == "mesh" || mesh_handlers().count(key)) {
+      if (!mesh)
+        fail_input("'" + key + "' is a mesh key, and this line's output is an image", {}, 0, key,
+                   "name the output .obj, .ply, .stl, .glb or .vdb to mesh the scene");
+      mesh_keys.emplace_back(key, &value);
+      continue;
     }
+    const auto h = handlers().find(key);
+    if (h == handlers().end()) unknown_key(key, key, job_keys());
+    if (mesh && render_only(key))
+      fail_input("'" + key + "' makes no sense for a mesh (its output is a mesh file)", {}, 0, key);
     h->second(KeyValue{value, base, key}, a);
   }
   if (a.input.empty()) fail_input("the job has no 'scene'", {}, 0, "scene", "e.g. {\"scene\": \"scenes/seed.toml\"}");
-  return make_render_job(a, a.input, a.output.empty() ? default_output(a.input) : fs::path(a.output));
+  if (!mesh) {
+    e.job = make_render_job(a, a.input, a.output.empty() ? default_output(a.input) : fs::path(a.output));
+    return;
+  }
+  m = mesh_args_from(a);
+  for (const auto& [key, value] : mesh_keys) {
+    const KeyValue kv{*value, base, key};
+    if (key == "mesh") apply_mesh_object(kv, m);
+    else mesh_handlers().at(key)(kv, m);
+  }
+  // No "output": the batch's name for the input, a mesh's extension.
+  if (m.output.empty()) m.output = default_output(a.input).replace_extension(".obj").string();
+  e.mesh = make_mesh_job(m);
 }
 
 }  // namespace
@@ -182,6 +294,9 @@ const std::vector<std::string>& job_keys() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> k;
     for (const auto& [name, h] : handlers()) k.push_back(name);
+    for (const auto& [name, h] : mesh_handlers()) k.push_back(name);
+    k.push_back("mesh");
+    std::sort(k.begin(), k.end());
     return k;
   }();
   return keys;
@@ -246,8 +361,9 @@ std::optional<BatchEntry> JobFile::next() {
     e.label = file_.string() + ":" + std::to_string(number_);
     try {
       if (too_long || line_.size() > kMaxLineBytes) fail_input("the line is over 1 MiB: no job is that long");
-      e.job = job_from_line(line_, defaults_, file_.parent_path(), default_output_);
-      e.job->label = e.label;
+      job_from_line(line_, defaults_, file_.parent_path(), default_output_, e);
+      if (e.job) e.job->label = e.label;
+      if (e.mesh) e.mesh->frame.label = e.label;
     } catch (const Error& err) {
       ErrorInfo info = err.info();  // blamed on FILE:LINE unless it names a file of its own
       if (info.file.empty()) {

@@ -30,6 +30,7 @@
 
 #include "cli/render_job.h"
 #include "core/error.h"
+#include "pipeline/mesh_job.h"
 
 namespace ms {
 
@@ -38,8 +39,10 @@ struct RenderArgs;
 // One job of a batch, or why it cannot be one.
 struct BatchEntry {
   std::string label;             // "jobs.jsonl:3", or the input as given
-  std::optional<FrameJob> job;  // empty when `error` says why
+  std::optional<FrameJob> job;   // a still; empty for a mesh or when `error` says why
+  std::optional<MeshJob> mesh;   // a mesh line's
   std::optional<Error> error;
+  const std::filesystem::path& output() const { return mesh ? mesh->output : job->output; }
 };
 
 // The output a job without "output" gets, from its input.

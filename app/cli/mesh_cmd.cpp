@@ -4,7 +4,9 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "cli/common_flags.h"
 #include "cli/flag_checks.h"
@@ -12,6 +14,7 @@
 #include "core/deadline.h"
 #include "core/error.h"
 #include "pipeline/mesh_job.h"
+#include "pipeline/mesh_sequence.h"
 #include "pipeline/progress.h"
 #include "pipeline/shader_dir.h"
 
@@ -35,6 +38,14 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   cmd->add_option("--band", a.band, "A .vdb level set's half-width in voxels (default 3)")->check(CLI::Range(1, 64));
   cmd->add_option("--time", a.time, "Scene time in seconds (default: the scene's)")
       ->each([&a](const std::string&) { a.time_set = true; });
+  cmd->add_option_function<std::string>(
+         "--frames", [&a](const std::string& v) { a.frames = parse_frame_range(v); },
+         "Mesh frames A..B (both included), one file each, to -o PATTERN, e.g. out/f_%04d.obj")
+      ->check(not_empty());
+  cmd->add_option("--fps", a.fps, "Frames per second: frame f of --frames is at time f / fps (default 24)")
+      ->each([&a](const std::string&) { a.fps_set = true; });
+  cmd->add_flag("--force", a.force,
+                "With --frames: mesh every frame again, even those on disk with this run's fingerprint");
   cmd->add_flag("--json", a.json, "Print the report as one JSON object (schema marchstudio.mesh/1)");
   cmd->add_flag("-v,--verbose", a.verbose, "Print the grid, accuracy, check and stage times");
   cmd->add_option("--timeout", a.timeout, "Give up after this many seconds: exit 3, nothing written")
@@ -50,9 +61,7 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   return cmd;
 }
 
-namespace {
-
-MeshJob job_from(const MeshArgs& a) {
+MeshJob make_mesh_job(const MeshArgs& a) {
   MeshJob job;
   set_input_fields(job.frame, a);
   job.frame.input = a.input;
@@ -75,6 +84,8 @@ MeshJob job_from(const MeshArgs& a) {
   return job;
 }
 
+namespace {
+
 // On a terminal, one line redrawn in place: the stage, a percentage and an
 // ETA from the fraction done; elsewhere nothing (the summary line says it).
 MeshProgress progress_for(const Deadline& deadline, bool tty) {
@@ -90,10 +101,42 @@ MeshProgress progress_for(const Deadline& deadline, bool tty) {
   };
 }
 
+// `--frames`: the flags checked before any file is read, then the frames.
+int run_mesh_sequence(const MeshArgs& a) {
+  if (a.time_set)
+    fail_input("--time conflicts with --frames: each frame's time is frame / fps", {}, 0, "--time",
+               "shift the animation with --frames instead");
+  if (a.json) fail_input("--json reports one mesh, and --frames makes several", {}, 0, "--json");
+  if (!std::isfinite(a.fps) || a.fps <= 0)
+    fail_input("--fps must be a positive number, got " + std::to_string(a.fps), {}, 0, "--fps");
+  MeshSequenceJob job;
+  job.range = *a.frames;
+  job.fps = a.fps;
+  job.force = a.force;
+  std::string pattern = a.output;
+  if (pattern.empty()) {
+    // <stem>_%04d.obj, with any '%' of the stem escaped for the pattern.
+    for (char c : fs::path(a.input).stem().string()) pattern += c == '%' ? std::string("%%") : std::string(1, c);
+    pattern += "_%04d.obj";
+  }
+  job.pattern = FramePattern(pattern);
+  job.mesh = make_mesh_job(a);  // its output and time are each frame's (mesh_sequence())
+  FrameSession session;
+  mesh_sequence(job, session, isatty(STDERR_FILENO) == 1);
+  return 0;
+}
+
 }  // namespace
 
 int run_mesh(const MeshArgs& a) {
-  const MeshJob job = job_from(a);
+  if (a.frames) return run_mesh_sequence(a);
+  if (a.fps_set || a.force)
+    fail_input(std::string(a.force ? "--force" : "--fps") + " needs --frames", {}, 0, a.force ? "--force" : "--fps",
+               "e.g. --frames 0..23 -o out/f_%04d.obj");
+  if (has_frame_field(a.output))
+    fail_input("-o '" + a.output + "' has a frame field but there is no --frames", {}, 0, "-o",
+               "add --frames A..B, or name one file");
+  const MeshJob job = make_mesh_job(a);
   const Deadline deadline = Deadline::after(a.timeout);
   std::optional<Watchdog> watchdog;
   if (deadline.limited()) watchdog.emplace().arm(deadline, "the mesh export");

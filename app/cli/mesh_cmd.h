@@ -10,6 +10,7 @@
 #include "gl/context.h"
 #include "io/sequence.h"
 #include "pipeline/input.h"
+#include "pipeline/mesh_job.h"
 #include "shader/graph_interp.h"
 
 namespace CLI {
@@ -29,8 +30,9 @@ struct MeshArgs {
   double time = 0.0;
   bool time_set = false;
   std::optional<FrameRange> frames;  // --frames A..B: one file per frame
-  double fps = 24.0;
-  bool force = false;
+  double fps = kSceneFps;
+  bool fps_set = false;
+  bool force = false;        // --frames: mesh every frame again
   bool json = false;
   bool verbose = false;
   double timeout = 0.0;
@@ -48,6 +50,9 @@ struct MeshArgs {
 };
 
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);
+// The flags as a checked, typed job (a `render --jobs` mesh line's too:
+// cli/job_list.h). Throws bad_input.
+MeshJob make_mesh_job(const MeshArgs& args);
 int run_mesh(const MeshArgs& args);
 
 }  // namespace ms

@@ -25,8 +25,8 @@ std::string format_frame_time(double seconds) {
   return buf;
 }
 
-Progress::Progress(int total, bool tty, std::FILE* out, std::string unit)
-    : total_(total), tty_(tty), unit_(std::move(unit)), out_(out) {}
+Progress::Progress(int total, bool tty, std::FILE* out, std::string unit, std::string verb)
+    : total_(total), tty_(tty), unit_(std::move(unit)), verb_(std::move(verb)), out_(out) {}
 
 void Progress::start() {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -56,7 +56,7 @@ void Progress::rendered(int frame, double seconds) {
   if (unit_ != "frames") return;
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double fps = elapsed > 0 ? done_ / elapsed : 0.0;
-  std::fprintf(out_, "marchstudio: frame %d rendered in %s (%d/%d, %.2f frames/s, ETA %s)\n", frame,
+  std::fprintf(out_, "marchstudio: frame %d %s in %s (%d/%d, %.2f frames/s, ETA %s)\n", frame, verb_.c_str(),
                format_frame_time(seconds).c_str(), done_, total_, fps,
                format_duration(fps > 0 ? (total_ - done_) / fps : -1).c_str());
   std::fflush(out_);

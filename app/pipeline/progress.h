@@ -20,8 +20,9 @@ class Progress {
  public:
   // `total`: the frames this process will render (skipped ones excluded).
   // `unit` "tiles" counts a tiled still's tiles (render/tiled_still.h):
-  // the bar alone, on a terminal; a log gets no line per tile.
-  Progress(int total, bool tty, std::FILE* out = stderr, std::string unit = "frames");
+  // the bar alone, on a terminal; a log gets no line per tile. `verb`
+  // says what became of a frame in a log's line ("meshed" for meshes).
+  Progress(int total, bool tty, std::FILE* out = stderr, std::string unit = "frames", std::string verb = "rendered");
 
   // Restart the clock for frames/s and ETA (when the first frame starts).
   void start();
@@ -44,6 +45,7 @@ class Progress {
   const int total_;
   const bool tty_;
   const std::string unit_;
+  const std::string verb_;
   std::FILE* const out_;
   std::mutex mutex_;
   int done_ = 0;

@@ -1,0 +1,170 @@
+#include "pipeline/mesh_sequence.h"
+
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "core/deadline.h"
+#include "core/error.h"
+#include "core/hash.h"
+#include "core/version.h"
+#include "io/atomic_file.h"
+#include "io/file_stamp.h"
+#include "io/input_file.h"
+#include "pipeline/fingerprint.h"
+#include "pipeline/input.h"
+#include "pipeline/progress.h"
+#include "pipeline/still_job.h"
+#include "shader/assemble.h"
+
+namespace ms {
+namespace fs = std::filesystem;
+
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The files frame f is made of: the mesh, and an OBJ's .mtl (mesh/mesh.h
+// names it after the file), which a complete frame needs as much.
+std::vector<fs::path> frame_parts(const fs::path& file) {
+  std::vector<fs::path> parts{file};
+  if (mesh_format_for(file) == MeshFormat::obj) parts.push_back(fs::path(file).replace_extension(".mtl"));
+  return parts;
+}
+
+struct Scan {
+  std::vector<int> todo;
+  std::vector<std::pair<int, std::string>> skipped;   // frame, path
+  std::vector<std::pair<int, std::string>> redone;    // frame, why
+};
+
+Scan scan_frames(const MeshSequenceJob& job, const std::string& job_fp) {
+  Scan s;
+  for (int f = job.range.first; f <= job.range.last; ++f) {
+    const fs::path path = job.pattern.path(f);
+    if (job.force) {
+      s.todo.push_back(f);
+      continue;
+    }
+    const float time = static_cast<float>(static_cast<double>(f) / job.fps);
+    std::string why;
+    const StampCheck c = check_stamp(path, frame_parts(path), frame_fingerprint(job_fp, f, time), &why);
+    if (c == StampCheck::complete) {
+      s.skipped.emplace_back(f, path.string());
+      continue;
+    }
+    s.todo.push_back(f);
+    if (c != StampCheck::missing) s.redone.emplace_back(f, why);
+  }
+  return s;
+}
+
+// Frame f meshed and written, under its own --timeout (as each frame of a
+// render sequence has), then stamped.
+MeshReport mesh_frame(const MeshSequenceJob& job, FrameSession& session, int f, const std::string& job_fp) {
+  MeshJob m = job.mesh;
+  m.output = job.pattern.path(f);
+  const float time = static_cast<float>(static_cast<double>(f) / job.fps);
+  m.frame.time = time;
+  // The old stamp goes first: a run killed between the new file and its
+  // stamp leaves a file no stamp vouches for, which the next run redoes.
+  remove_stamp(m.output);
+  const MeshReport r = mesh_scene_timed(m, session, "frame " + std::to_string(f));
+  write_stamp(m.output, frame_parts(m.output), frame_fingerprint(job_fp, f, time));
+  return r;
+}
+
+}  // namespace
+
+MeshReport mesh_scene_timed(const MeshJob& job, FrameSession& session, const std::string& what) {
+  const Deadline deadline = Deadline::after(job.frame.timeout);
+  std::optional<Watchdog> watchdog;
+  if (deadline.limited()) watchdog.emplace().arm(deadline, what);
+  MeshReport r = mesh_scene(job, session, [&deadline, &what](const char*, double) { deadline.check(what); });
+  if (watchdog) watchdog->disarm();
+  return r;
+}
+
+std::string mesh_job_fingerprint(const MeshJob& job) {
+  const FrameJob& fj = job.frame;
+  const LoadedInput in = load_input_scene(fj.input, fj.disable, fj.preset, fj.set);
+  Hash128 h;
+  h.add(std::string(kSoftware) + " mesh fingerprint 1");
+  h.add(read_input_file(in.path, "input file", {}, kMaxTextInput));
+  for (const SceneOverride& o : in.overrides) {
+    std::ostringstream value;
+    value << o.value;
+    h.add(o.flag).add(value.str());
+  }
+  // A Shadertoy input has no field: mesh_scene() refuses it with the reason.
+  if (!in.shadertoy) {
+    AssembleOptions opts = fj.assemble_options();
+    opts.field_sampler = true;
+    h.add(assemble_scene(in.scene, opts).text);
+    if (in.scene.graph) {
+      const GraphParts parts = graph_parts(in.scene, opts);
+      const GraphBuffers& b = parts.buffers;
+      h.add_bytes(b.nodes.data(), b.nodes.size() * sizeof b.nodes[0]);
+      h.add_bytes(b.floats.data(), b.floats.size() * sizeof b.floats[0]);
+      h.add_bytes(b.program.data(), b.program.size() * sizeof b.program[0]);
+      h.add(parts.plan.pruned());
+    }
+  }
+  h.add(job.resolution).add(job.voxel).add(job.bounds.has_value()).add(job.planes).add(job.band);
+  if (job.bounds)
+    for (const glm::vec3& v : {job.bounds->min, job.bounds->max}) h.add(v.x).add(v.y).add(v.z);
+  h.add(static_cast<int>(fj.graph_eval)).add(fj.prune);
+  return h.hex();
+}
+
+MeshSequenceReport mesh_sequence(const MeshSequenceJob& job, FrameSession& session, bool tty) {
+  const auto start = std::chrono::steady_clock::now();
+  const fs::path first = job.pattern.path(job.range.first);
+  if (!mesh_format_for(first))
+    fail_input("cannot tell the mesh format of '" + job.pattern.text() + "'", {}, 0, "-o",
+               "name the output .obj, .ply, .stl, .glb or .vdb");
+  output_kind(first, "-o");
+  check_output_directory(first.parent_path(), "-o");
+  const std::string job_fp = mesh_job_fingerprint(job.mesh);
+  std::vector<int> all;
+  for (int f = job.range.first; f <= job.range.last; ++f) all.push_back(f);
+  std::vector<fs::path> outputs;
+  for (int f : all)
+    for (const fs::path& p : frame_parts(job.pattern.path(f))) outputs.push_back(p);
+  say_removed_temps(outputs);
+  const Scan scan = scan_frames(job, job_fp);
+
+  Progress progress(static_cast<int>(scan.todo.size()), tty, stderr, "frames", "meshed");
+  for (const auto& [f, p] : scan.skipped) progress.skipped(f, p);
+  for (const auto& [f, why] : scan.redone)
+    progress.line("frame " + std::to_string(f) + ": " + job.pattern.path(f).string() + " is not a complete frame (" +
+                  why + "), meshing it again");
+  MeshSequenceReport r;
+  r.skipped = static_cast<int>(scan.skipped.size());
+  progress.start();
+  for (int f : scan.todo) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const MeshReport m = mesh_frame(job, session, f, job_fp);
+    progress.rendered(f, since(t0));
+    ++r.meshed;
+    std::printf("%s\n", m.output.c_str());
+    std::fflush(stdout);
+    if (job.mesh.frame.verbose) progress.line(mesh_summary(m));
+    if (!m.check.ok() && m.format != MeshFormat::vdb)
+      progress.line("warning: " + m.output + ": the mesh check found " + m.check.summary());
+  }
+  progress.finish();
+  r.seconds = since(start);
+  char summary[160];
+  std::snprintf(summary, sizeof summary, "mesh sequence: %d of %d frames meshed, %d skipped, %.2f s", r.meshed,
+                job.range.count(), r.skipped, r.seconds);
+  progress.line(summary);
+  return r;
+}
+
+}  // namespace ms
