@@ -16,6 +16,8 @@
 #include "render/field_sampler.h"
 #include "render/graph_field.h"
 #include "render/program.h"
+#include "render/uniforms.h"
+#include "scene/animation.h"
 
 namespace ms {
 
@@ -75,11 +77,50 @@ LevelSetBand band_of(const SparseField& f, const Scene& scene, int band) {
   return b;
 }
 
-}  // namespace
+// The sparse field meshed, checked and measured, into r; then written.
+void export_mesh(FieldSampler& sampler, const SparseField& sparse, const Scene& scene, const MeshJob& job,
+                 const MeshProgress& progress, MeshReport& r) {
+  const auto m = std::chrono::steady_clock::now();
+  DualContour dc = dual_contour(sampler, sparse, progress);
+  if (dc.mesh.positions.empty())
+    fail_input("no surface inside the box: map() is positive (or negative) everywhere there", scene.file.string(),
+               0, job.bounds ? "--bounds" : "bounds");
+  untangle(dc, sparse.grid);
+  r.accuracy = measure_accuracy(sampler, dc, sparse.grid.voxel);
+  r.mesh_s = since(m);
+  if (progress) progress("checking", 0.8);
+  const auto c = std::chrono::steady_clock::now();
+  r.check = check_mesh(dc.mesh, sparse.grid.voxel);
+  r.check_s = since(c);
+  r.vertices = dc.mesh.positions.size();
+  r.triangles = dc.mesh.triangles();
+  r.surface_cells = dc.cells;
+  r.split_cells = dc.split_cells;
+  r.missing = dc.missing;
+  r.untangled = dc.untangled;
+  r.samples = sampler.evaluations();
+  r.readback_bytes = sampler.readback_bytes();
+  if (progress) progress("writing", 0.9);
+  const auto w = std::chrono::steady_clock::now();
+  write_mesh(dc.mesh, materials_of(scene), job.output);
+  r.write_s = since(w);
+}
 
-MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgress& progress) {
-  const auto start = std::chrono::steady_clock::now();
-  MeshReport r;
+void export_level_set(const FieldSampler& sampler, const SparseField& sparse, const Scene& scene, const MeshJob& job,
+                      const MeshProgress& progress, MeshReport& r) {
+  const LevelSetBand band = band_of(sparse, scene, job.band);
+  r.band_voxels = band.ijk.size();
+  r.samples = sampler.evaluations();
+  r.readback_bytes = sampler.readback_bytes();
+  if (progress) progress("writing", 0.9);
+  const auto w = std::chrono::steady_clock::now();
+  write_level_set(band, job.output);
+  r.write_s = since(w);
+}
+
+// Everything that can fail on bad input, before any GL: the format, the
+// output path, the scene (one with a field), its box.
+const LoadedInput& checked_input(const MeshJob& job, LoadedInput& in, MeshReport& r) {
   r.output = job.output.string();
   const std::optional<MeshFormat> format = mesh_format_for(job.output);
   if (!format)
@@ -87,11 +128,20 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
                "name the output .obj, .ply, .stl, .glb or .vdb");
   r.format = *format;
   output_kind(job.output, "-o");
-  const LoadedInput in = load_input_scene(job.frame.input, job.frame.disable, job.frame.preset, job.frame.set);
-  const Scene& scene = in.scene;
+  in = load_input_scene(job.frame.input, job.frame.disable, job.frame.preset, job.frame.set);
   if (in.shadertoy)
     fail_input("a Shadertoy shader has no map(): there is no field to mesh", job.frame.input.string(), 0, "scene",
                "mesh a scene .toml with [scene] map or graph");
+  return in;
+}
+
+}  // namespace
+
+MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  MeshReport r;
+  LoadedInput in;
+  const Scene& scene = checked_input(job, in, r).scene;
   MeshBox box;
   const FieldClip clip = clip_for(job, scene, box);
   const MeshGrid grid = mesh_grid(glm::dvec3(box.min), glm::dvec3(box.max), job.resolution, job.voxel);
@@ -119,6 +169,9 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   }
   r.setup_s = since(start);
   const float time = job.frame.time ? *job.frame.time : scene.render.time;
+  // Every uniform a frame at this time would set (a map() may read the
+  // materials or lights, not only uTime); uFrame as a still's at 24 fps.
+  set_scene_uniforms(prog, animated(scene, time), 1, 1, time, static_cast<int>(std::lround(time * kSceneFps)));
   FieldSampler sampler(prog, {glm::vec3(grid.origin), static_cast<float>(grid.voxel)}, clip, time);
   SparseOptions so;
   so.lipschitz = std::max(scene.quality.lipschitz, 1e-3f);
@@ -127,43 +180,8 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   const SparseField sparse = sample_sparse(sampler, grid, so);
   r.bricks = sparse.bricks.size();
   r.sample_s = since(start);
-
-  if (r.format == MeshFormat::vdb) {
-    const LevelSetBand band = band_of(sparse, scene, job.band);
-    r.band_voxels = band.ijk.size();
-    r.samples = sampler.evaluations();
-    r.readback_bytes = sampler.readback_bytes();
-    if (progress) progress("writing", 0.9);
-    const auto w = std::chrono::steady_clock::now();
-    write_level_set(band, job.output);
-    r.write_s = since(w);
-    r.seconds = since(start);
-    return r;
-  }
-  const auto m = std::chrono::steady_clock::now();
-  DualContour dc = dual_contour(sampler, sparse, progress);
-  if (dc.mesh.positions.empty())
-    fail_input("no surface inside the box: map() is positive (or negative) everywhere there", scene.file.string(),
-               0, job.bounds ? "--bounds" : "bounds");
-  untangle(dc, grid);
-  r.accuracy = measure_accuracy(sampler, dc, grid.voxel);
-  r.mesh_s = since(m);
-  if (progress) progress("checking", 0.8);
-  const auto c = std::chrono::steady_clock::now();
-  r.check = check_mesh(dc.mesh, grid.voxel);
-  r.check_s = since(c);
-  r.vertices = dc.mesh.positions.size();
-  r.triangles = dc.mesh.triangles();
-  r.surface_cells = dc.cells;
-  r.split_cells = dc.split_cells;
-  r.missing = dc.missing;
-  r.untangled = dc.untangled;
-  r.samples = sampler.evaluations();
-  r.readback_bytes = sampler.readback_bytes();
-  if (progress) progress("writing", 0.9);
-  const auto w = std::chrono::steady_clock::now();
-  write_mesh(dc.mesh, materials_of(scene), job.output);
-  r.write_s = since(w);
+  if (r.format == MeshFormat::vdb) export_level_set(sampler, sparse, scene, job, progress, r);
+  else export_mesh(sampler, sparse, scene, job, progress, r);
   r.seconds = since(start);
   return r;
 }
