@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cmath>
 #include <regex>
@@ -13,17 +14,20 @@
 #include "cli/glslviewer_flags.h"
 #include "cli/input_flags.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "gl/context.h"
 #include "io/input_file.h"
 #include "io/sequence.h"
 #include "io/video.h"
 #include "live/viewer.h"
+#include "mesh/mesh.h"
 #include "pipeline/dispatch_probe.h"
 #include "pipeline/input.h"
 #include "pipeline/shader_dir.h"
 #include "scene/animation.h"
 #include "scene/load.h"
 #include "scene/quality.h"
+#include "shader/scene_params.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -88,9 +92,18 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
       ->check(CLI::PositiveNumber);
   cmd->add_option_function<std::string>(
          "--drag", [&a](const std::string& v) { a.drag = parse_drag_flag(v); },
-         "Drag TARGET (an animation target, e.g. materials[0].color) to V (x or x,y,z) over frames A..B, "
-         "as the panel would (scripts)")
+         "Drag TARGET (an animation target, e.g. materials[0].color, or a ranged uniform's name) to V "
+         "(x or x,y,z) over frames A..B, as the panel would (scripts)")
       ->check(not_empty());
+  cmd->add_option("--mesh-on-exit", a.mesh_on_exit,
+                  "When the viewer closes, export the mesh as it stands (panel values, time) to FILE "
+                  "(.obj, .ply, .stl, .glb, .vdb); exit 3 when that fails")
+      ->check(not_empty());
+  cmd->add_option("--mesh-resolution", a.mesh_resolution,
+                  "Cells along the longest side of M's and --mesh-on-exit's meshes, as mesh --resolution (default 256)")
+      ->check(CLI::Range(8, 4096));
+  cmd->add_option("--mesh-frame", a.mesh_frame, "Export the mesh as M does after frame N (scripts)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--exit-after", a.exit_after, "Quit after this many seconds")->check(non_negative());
   cmd->add_option("--max-frames", a.max_frames, "Quit after this many frames")->check(non_negative());
   cmd->add_option("--debounce-ms", a.debounce_ms, "Quiet time that ends a save, ms (default 10)")
@@ -136,12 +149,40 @@ DragFlag parse_drag_flag(const std::string& text) {
 
 namespace {
 
+// A uniform's --drag against the ranged uniforms the scene's shader
+// declares as assembled now (those the panel shows as sliders).
+void check_uniform_drag(const DragFlag& f, const LoadedInput& in) {
+  auto bad = [&](const std::string& why, const std::string& hint) {
+    fail_input("invalid --drag '" + f.text + "': " + why, {}, 0, "--drag", hint);
+  };
+  const std::vector<SceneParam> params = parse_scene_params(in.main().text);
+  auto p = std::find_if(params.begin(), params.end(), [&](const SceneParam& q) { return q.name == f.drag.target; });
+  if (p == params.end()) bad("the scene declares no ranged uniform " + f.drag.target, "a uniform with // range(a, b)");
+  if (p->components > 3) bad(p->name + " is a vec4", "drag a float, int, vec2 or vec3");
+  if (static_cast<int>(f.values.size()) != p->components)
+    bad(p->name + " takes " + std::to_string(p->components) + (p->components == 1 ? " value" : " values"),
+        "V is x or x,y,z");
+  for (double v : f.values)
+    if (v < p->lo || v > p->hi)
+      bad(format_number(v) + " is outside " + p->name + "'s range", "V within range(" + format_number(p->lo) + ", " +
+                                                                        format_number(p->hi) + ")");
+}
+
 // --drag's target and values against the scene as read now.
-live::ScriptedDrag check_drag(const DragFlag& f, const fs::path& input, const SceneOverrides& set) {
+live::ScriptedDrag check_drag(const DragFlag& f, const fs::path& input, const SceneOverrides& set,
+                              const AssembleOptions& opts) {
   auto bad = [&](const std::string& why, const std::string& hint) {
     fail_input("invalid --drag '" + f.text + "': " + why, {}, 0, "--drag", hint);
   };
   if (input.extension() != ".toml") bad("it drags a value of a scene file", "a scene .toml");
+  static const std::regex ident(R"(^[A-Za-z_][A-Za-z0-9_]*$)");
+  if (std::regex_match(f.drag.target, ident)) {  // no '.' nor '[': a uniform's name, not a table's value
+    check_uniform_drag(f, load_input(input, {}, opts, {}, set));
+    live::ScriptedDrag d = f.drag;
+    d.uniform = true;
+    for (size_t i = 0; i < f.values.size(); ++i) d.to[i] = f.values[i];
+    return d;
+  }
   Scene scene = load_scene(input, set);
   std::array<double, 3> cur{};
   int arity = 0;
@@ -214,7 +255,13 @@ int run_view(const ViewArgs& a) {
   o.capture_dir = a.capture_dir;
   o.shot_dir = a.shot_dir;
   o.shot_frame = a.shot_frame;
-  if (a.drag) o.drag = check_drag(*a.drag, input, set);
+  if (a.drag) o.drag = check_drag(*a.drag, input, set, opts);
+  if (!a.mesh_on_exit.empty() && !mesh_format_for(a.mesh_on_exit))  // a typo is a bad flag, not a failed export
+    fail_input("--mesh-on-exit '" + a.mesh_on_exit + "' is not .obj, .ply, .stl, .glb or .vdb", {}, 0,
+               "--mesh-on-exit", "e.g. --mesh-on-exit part.obj");
+  o.mesh_on_exit = a.mesh_on_exit;
+  o.mesh_resolution = a.mesh_resolution;
+  o.mesh_frame = a.mesh_frame;
   o.exit_after = a.exit_after;
   o.max_frames = a.max_frames;
   o.debounce_ms = a.debounce_ms;

@@ -25,7 +25,7 @@ namespace ms {
 struct DragFlag {
   std::string text;            // as given, for the messages of that check
   live::ScriptedDrag drag;     // target and frames; `to` set from `values` by the check
-  std::vector<double> values;  // x, or x,y,z
+  std::vector<double> values;  // x, or x,y,z (a uniform: its components)
 };
 // Throws bad_input naming --drag for anything but TARGET=V@A..B with A <= B.
 DragFlag parse_drag_flag(const std::string& text);
@@ -63,6 +63,9 @@ struct ViewArgs {
   bool verbose = false;        // -v: every compile error of a load that fails before the window
   std::vector<std::string> allow_include;  // more directories #include may read
   Overrides overrides;       // --set, --uniform: applied again at every reload
+  std::string mesh_on_exit;  // --mesh-on-exit FILE; empty: none
+  int mesh_resolution = 256;  // --mesh-resolution: M's and --mesh-on-exit's cells
+  long mesh_frame = -1;      // --mesh-frame N (scripts): M after settled frame N
 };
 
 CLI::App* add_view_command(CLI::App& app, ViewArgs& args);

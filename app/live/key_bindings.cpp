@@ -36,6 +36,7 @@ void on_key(GLFWwindow* w, int key, int, int action, int mods) {
       case GLFW_KEY_F2: s.paused = !s.paused; break;
       case GLFW_KEY_F5: s.want_disk_reload = true; break;
       case GLFW_KEY_F9: s.want_record_toggle = true; break;
+      case GLFW_KEY_F8: s.want_mesh = true; break;  // M is the shader's: the export says why there is no mesh
       case GLFW_KEY_F12:
         if (mods & GLFW_MOD_SHIFT) s.want_window_shot = true;
         else s.want_shot = true;
@@ -78,6 +79,8 @@ void on_key(GLFWwindow* w, int key, int, int action, int mods) {
     case GLFW_KEY_F9: s.want_record_toggle = true; break;
     case GLFW_KEY_O: s.accumulate = s.accumulate == 0 ? s.accumulate_default : 0; break;  // 0: no limit
     case GLFW_KEY_K: s.want_accumulated_shot = true; break;
+    case GLFW_KEY_M:
+    case GLFW_KEY_F8: s.want_mesh = true; break;
     case GLFW_KEY_P:
     case GLFW_KEY_F12:
       if (shift) s.want_window_shot = true;
@@ -157,6 +160,7 @@ const char* const kHelp[] = {
     "Shift+P          screenshot of the window with the panel",
     "O                accumulate samples without limit / up to the target",
     "K                save the accumulated frame as it stands",
+    "M, F8            export the mesh as it stands: <scene>_mesh_001.obj, ...",
     "F9               start / stop recording frames at exact times (--record-dir)",
     "F5               reload everything from disk",
     "Tab, F1          show / hide the panel;  H  this help",

@@ -1,6 +1,7 @@
 #include "live/live_values.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "scene/animation.h"
 #include "shader/specialize.h"
@@ -58,14 +59,25 @@ bool fuse_frame(const Scene& scene, int accumulate, int debug_view, bool shadert
   return !shadertoy && debug_view == 0 && !scene.bloom.enabled && target == 1 && scene.render.spp <= 1;
 }
 
-bool ScriptedDrag::apply(Scene& scene, long frame) {
+bool ScriptedDrag::apply(Scene& scene, std::vector<SceneParam>& params, long frame) {
   if (first < 0 || frame < first || frame > last) return false;
   int arity = 0;
-  if (frame == first) target_value(scene, target, &from_, &arity, false);
+  auto param = std::find_if(params.begin(), params.end(), [&](const SceneParam& p) { return p.name == target; });
+  if (uniform && param == params.end()) return true;  // a reload dropped it: the drag goes on over nothing
+  if (frame == first) {
+    if (uniform) std::copy_n(param->value.begin(), 3, from_.begin());
+    else target_value(scene, target, &from_, &arity, false);
+  }
   const double u = last > first ? static_cast<double>(frame - first) / static_cast<double>(last - first) : 1.0;
   std::array<double, 3> v{};
   for (int c = 0; c < 3; ++c) v[c] = from_[c] + (to[c] - from_[c]) * u;
-  target_value(scene, target, &v, &arity, true);
+  if (!uniform) {
+    target_value(scene, target, &v, &arity, true);
+    return true;
+  }
+  // As the panel's slider sets it: an int uniform takes whole values.
+  for (int c = 0; c < std::min(param->components, 3); ++c)
+    param->value[c] = static_cast<float>(param->is_int ? std::round(v[c]) : v[c]);
   return true;
 }
 

@@ -9,7 +9,8 @@
 //   if (auto next = live.rebuild(scene, dragging))  // each frame
 //     { opts.live = *next; live.built(scene, *next); /* rebuild */ }
 //
-// ScriptedDrag is --drag's drag for tests: frames A..B move one value.
+// ScriptedDrag is --drag's drag for tests: frames A..B move one value, a
+// light, material or sky value or one of the scene's ranged uniforms.
 #pragma once
 #include <array>
 #include <optional>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "shader/scene_params.h"
 
 namespace ms::live {
 
@@ -52,12 +54,13 @@ std::string uniform_tables(const std::string& shader_text);
 bool fuse_frame(const Scene& scene, int accumulate, int debug_view, bool shadertoy);
 
 struct ScriptedDrag {
-  std::string target;         // an animation target: "materials[0].color"
+  std::string target;         // an animation target: "materials[0].color"; or a uniform's name
+  bool uniform = false;       // target names a ranged uniform (the panel's "Scene parameters")
   std::array<double, 3> to{};  // where the drag ends
   long first = -1, last = -1;  // frames; first < 0: no drag
   // At `frame`: moves the value linearly from where it was at `first` to
   // `to` at `last`; returns whether the drag is on (first..last).
-  bool apply(Scene& scene, long frame);
+  bool apply(Scene& scene, std::vector<SceneParam>& params, long frame);
 
  private:
   std::array<double, 3> from_{};

@@ -51,6 +51,7 @@ struct ViewState {
   int recording_frame = -1;            // the frame being recorded, for the overlay; -1: not recording
   bool want_write_camera = false; // C
   bool want_write_values = false; // Ctrl+S / panel button
+  bool want_mesh = false;         // M, F8: export the mesh (live/mesh_export.h)
 
   // Progressive accumulation (live/accumulation.h): the samples to reach
   // while nothing changes: kSceneSpp (the scene's [render] spp), N, or

@@ -160,6 +160,10 @@ void Viewer::serve_requests() {
     s_.want_write_values = false;
     write_values();
   }
+  if (s_.want_mesh) {
+    s_.want_mesh = false;
+    start_mesh();
+  }
 }
 
 void Viewer::screenshot() {
@@ -290,7 +294,7 @@ int Viewer::run() {
     s_.want_window_shot = false;
     const double t_draw = seconds_now();
     const bool settled = !compiling_.active;  // this frame counts for --drag and --shot-frame
-    const bool scripted_drag = drag_.apply(session_.scene(), settled_);
+    const bool scripted_drag = drag_.apply(session_.scene(), session_.params(), settled_);
     const bool drawn = drawer.draw(frames_, dt, [&] {
       if (s_.show_panel) draw_panel(s_, session_, ctx->info());
       draw_overlay(s_, session_);
@@ -317,9 +321,14 @@ int Viewer::run() {
       const int h = o_.shot_height > 0 ? o_.shot_height : drawer.render_height();
       const std::string stopped = recorder_.frame(drawer, w, h, log_);
       if (!stopped.empty()) s_.say(stopped, 6.0);
-      if (settled && ++settled_ == o_.shot_frame) s_.want_shot = true;
+      if (settled) {
+        ++settled_;
+        if (settled_ == o_.shot_frame) s_.want_shot = true;
+        if (settled_ == o_.mesh_frame) s_.want_mesh = true;
+      }
     }
     serve_requests();
+    poll_mesh();
     if (t1 - t_stats >= 1.0) {
       t_stats = t1;
       log_.line("frames " + std::to_string(frames_) + " gpu_ms=" + fmt("%.2f", s_.gpu_ms.median(t1)) +
@@ -333,13 +342,15 @@ int Viewer::run() {
   if (audio_.playing())
     log_.line("audio written " + std::to_string(audio_.written()) + " restarts " + std::to_string(audio_.restarts()));
   log_.line("exit frames=" + std::to_string(frames_));
+  if (!o_.mesh_on_exit.empty()) exit_mesh_ = mesh_spec(o_.mesh_on_exit);  // the values as the window closes
   drawer_ = nullptr;
   return 0;
 }
 
 int run_viewer(const ViewerOptions& opts) {
   Viewer v(opts);
-  return v.run();
+  const int code = v.run();
+  return v.finish_mesh(code);  // after the window is gone: nothing left to draw while it waits
 }
 
 }  // namespace ms::live

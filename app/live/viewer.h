@@ -40,10 +40,15 @@ struct ViewerOptions {
   ScriptedDrag drag;                 // --drag: a panel drag, scripted (live/live_values.h)
   std::string audio_device = "default";  // ALSA PCM for a music input; "none": silent (live/audio_out.h)
   DispatchOptions dispatch;          // --dispatch: what traces the scene pass (live/compute_trace.h)
+  // M's and --mesh-on-exit's exports (live/mesh_export.h).
+  std::filesystem::path mesh_on_exit;  // empty: none
+  int mesh_resolution = 256;           // cells along the box's longest side
+  long mesh_frame = -1;                // export as M does after settled frame N (scripts)
 };
 
-// Runs until the window closes, Esc, --exit-after or --max-frames. Returns
-// the process exit code. Throws ms::Error only before the window is up (no
+// Runs until the window closes, Esc, --exit-after or --max-frames, then
+// waits for a mesh export in flight and writes --mesh-on-exit. Returns the
+// process exit code: 3 when --mesh-on-exit's export failed. Throws ms::Error only before the window is up (no
 // display, bad flags); later problems are shown and logged, never fatal.
 int run_viewer(const ViewerOptions& opts);
 

@@ -4,6 +4,7 @@
 // log lines). Internal to live/; run_viewer() (live/viewer.h) is the entry.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "live/compile_worker.h"
 #include "live/live_log.h"
 #include "live/live_values.h"
+#include "live/mesh_export.h"
 #include "live/recording.h"
 #include "live/session.h"
 #include "live/view_state.h"
@@ -60,6 +62,9 @@ class Viewer {
   explicit Viewer(const ViewerOptions& o)
       : o_(o), log_(o.log_file), session_(SessionOptions{o.input, o.set, o.assemble}), drag_(o.drag), recorder_(o.record) {}
   int run();
+  // After run(): waits for M's export in flight, then writes --mesh-on-exit;
+  // `code` (run()'s), or 3 when that export failed (live/viewer_mesh.cpp).
+  int finish_mesh(int code);
 
  private:
   // wait: block until the programs are built (the first build: nothing to show before it).
@@ -78,6 +83,10 @@ class Viewer {
   void write_camera();
   void write_values();
   void watch_bounds(double now);
+  MeshExportSpec mesh_spec(const std::filesystem::path& output);
+  void start_mesh();
+  void poll_mesh();
+  void report_mesh(const MeshExportResult& r);
 
   const ViewerOptions& o_;
   LiveLog log_;
@@ -107,6 +116,8 @@ class Viewer {
   std::vector<SceneParam> bounds_params_;
   double t_bounds_ = 0.0;
   std::string bounds_warning_;
+  MeshExport mesh_;                         // M's export, polled each frame
+  std::optional<MeshExportSpec> exit_mesh_;  // --mesh-on-exit's, taken as the loop ends
 };
 
 }  // namespace ms::live
