@@ -100,8 +100,10 @@ for subject in "${subjects[@]}"; do
       if [ "$tool" = baseline ]; then
         run_one "$tool" "$subject" "$res" $PY tools/mesh-baseline.py --subject "$subject" --resolution "$res"
       else
-        run_one "$tool" "$subject" "$res" "$MS" mesh "$(scene_of "$subject")" -o "$tmp/x.ply" \
-          --resolution "$res" --json
+        # Cold: an empty cache directory, so a graph's pruning pass runs.
+        rm -rf "$tmp/cache"
+        XDG_CACHE_HOME="$tmp/cache" run_one "$tool" "$subject" "$res" "$MS" mesh "$(scene_of "$subject")" \
+          -o "$tmp/x.ply" --resolution "$res" --json
       fi
       tail -n 1 "$RESULTS" | cut -c 1-200 >&2
       rm -f "$tmp/x.ply"

@@ -109,13 +109,17 @@ glm::ivec3 face_corner(int f, int k) {
 }
 
 int ambiguous_faces(int mask) {
-  int out = 0;
-  for (int f = 0; f < 6; ++f) {
-    bool in[4];
-    for (int k = 0; k < 4; ++k) in[k] = (mask >> corner_bit(face_corner(f, k)) & 1) != 0;
-    if (in[0] == in[2] && in[1] == in[3] && in[0] != in[1]) out |= 1 << f;
-  }
-  return out;
+  static const std::array<std::uint8_t, 256> table = [] {
+    std::array<std::uint8_t, 256> t{};
+    for (int m = 0; m < 256; ++m)
+      for (int f = 0; f < 6; ++f) {
+        bool in[4];
+        for (int k = 0; k < 4; ++k) in[k] = (m >> corner_bit(face_corner(f, k)) & 1) != 0;
+        if (in[0] == in[2] && in[1] == in[3] && in[0] != in[1]) t[static_cast<std::size_t>(m)] |= 1 << f;
+      }
+    return t;
+  }();
+  return table[static_cast<std::size_t>(mask & 255)];
 }
 
 bool face_joined(float a, float b, float c, float d) {

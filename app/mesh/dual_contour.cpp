@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include <glm/geometric.hpp>
 
@@ -99,8 +100,10 @@ int cell_mask(const float* v, const glm::ivec3& l) {
   return m;
 }
 
-// One cell's vertices, one per patch, appended to dc.
-void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell, int key, int slot, DualContour& dc) {
+// One cell's vertices, one per patch, written from index `at` of dc's
+// per-vertex arrays (sized already); `missing` counts crossings not found.
+void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell, int key, int slot, std::size_t at,
+                   DualContour& dc, std::size_t& missing) {
   const CellPatches& p = cell_patches(key >> 6, key & 63);
   for (int k = 0; k < p.count; ++k) {
     Qef q;
@@ -109,25 +112,29 @@ void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell,
       const int axis = edge_axis(i);
       const int idx = edge_at(f, e, cell + edge_start(i), axis, slot);
       if (idx < 0) {
-        ++dc.missing;
+        ++missing;
         continue;
       }
       const glm::vec4 r = e.roots[static_cast<std::size_t>(idx)];
       glm::dvec3 local(edge_start(i));
-      local[axis] += static_cast<double>(r.w);
-      q.add(local, glm::dvec3(r));
+      // A root or normal that is not a number (a map() that returns NaN
+      // there) puts its crossing at the edge's middle, with no plane.
+      const bool finite = std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.z) && std::isfinite(r.w);
+      local[axis] += finite ? std::clamp(static_cast<double>(r.w), 0.0, 1.0) : 0.5;
+      q.add(local, finite ? glm::dvec3(r) : glm::dvec3(0.0));
     }
     // A cell with several patches: each vertex at its own crossings' mean,
     // where the patches stay apart (their QEF points may cross).
     QefSolution s = q.solve(p.count > 1 ? 2.0 : 0.01);
+    if (!(std::isfinite(s.point.x) && std::isfinite(s.point.y) && std::isfinite(s.point.z))) s.point = glm::dvec3(0.5);
     s.point = glm::clamp(s.point, glm::dvec3(0.0), glm::dvec3(1.0));
-    dc.mesh.positions.push_back(glm::vec3(f.grid.origin + (glm::dvec3(cell) + s.point) * f.grid.voxel));
-    dc.rank.push_back(static_cast<std::uint8_t>(std::max(s.rank, 1)));
-    dc.cell.push_back(cell);
-    dc.mass.push_back(glm::vec3(f.grid.origin + (glm::dvec3(cell) + glm::clamp(s.mass, glm::dvec3(0.0), glm::dvec3(1.0))) * f.grid.voxel));
+    const std::size_t v = at + static_cast<std::size_t>(k);
+    dc.mesh.positions[v] = glm::vec3(f.grid.origin + (glm::dvec3(cell) + s.point) * f.grid.voxel);
+    dc.rank[v] = static_cast<std::uint8_t>(std::max(s.rank, 1));
+    dc.cell[v] = cell;
+    dc.mass[v] = glm::vec3(f.grid.origin + (glm::dvec3(cell) + glm::clamp(s.mass, glm::dvec3(0.0), glm::dvec3(1.0))) *
+                                               f.grid.voxel);
   }
-  ++dc.cells;
-  dc.split_cells += p.count > 1;
 }
 
 // Whether all four crossing edges of face `f` belong to one patch of the
@@ -187,14 +194,35 @@ Vertices place_vertices(const SparseField& f, const Edges& e, DualContour& dc) {
         }
   }
   fix_doubled_faces(f, v);
+  // Each cell's first vertex from the patch counts, then the QEFs solved
+  // on two threads, each on its own bricks, writing its own vertices.
+  std::size_t n = 0;
   for (std::size_t i = 0; i < v.first.size(); ++i) {
     if (v.first[i] != -2) continue;
-    const std::size_t s = i / kCells;
-    const int li = static_cast<int>(i % kCells);
-    v.first[i] = static_cast<std::int32_t>(dc.mesh.positions.size());
-    cell_vertices(f, e, f.bricks[s] * kB + glm::ivec3(li % kB, (li / kB) % kB, li / (kB * kB)), v.key[i],
-                  static_cast<int>(s), dc);
+    const int count = cell_patches(v.key[i] >> 6, v.key[i] & 63).count;
+    v.first[i] = static_cast<std::int32_t>(n);
+    n += static_cast<std::size_t>(count);
+    ++dc.cells;
+    dc.split_cells += count > 1;
   }
+  dc.mesh.positions.resize(n);
+  dc.rank.resize(n);
+  dc.cell.resize(n);
+  dc.mass.resize(n);
+  std::size_t missing[2] = {0, 0};
+  auto solve = [&](std::size_t part) {
+    for (std::size_t s = part; s < f.bricks.size(); s += 2)
+      for (int li = 0; li < kCells; ++li) {
+        const std::size_t i = s * kCells + static_cast<std::size_t>(li);
+        if (v.first[i] < 0) continue;
+        cell_vertices(f, e, f.bricks[s] * kB + glm::ivec3(li % kB, (li / kB) % kB, li / (kB * kB)), v.key[i],
+                      static_cast<int>(s), static_cast<std::size_t>(v.first[i]), dc, missing[part]);
+      }
+  };
+  std::thread other(solve, 1);
+  solve(0);
+  other.join();
+  dc.missing += missing[0] + missing[1];
   return v;
 }
 
@@ -221,6 +249,7 @@ void project_vertices(FieldSource& source, const SparseField& f, DualContour& dc
     for (std::size_t k = 0; k < r.size(); ++k) {
       Walk w = walks[k];
       const double value = static_cast<double>(r[k].value);
+      if (!std::isfinite(value)) continue;
       if (std::abs(value) > std::abs(w.value)) {  // worse: back, and half the step
         dc.mesh.positions[w.v] = glm::vec3(w.from);
         w.scale *= 0.5;
@@ -232,7 +261,7 @@ void project_vertices(FieldSource& source, const SparseField& f, DualContour& dc
       const double gg = glm::dot(g, g);
       if (!(gg > 1e-6)) continue;
       const glm::dvec3 step = g * (w.scale * value / gg);
-      if (glm::length(step) > f.grid.voxel) continue;
+      if (!(glm::length(step) <= f.grid.voxel)) continue;  // NaN too
       w.from = glm::dvec3(pts[k]);
       w.value = value;
       // Kept in its cell (and a margin): a vertex that wandered into the

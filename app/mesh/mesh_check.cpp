@@ -108,6 +108,14 @@ bool triangles_cross(const TriMesh& m, std::size_t s, std::size_t t) {
     A[k] = glm::dvec3(m.positions[m.indices[s * 3 + k]]);
     B[k] = glm::dvec3(m.positions[m.indices[t * 3 + k]]);
   }
+  // Each triangle wholly on one side of the other's plane: apart (the
+  // first test of Moller 1997, which settles nearly every pair).
+  auto one_side = [](const glm::dvec3* p, const glm::dvec3* q) {
+    const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+    const double a = glm::dot(n, q[0] - p[0]), b = glm::dot(n, q[1] - p[0]), c = glm::dot(n, q[2] - p[0]);
+    return (a > 0 && b > 0 && c > 0) || (a < 0 && b < 0 && c < 0);
+  };
+  if (one_side(A, B) || one_side(B, A)) return false;
   for (int k = 0; k < 3; ++k) {
     if (segment_crosses(A[k], A[(k + 1) % 3], B[0], B[1], B[2])) return true;
     if (segment_crosses(B[k], B[(k + 1) % 3], A[0], A[1], A[2])) return true;
@@ -141,6 +149,16 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> crossing_pairs(const TriMes
   for (std::size_t i = 0; i < nt; ++i)
     if (i == 0 || keyed[i].first != keyed[i - 1].first) first.push_back(i);
   first.push_back(nt);
+  // Boxes and corners in bucket order: the pair loops read them in a row.
+  struct Tri {
+    glm::vec3 lo, hi;
+    std::uint32_t v[3];
+  };
+  std::vector<Tri> tri(nt);
+  for (std::size_t i = 0; i < nt; ++i) {
+    const std::uint32_t t = keyed[i].second;
+    tri[i] = {lo[t], hi[t], {m.indices[t * 3], m.indices[t * 3 + 1], m.indices[t * 3 + 2]}};
+  }
   auto bucket = [&](std::uint64_t k) {  // index into first, or -1
     std::size_t a = 0, b = first.size() - 1;
     while (a < b) {
@@ -150,14 +168,13 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> crossing_pairs(const TriMes
     }
     return a < first.size() - 1 && keyed[first[a]].first == k ? static_cast<long>(a) : -1L;
   };
-  auto test = [&](std::uint32_t s, std::uint32_t t) {
-    if (hi[s].x < lo[t].x || hi[s].y < lo[t].y || hi[s].z < lo[t].z || hi[t].x < lo[s].x || hi[t].y < lo[s].y ||
-        hi[t].z < lo[s].z)
+  auto test = [&](std::size_t i, std::size_t j) {
+    const Tri &s = tri[i], &t = tri[j];
+    if (s.hi.x < t.lo.x || s.hi.y < t.lo.y || s.hi.z < t.lo.z || t.hi.x < s.lo.x || t.hi.y < s.lo.y || t.hi.z < s.lo.z)
       return false;
-    const std::uint32_t *a = &m.indices[std::size_t{s} * 3], *b = &m.indices[std::size_t{t} * 3];
-    for (int i = 0; i < 3; ++i)
-      if (a[i] == b[0] || a[i] == b[1] || a[i] == b[2]) return false;
-    return triangles_cross(m, s, t);
+    for (int a = 0; a < 3; ++a)
+      if (s.v[a] == t.v[0] || s.v[a] == t.v[1] || s.v[a] == t.v[2]) return false;
+    return triangles_cross(m, keyed[i].second, keyed[j].second);
   };
   using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
   auto run = [&](std::size_t from, std::size_t step, Pairs& n) {
@@ -169,7 +186,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> crossing_pairs(const TriMes
         if (other < static_cast<long>(bi)) continue;  // each pair of buckets once
         for (std::size_t i = first[bi]; i < first[bi + 1]; ++i)
           for (std::size_t j = other == static_cast<long>(bi) ? i + 1 : first[other]; j < first[other + 1]; ++j)
-            if (test(keyed[i].second, keyed[j].second)) n.emplace_back(keyed[i].second, keyed[j].second);
+            if (test(i, j)) n.emplace_back(keyed[i].second, keyed[j].second);
       }
     }
   };
@@ -202,7 +219,7 @@ std::string MeshCheck::summary() const {
   return s;
 }
 
-MeshCheck check_mesh(const TriMesh& m, double voxel) {
+MeshCheck check_mesh(const TriMesh& m, double voxel, const std::size_t* crossings) {
   MeshCheck c;
   std::size_t edges = 0;
   for (std::size_t t = 0; t < m.triangles(); ++t) {
@@ -214,7 +231,7 @@ MeshCheck check_mesh(const TriMesh& m, double voxel) {
   const Corners corners = corners_of(m);
   check_edges(corners, c, edges);
   check_fans(corners, c);
-  c.self_intersections = crossing_pairs(m, voxel).size();
+  c.self_intersections = crossings ? *crossings : crossing_pairs(m, voxel).size();
   c.euler = static_cast<long long>(m.positions.size()) - static_cast<long long>(edges) +
             static_cast<long long>(m.triangles());
   return c;

@@ -32,7 +32,9 @@ struct MeshCheck {
 };
 
 // `voxel`: the grid's cell, the scale of the self-intersection search.
-MeshCheck check_mesh(const TriMesh& mesh, double voxel);
+// `crossings`: the count of crossing_pairs() when the caller has it
+// already (untangle() ends with one), so the search is not run twice.
+MeshCheck check_mesh(const TriMesh& mesh, double voxel, const std::size_t* crossings = nullptr);
 // The pairs of triangles, not neighbours, that cross (each pair once).
 std::vector<std::pair<std::uint32_t, std::uint32_t>> crossing_pairs(const TriMesh& mesh, double voxel);
 

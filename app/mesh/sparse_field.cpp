@@ -89,6 +89,11 @@ std::uint64_t SparseField::key(const glm::ivec3& b) {
 }
 
 int SparseField::slot_of_cell(const glm::ivec3& c) const {
+  if (!dense.empty()) {
+    const glm::ivec3 nb = grid.cells / kBrick, b = brick_of(c);
+    if (b.x < 0 || b.y < 0 || b.z < 0 || b.x >= nb.x || b.y >= nb.y || b.z >= nb.z) return -1;
+    return dense[(static_cast<std::size_t>(b.z) * nb.y + b.y) * nb.x + b.x];
+  }
   const auto it = index.find(key(brick_of(c)));
   return it == index.end() ? -1 : static_cast<int>(it->second);
 }
@@ -152,6 +157,14 @@ SparseField sample_sparse(FieldSource& source, const MeshGrid& grid, const Spars
     if (more.empty()) break;
     from = f.bricks.size();
     add_bricks(source, f, more);
+  }
+  const glm::ivec3 nb = grid.cells / kBrick;
+  if (static_cast<std::size_t>(nb.x) * nb.y * nb.z <= kDenseBricks) {
+    f.dense.assign(static_cast<std::size_t>(nb.x) * nb.y * nb.z, -1);
+    for (std::size_t s = 0; s < f.bricks.size(); ++s) {
+      const glm::ivec3 b = f.bricks[s];
+      f.dense[(static_cast<std::size_t>(b.z) * nb.y + b.y) * nb.x + b.x] = static_cast<std::int32_t>(s);
+    }
   }
   return f;
 }

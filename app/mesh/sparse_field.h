@@ -39,6 +39,10 @@ struct SparseOptions {
 struct SparseField {
   MeshGrid grid;
   std::unordered_map<std::uint64_t, std::uint32_t> index;  // brick key -> brick slot
+  // The same as a dense array over the grid's bricks (-1: skipped), when
+  // it fits in kDenseBricks entries: the meshing passes look up bricks
+  // millions of times, and an array is many times quicker than a hash.
+  std::vector<std::int32_t> dense;
   std::vector<glm::ivec3> bricks;                          // slot -> brick coordinate
   std::vector<float> values;                               // slot * (kBrick+1)^3 + corner
   std::uint64_t cube_tests = 0;                            // coarse cubes evaluated
@@ -49,6 +53,8 @@ struct SparseField {
   // Voxel `v` read from brick `slot` (v inside its closed range).
   float at(int slot, const glm::ivec3& v) const;
 };
+
+constexpr std::size_t kDenseBricks = std::size_t{1} << 26;
 
 SparseField sample_sparse(FieldSource& source, const MeshGrid& grid, const SparseOptions& opts);
 

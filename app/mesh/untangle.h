@@ -12,7 +12,8 @@
 
 namespace ms {
 
-// Returns the crossing pairs left (0 unless the last step did not undo them).
+// Returns the crossing pairs left (0 unless the last step did not undo
+// them), for check_mesh() to take instead of searching again.
 std::size_t untangle(DualContour& dc, const MeshGrid& grid);
 
 }  // namespace ms

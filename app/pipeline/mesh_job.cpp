@@ -85,12 +85,12 @@ void export_mesh(FieldSampler& sampler, const SparseField& sparse, const Scene& 
   if (dc.mesh.positions.empty())
     fail_input("no surface inside the box: map() is positive (or negative) everywhere there", scene.file.string(),
                0, job.bounds ? "--bounds" : "bounds");
-  untangle(dc, sparse.grid);
+  const std::size_t crossings = untangle(dc, sparse.grid);
   r.accuracy = measure_accuracy(sampler, dc, sparse.grid.voxel);
   r.mesh_s = since(m);
   if (progress) progress("checking", 0.8);
   const auto c = std::chrono::steady_clock::now();
-  r.check = check_mesh(dc.mesh, sparse.grid.voxel);
+  r.check = check_mesh(dc.mesh, sparse.grid.voxel, &crossings);
   r.check_s = since(c);
   r.vertices = dc.mesh.positions.size();
   r.triangles = dc.mesh.triangles();

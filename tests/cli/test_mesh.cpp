@@ -150,6 +150,44 @@ TEST(Mesh, ABoxMinusACylinderMatchesItsAnalyticDistance) {
   EXPECT_EQ(e.report["check"]["euler"].get<int>(), 0);
 }
 
+TEST(Mesh, PlanesJoinTheSolidOnlyWhenAsked) {
+  TempDir dir;
+  const std::string seed = (source_dir() / "scenes/seed.toml").string();
+  const std::vector<std::string> box = {"--bounds", "-1.5,-0.5,-1.5,1.5,2.1,1.5", "--resolution", "48", "--json"};
+  auto lowest = [&](const std::vector<std::string>& extra, nlohmann::json& report) {
+    std::vector<std::string> args = {"mesh", seed, "-o", (dir / "p.ply").string()};
+    args.insert(args.end(), box.begin(), box.end());
+    args.insert(args.end(), extra.begin(), extra.end());
+    const RunResult r = run_marchstudio(args, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    report = nlohmann::json::parse(r.out);
+    float y = 1e9f;
+    for (const glm::vec3& v : read_ply(dir / "p.ply").v) y = std::min(y, v.y);
+    return y;
+  };
+  nlohmann::json without, with;
+  // The ball alone rests on y = 0; with --planes the floor is a slab down to the box.
+  EXPECT_GT(lowest({}, without), -0.01f);
+  EXPECT_LT(lowest({"--planes"}, with), -0.49f);
+  EXPECT_TRUE(with["manifold"].get<bool>()) << with["check"]["summary"];
+  EXPECT_GT(with["triangles"].get<int>(), without["triangles"].get<int>());
+}
+
+TEST(Mesh, AFieldThatIsNaNInPlacesGivesFiniteVertices) {
+  TempDir dir;
+  // NaN on the +x half: the sphere is cut there, never a NaN vertex.
+  const auto f = scene(dir, "nan",
+                       "  float bad = sqrt(-1.0 - abs(p.y));\n"
+                       "  return vec2(p.x > 0.013 ? bad : length(p) - 0.5, MAT_PART);",
+                       "min = [-0.6, -0.6, -0.6]\nmax = [0.6, 0.6, 0.6]");
+  const RunResult r = run_marchstudio({"mesh", f.string(), "-o", (dir / "n.ply").string(), "--resolution", "48"},
+                                      dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Ply p = read_ply(dir / "n.ply");
+  ASSERT_FALSE(p.v.empty());
+  for (const glm::vec3& v : p.v) ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
+}
+
 TEST(Mesh, EveryFormatIsWritten) {
   TempDir dir;
   for (const char* ext : {"obj", "ply", "stl", "glb", "vdb"}) {
