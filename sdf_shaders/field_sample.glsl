@@ -49,64 +49,91 @@ vec2 fieldMap(vec3 p) {
 
 vec3 voxelPoint(ivec3 v) { return uFieldOrigin + uFieldVoxel * vec3(v); }
 
-// Central differences a hundredth of a voxel wide: close to the surface's
-// own normal even a few hundredths of a voxel from a crease.
-vec3 fieldGradient(vec3 p) {
-  const vec2 k = vec2(1.0, -1.0);
-  float h = 0.01 * uFieldVoxel;
-  return (k.xyy * fieldMap(p + k.xyy * h).x + k.yyx * fieldMap(p + k.yyx * h).x +
-          k.yxy * fieldMap(p + k.yxy * h).x + k.xxx * fieldMap(p + k.xxx * h).x) / (4.0 * h);
-}
-
-// The root of the field on a sign-changing edge: regula falsi with the
-// Illinois fix (the kept end's value halved), exact in one step on a plane.
-float edgeRoot(vec3 a, vec3 b, inout int calls) {
-  calls += 2;
-  float fa = fieldMap(a).x, fb = fieldMap(b).x;
-  float ta = 0.0, tb = 1.0;
-  int side = 0;
-  for (int i = 0; i < 12; ++i) {
-    float t = (ta * fb - tb * fa) / (fb - fa);
-    if (!(t > ta && t < tb)) t = 0.5 * (ta + tb);
-    float ft = fieldMap(mix(a, b, t)).x;
-    ++calls;
-    // A millionth of a voxel is as close as a float position gets.
-    if (abs(ft) <= 1e-6 * uFieldVoxel || tb - ta < 1e-6) return t;
-    if ((ft < 0.0) == (fa < 0.0)) {
-      ta = t; fa = ft;
-      if (side == -1) fb *= 0.5;
-      side = -1;
-    } else {
-      tb = t; fb = ft;
-      if (side == 1) fa *= 0.5;
-      side = 1;
-    }
-  }
-  return (ta * fb - tb * fa) / (fb - fa);
-}
+// Each invocation asks for one point at a time and is told the field
+// there, so map() is inlined in one place: llvmpipe generates code for
+// every place it is inlined, and a large graph's interpreter takes seconds
+// to generate. Phases: 0 the first point (an edge's first end), 1 an
+// edge's second end, 2 the root's refinements (regula falsi with the
+// Illinois fix: the kept end's value halved; exact in one step on a
+// plane), 3 the four taps of the gradient (central differences a
+// hundredth of a voxel wide: the surface's own normal even a few
+// hundredths of a voxel from a crease), 4 done.
+const vec3 kTap[4] = vec3[4](vec3(1, -1, -1), vec3(-1, -1, 1), vec3(-1, 1, -1), vec3(1, 1, 1));
 
 void main() {
   if (int(gl_GlobalInvocationID.x) >= uFieldCount) return;
   int g = uFieldBase + int(gl_GlobalInvocationID.x);
-  if (uFieldMode == 0) {
+  int mode = uFieldMode;
+  vec3 a = vec3(0.0), b = vec3(0.0);
+  if (mode == 0) {
     int s = uBrick + 1, l = g % (s * s * s);
-    ivec3 v = fieldIn[g / (s * s * s)].xyz + ivec3(l % s, (l / s) % s, l / (s * s));
-    fieldOut[g] = fieldMap(voxelPoint(v)).x;
-  } else if (uFieldMode == 1) {
+    a = voxelPoint(fieldIn[g / (s * s * s)].xyz + ivec3(l % s, (l / s) % s, l / (s * s)));
+  } else if (mode == 1) {
     ivec4 c = fieldIn[g];
-    fieldOut[g] = fieldMap(uFieldOrigin + uFieldVoxel * (vec3(c.xyz) + 0.5 * float(c.w))).x;
-  } else if (uFieldMode == 2) {
+    a = uFieldOrigin + uFieldVoxel * (vec3(c.xyz) + 0.5 * float(c.w));
+  } else if (mode == 2) {
     ivec4 e = fieldIn[g];
-    vec3 a = voxelPoint(e.xyz), b = voxelPoint(e.xyz + ivec3(e.w == 0, e.w == 1, e.w == 2));
-    int calls = 4;
-    float t = edgeRoot(a, b, calls);
-    vec3 n = fieldGradient(mix(a, b, t));
-    fieldOutV[g] = vec4(n / max(length(n), 1e-20), t);
+    a = voxelPoint(e.xyz);
+    b = voxelPoint(e.xyz + ivec3(e.w == 0, e.w == 1, e.w == 2));
+  } else {
+    a = fieldPts[g].xyz;
+  }
+  float h = 0.01 * uFieldVoxel;
+  int phase = 0, side = 0, iter = 0, tap = 0, calls = 0;
+  float fa = 0.0, fb = 0.0, ta = 0.0, tb = 1.0, t = 0.0;
+  vec3 tapAt = a, grad = vec3(0.0);
+  vec2 first = vec2(0.0);
+  for (int k = 0; k < 18 && phase < 4; ++k) {
+    vec3 q = a;
+    if (phase == 1) q = b;
+    if (phase == 2) {
+      t = (ta * fb - tb * fa) / (fb - fa);
+      if (!(t > ta && t < tb)) t = 0.5 * (ta + tb);
+      q = mix(a, b, t);
+    }
+    if (phase == 3) q = tapAt + kTap[tap] * h;
+    vec2 v = fieldMap(q);
+    ++calls;
+    if (phase == 0) {
+      first = v;
+      fa = v.x;
+      phase = mode == 2 ? 1 : mode == 3 ? 3 : 4;
+    } else if (phase == 1) {
+      fb = v.x;
+      phase = 2;
+    } else if (phase == 2) {
+      ++iter;
+      // A millionth of a voxel is as close as a float position gets.
+      bool done = abs(v.x) <= 1e-6 * uFieldVoxel || tb - ta < 1e-6;
+      if (!done) {
+        if ((v.x < 0.0) == (fa < 0.0)) {
+          ta = t; fa = v.x;
+          if (side == -1) fb *= 0.5;
+          side = -1;
+        } else {
+          tb = t; fb = v.x;
+          if (side == 1) fa *= 0.5;
+          side = 1;
+        }
+        if (iter == 12) t = (ta * fb - tb * fa) / (fb - fa);
+      }
+      if (done || iter == 12) {
+        tapAt = mix(a, b, t);
+        phase = 3;
+      }
+    } else {
+      grad += kTap[tap] * v.x;
+      if (++tap == 4) phase = 4;
+    }
+  }
+  grad /= 4.0 * h;
+  if (mode == 0 || mode == 1) {
+    fieldOut[g] = first.x;
+  } else if (mode == 2) {
+    fieldOutV[g] = vec4(grad / max(length(grad), 1e-20), t);
     fieldOut[g] = float(calls);
   } else {
-    vec3 p = fieldPts[g].xyz;
-    vec2 m = fieldMap(p);
-    fieldOutV[g] = vec4(uFieldMode == 3 ? fieldGradient(p) : vec3(0.0), m.x);
-    fieldOut[g] = m.y;
+    fieldOutV[g] = vec4(grad, first.x);
+    fieldOut[g] = first.y;
   }
 }
