@@ -17,12 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int count_of(const std::string& text, const std::string& needle) {
-  int n = 0;
-  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
-  return n;
-}
-
 std::string seed() { return (source_dir() / "scenes" / "seed.toml").string(); }
 
 // The vertex count of a binary PLY's header; 0 when it is not one.

@@ -21,12 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int count_of(const std::string& text, const std::string& needle) {
-  int n = 0;
-  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
-  return n;
-}
-
 // A sphere whose radius grows with time: r = base + 0.2 t.
 void write_scene(const TempDir& dir, const std::string& base) {
   write_file(dir / "grow.glsl", "vec2 map(vec3 p) {\n  return vec2(length(p) - (" + base +

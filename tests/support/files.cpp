@@ -40,4 +40,10 @@ std::vector<std::string> TempDir::entries() const {
   return names;
 }
 
+int count_of(const std::string& text, const std::string& needle) {
+  int n = 0;
+  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
+}
+
 }  // namespace ms::test

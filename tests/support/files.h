@@ -27,5 +27,7 @@ std::filesystem::path source_dir();  // the repository root
 void write_file(const std::filesystem::path& p, const std::string& text);
 // The whole file, bytes as stored; "" when it cannot be read.
 std::string read_file(const std::filesystem::path& p);
+// How many times `needle` occurs in `text` (overlaps counted): lines of output, say.
+int count_of(const std::string& text, const std::string& needle);
 
 }  // namespace ms::test
