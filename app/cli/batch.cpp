@@ -136,7 +136,7 @@ int run_batch(const RenderArgs& a) {
       outputs.claim(e);
       say_removed_temps({e.output()});  // per job: a job file's outputs are known only as it is read
       if (e.mesh) {
-        const MeshReport r = mesh_scene_timed(*e.mesh, session, e.label);
+        const MeshReport r = mesh_scene(*e.mesh, session);
         if (!r.check.ok() && r.format != MeshFormat::vdb)
           say("marchstudio: warning: " + r.output + ": the mesh check found " + r.check.summary());
         ++meshes;

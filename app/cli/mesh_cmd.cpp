@@ -11,7 +11,6 @@
 #include "cli/common_flags.h"
 #include "cli/flag_checks.h"
 #include "cli/input_flags.h"
-#include "core/deadline.h"
 #include "core/error.h"
 #include "pipeline/mesh_job.h"
 #include "pipeline/mesh_sequence.h"
@@ -88,11 +87,10 @@ namespace {
 
 // On a terminal, one line redrawn in place: the stage, a percentage and an
 // ETA from the fraction done; elsewhere nothing (the summary line says it).
-MeshProgress progress_for(const Deadline& deadline, bool tty) {
+MeshProgress progress_for(bool tty) {
+  if (!tty) return {};
   const auto start = std::chrono::steady_clock::now();
-  return [deadline, tty, start](const char* stage, double fraction) {
-    deadline.check("the mesh export");
-    if (!tty) return;
+  return [start](const char* stage, double fraction) {
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double eta = fraction > 0.02 ? t * (1.0 - fraction) / fraction : -1.0;
     std::fprintf(stderr, "\r\033[Kmesh: %-9s %3d%%  %s elapsed, ETA %s", stage, static_cast<int>(fraction * 100.0),
@@ -137,12 +135,9 @@ int run_mesh(const MeshArgs& a) {
     fail_input("-o '" + a.output + "' has a frame field but there is no --frames", {}, 0, "-o",
                "add --frames A..B, or name one file");
   const MeshJob job = make_mesh_job(a);
-  const Deadline deadline = Deadline::after(a.timeout);
-  std::optional<Watchdog> watchdog;
-  if (deadline.limited()) watchdog.emplace().arm(deadline, "the mesh export");
   const bool tty = isatty(STDERR_FILENO) && !a.json;
   FrameSession session;
-  const MeshReport r = mesh_scene(job, session, progress_for(deadline, tty));
+  const MeshReport r = mesh_scene(job, session, progress_for(tty));
   if (tty) std::fputs("\r\033[K", stderr);
   if (a.json) {
     std::printf("%s\n", mesh_report_json(r).c_str());

@@ -14,37 +14,27 @@ namespace ms {
 namespace {
 
 constexpr int kB = kBrick;
-constexpr int kCells = kB * kB * kB;
-constexpr int kCorners = (kB + 1) * (kB + 1) * (kB + 1);
 // How far (in voxels) a projected vertex may leave its cell.
 constexpr double kCellMargin = 0.1;
 
-int cell_local(const glm::ivec3& l) { return (l.z * kB + l.y) * kB + l.x; }
-int corner_local(const glm::ivec3& l) { return (l.z * (kB + 1) + l.y) * (kB + 1) + l.x; }
+int corner_local(const glm::ivec3& l) { return SparseField::corner_index(l); }
 glm::ivec3 unit(int axis) { return glm::ivec3(axis == 0, axis == 1, axis == 2); }
 
-// Whether a brick's corners differ in sign: only those hold surface.
-bool mixed(const float* v) {
-  bool neg = false, pos = false;
-  for (int i = 0; i < kCorners && !(neg && pos); ++i) (v[i] < 0.0f ? neg : pos) = true;
-  return neg && pos;
-}
-
-// Every sign-changing edge, each once: in the brick that holds its first
-// voxel, at that voxel's local index.
+// Every sign-changing edge, each once: with the cell it starts from
+// (its first voxel's), at that cell's index (SparseField::cell_index).
 struct Edges {
   std::vector<glm::ivec4> list;           // first voxel, axis
   std::vector<std::uint8_t> inside_first;
-  std::vector<std::int32_t> at;           // slot * kCells * 3 + local * 3 + axis -> list index, or -1
+  std::vector<std::int32_t> at;           // cell index * 3 + axis -> list index, or -1
   std::vector<glm::vec4> roots;           // per edge: unit normal, t
 };
 
 Edges find_edges(const SparseField& f) {
   Edges e;
-  e.at.assign(f.bricks.size() * kCells * 3, -1);
+  e.at.assign(f.bricks.size() * kBrickCells * 3, -1);
   for (std::size_t s = 0; s < f.bricks.size(); ++s) {
-    const float* v = &f.values[s * kCorners];
-    if (!mixed(v)) continue;
+    if (!f.changes_sign(s)) continue;
+    const float* v = f.brick_values(s);
     const glm::ivec3 first = f.bricks[s] * kB;
     for (int z = 0; z < kB; ++z)
       for (int y = 0; y < kB; ++y)
@@ -53,7 +43,7 @@ Edges find_edges(const SparseField& f) {
           const bool in = v[corner_local(l)] < 0.0f;
           for (int a = 0; a < 3; ++a) {
             if ((v[corner_local(l + unit(a))] < 0.0f) == in) continue;
-            e.at[(s * kCells + static_cast<std::size_t>(cell_local(l))) * 3 + a] = static_cast<std::int32_t>(e.list.size());
+            e.at[static_cast<std::size_t>(f.cell_index(first + l)) * 3 + a] = static_cast<std::int32_t>(e.list.size());
             e.list.emplace_back(first + l, a);
             e.inside_first.push_back(in);
           }
@@ -62,14 +52,9 @@ Edges find_edges(const SparseField& f) {
   return e;
 }
 
-// `hint`: the brick of the cell asking, looked up only when the voxel is in another.
-int edge_at(const SparseField& f, const Edges& e, const glm::ivec3& voxel, int axis, int hint) {
-  const glm::ivec3 in = voxel - f.bricks[static_cast<std::size_t>(hint)] * kB;
-  const bool here = in.x >= 0 && in.y >= 0 && in.z >= 0 && in.x < kB && in.y < kB && in.z < kB;
-  const int slot = here ? hint : f.slot_of_cell(voxel);
-  if (slot < 0) return -1;
-  const glm::ivec3 l = voxel - f.bricks[static_cast<std::size_t>(slot)] * kB;
-  return e.at[(static_cast<std::size_t>(slot) * kCells + static_cast<std::size_t>(cell_local(l))) * 3 + axis];
+int edge_at(const SparseField& f, const Edges& e, const glm::ivec3& voxel, int axis) {
+  const long i = f.cell_index(voxel);
+  return i < 0 ? -1 : e.at[static_cast<std::size_t>(i) * 3 + axis];
 }
 
 // Per brick and cell, the first vertex of its patches (-1: no surface)
@@ -102,7 +87,7 @@ int cell_mask(const float* v, const glm::ivec3& l) {
 
 // One cell's vertices, one per patch, written from index `at` of dc's
 // per-vertex arrays (sized already); `missing` counts crossings not found.
-void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell, int key, int slot, std::size_t at,
+void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell, int key, std::size_t at,
                    DualContour& dc, std::size_t& missing) {
   const CellPatches& p = cell_patches(key >> 6, key & 63);
   for (int k = 0; k < p.count; ++k) {
@@ -110,7 +95,7 @@ void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell,
     for (int i = 0; i < 12; ++i) {
       if (p.patch[i] != k) continue;
       const int axis = edge_axis(i);
-      const int idx = edge_at(f, e, cell + edge_start(i), axis, slot);
+      const int idx = edge_at(f, e, cell + edge_start(i), axis);
       if (idx < 0) {
         ++missing;
         continue;
@@ -130,7 +115,6 @@ void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell,
     s.point = glm::clamp(s.point, glm::dvec3(0.0), glm::dvec3(1.0));
     const std::size_t v = at + static_cast<std::size_t>(k);
     dc.mesh.positions[v] = glm::vec3(f.grid.origin + (glm::dvec3(cell) + s.point) * f.grid.voxel);
-    dc.rank[v] = static_cast<std::uint8_t>(std::max(s.rank, 1));
     dc.cell[v] = cell;
     dc.mass[v] = glm::vec3(f.grid.origin + (glm::dvec3(cell) + glm::clamp(s.mass, glm::dvec3(0.0), glm::dvec3(1.0))) *
                                                f.grid.voxel);
@@ -155,17 +139,12 @@ bool one_patch_on(int key, int f) {
 void fix_doubled_faces(const SparseField& f, Vertices& v) {
   for (std::size_t i = 0; i < v.first.size(); ++i) {
     if (v.first[i] != -2) continue;
-    const std::size_t s = i / kCells;
-    const int li = static_cast<int>(i % kCells);
-    const glm::ivec3 cell = f.bricks[s] * kB + glm::ivec3(li % kB, (li / kB) % kB, li / (kB * kB));
     for (int axis = 0; axis < 3; ++axis) {
       const int face = 2 * axis + 1;
       if (!(ambiguous_faces(v.key[i] >> 6) >> face & 1)) continue;
-      const glm::ivec3 nb = cell + unit(axis);
-      const int slot = f.slot_of_cell(nb);
-      if (slot < 0) continue;
-      const glm::ivec3 l = nb - f.bricks[static_cast<std::size_t>(slot)] * kB;
-      const std::size_t j = static_cast<std::size_t>(slot) * kCells + static_cast<std::size_t>(cell_local(l));
+      const long neighbour = f.cell_index(f.cell_at(i) + unit(axis));
+      if (neighbour < 0) continue;
+      const std::size_t j = static_cast<std::size_t>(neighbour);
       if (v.first[j] != -2 || !one_patch_on(v.key[i], face) || !one_patch_on(v.key[j], face - 1)) continue;
       v.key[i] = static_cast<std::uint16_t>(v.key[i] ^ (1 << face));
       v.key[j] = static_cast<std::uint16_t>(v.key[j] ^ (1 << (face - 1)));
@@ -175,20 +154,20 @@ void fix_doubled_faces(const SparseField& f, Vertices& v) {
 
 Vertices place_vertices(const SparseField& f, const Edges& e, DualContour& dc) {
   Vertices v;
-  v.first.assign(f.bricks.size() * kCells, -1);
-  v.key.assign(f.bricks.size() * kCells, 0);
+  v.first.assign(f.bricks.size() * kBrickCells, -1);
+  v.key.assign(f.bricks.size() * kBrickCells, 0);
   // The patch tables of every cell first (-2: a cell with surface), then
   // the faces mended, then the vertices.
   for (std::size_t s = 0; s < f.bricks.size(); ++s) {
-    const float* vals = &f.values[s * kCorners];
-    if (!mixed(vals)) continue;
+    if (!f.changes_sign(s)) continue;
+    const float* vals = f.brick_values(s);
     for (int z = 0; z < kB; ++z)
       for (int y = 0; y < kB; ++y)
         for (int x = 0; x < kB; ++x) {
           const glm::ivec3 l(x, y, z);
           const int m = cell_mask(vals, l);
           if (m == 0 || m == 255) continue;
-          const std::size_t i = s * kCells + static_cast<std::size_t>(cell_local(l));
+          const std::size_t i = static_cast<std::size_t>(f.cell_index(f.bricks[s] * kB + l));
           v.first[i] = -2;
           v.key[i] = static_cast<std::uint16_t>(m * 64 + joined_faces(vals, l, m));
         }
@@ -206,18 +185,14 @@ Vertices place_vertices(const SparseField& f, const Edges& e, DualContour& dc) {
     dc.split_cells += count > 1;
   }
   dc.mesh.positions.resize(n);
-  dc.rank.resize(n);
   dc.cell.resize(n);
   dc.mass.resize(n);
   std::size_t missing[2] = {0, 0};
   auto solve = [&](std::size_t part) {
     for (std::size_t s = part; s < f.bricks.size(); s += 2)
-      for (int li = 0; li < kCells; ++li) {
-        const std::size_t i = s * kCells + static_cast<std::size_t>(li);
-        if (v.first[i] < 0) continue;
-        cell_vertices(f, e, f.bricks[s] * kB + glm::ivec3(li % kB, (li / kB) % kB, li / (kB * kB)), v.key[i],
-                      static_cast<int>(s), static_cast<std::size_t>(v.first[i]), dc, missing[part]);
-      }
+      for (std::size_t i = s * kBrickCells; i < (s + 1) * kBrickCells; ++i)
+        if (v.first[i] >= 0)
+          cell_vertices(f, e, f.cell_at(i), v.key[i], static_cast<std::size_t>(v.first[i]), dc, missing[part]);
   };
   std::thread other(solve, 1);
   solve(0);
@@ -276,11 +251,9 @@ void project_vertices(FieldSource& source, const SparseField& f, DualContour& dc
 }
 
 int vertex_of(const SparseField& f, const Vertices& v, const glm::ivec3& cell, int edge) {
-  const int slot = f.slot_of_cell(cell);
-  if (slot < 0) return -1;
-  const glm::ivec3 l = cell - f.bricks[static_cast<std::size_t>(slot)] * kB;
-  const std::size_t i = static_cast<std::size_t>(slot) * kCells + static_cast<std::size_t>(cell_local(l));
-  if (v.first[i] < 0) return -1;
+  const long c = f.cell_index(cell);
+  if (c < 0 || v.first[static_cast<std::size_t>(c)] < 0) return -1;
+  const std::size_t i = static_cast<std::size_t>(c);
   const int patch = cell_patches(v.key[i] >> 6, v.key[i] & 63).patch[edge];
   return patch < 0 ? -1 : v.first[i] + patch;
 }

@@ -23,7 +23,6 @@ namespace ms {
 
 struct DualContour {
   TriMesh mesh;
-  std::vector<std::uint8_t> rank;      // per vertex: 1 smooth, 2 crease, 3 corner
   std::vector<glm::ivec3> cell;        // per vertex: its cell's first voxel
   std::vector<glm::vec3> mass;         // per vertex: its crossings' mean, world units
   std::vector<glm::vec3> crossings;    // every edge's root, world units

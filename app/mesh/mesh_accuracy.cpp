@@ -56,11 +56,7 @@ MeshAccuracy measure_accuracy(FieldSource& source, DualContour& dc, double voxel
     a.mesh_to_surface = std::max(a.mesh_to_surface, std::abs(static_cast<double>(p.value)) / voxel);
   // Surface to mesh: each crossing to the triangles around its quad's
   // four vertices (the mesh near it; the nearest point is there or nearer).
-  std::vector<std::uint32_t> start(m.positions.size() + 1, 0), ring(m.indices.size());
-  for (std::uint32_t i : m.indices) ++start[i + 1];
-  for (std::size_t i = 0; i < m.positions.size(); ++i) start[i + 1] += start[i];
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t k = 0; k < m.indices.size(); ++k) ring[fill[m.indices[k]]++] = static_cast<std::uint32_t>(k / 3);
+  const MeshCorners ring = corners_of(m);
   auto tri = [&m](std::uint32_t t, const glm::dvec3& p) {
     return point_triangle(p, glm::dvec3(m.positions[m.indices[t * 3]]), glm::dvec3(m.positions[m.indices[t * 3 + 1]]),
                           glm::dvec3(m.positions[m.indices[t * 3 + 2]]));
@@ -71,7 +67,8 @@ MeshAccuracy measure_accuracy(FieldSource& source, DualContour& dc, double voxel
     const glm::dvec3 p(dc.crossings[i]);
     double d = std::min(tri(t, p), tri(t + 1, p));
     for (std::uint32_t k = d > 0.01 * voxel ? t * 3 : t * 3 + 6; k < t * 3 + 6; ++k)
-      for (std::uint32_t j = start[m.indices[k]]; j < start[m.indices[k] + 1]; ++j) d = std::min(d, tri(ring[j], p));
+      for (std::uint32_t j = ring.start[m.indices[k]]; j < ring.start[m.indices[k] + 1]; ++j)
+        d = std::min(d, tri(ring.tri[j], p));
     a.surface_to_mesh = std::max(a.surface_to_mesh, d / voxel);
   }
   a.hausdorff = std::max(a.mesh_to_surface, a.surface_to_mesh);

@@ -11,34 +11,29 @@
 
 namespace ms {
 
-namespace {
-
-// Per vertex, its corners: the vertex after it in each of its triangles
-// and the one after that (counter-clockwise), in one flat array.
-struct Corners {
-  std::vector<std::uint32_t> start;          // vertex -> first corner
-  std::vector<std::uint32_t> next, prev;
-};
-
-Corners corners_of(const TriMesh& m) {
-  Corners c;
+MeshCorners corners_of(const TriMesh& m) {
+  MeshCorners c;
   const std::size_t nv = m.positions.size();
   c.start.assign(nv + 1, 0);
   for (std::uint32_t i : m.indices) ++c.start[i + 1];
   for (std::size_t i = 0; i < nv; ++i) c.start[i + 1] += c.start[i];
   c.next.resize(m.indices.size());
   c.prev.resize(m.indices.size());
+  c.tri.resize(m.indices.size());
   std::vector<std::uint32_t> fill(c.start.begin(), c.start.end() - 1);
   for (std::size_t t = 0; t < m.triangles(); ++t)
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t v = m.indices[t * 3 + k], at = fill[v]++;
       c.next[at] = m.indices[t * 3 + (k + 1) % 3];
       c.prev[at] = m.indices[t * 3 + (k + 2) % 3];
+      c.tri[at] = static_cast<std::uint32_t>(t);
     }
   return c;
 }
 
-std::uint32_t count_next(const Corners& c, std::uint32_t v, std::uint32_t n) {
+namespace {
+
+std::uint32_t count_next(const MeshCorners& c, std::uint32_t v, std::uint32_t n) {
   std::uint32_t k = 0;
   for (std::uint32_t i = c.start[v]; i < c.start[v + 1]; ++i) k += c.next[i] == n;
   return k;
@@ -47,7 +42,7 @@ std::uint32_t count_next(const Corners& c, std::uint32_t v, std::uint32_t n) {
 // Each directed edge v -> n: once (else two neighbours disagree on the
 // orientation), and n -> v once (else the edge has one face, or three or
 // more). Each undirected edge counted once.
-void check_edges(const Corners& c, MeshCheck& out, std::size_t& edges) {
+void check_edges(const MeshCorners& c, MeshCheck& out, std::size_t& edges) {
   const std::size_t nv = c.start.size() - 1;
   for (std::uint32_t v = 0; v < nv; ++v)
     for (std::uint32_t i = c.start[v]; i < c.start[v + 1]; ++i) {
@@ -66,7 +61,7 @@ void check_edges(const Corners& c, MeshCheck& out, std::size_t& edges) {
 
 // A vertex is manifold when its link (each triangle's edge opposite it,
 // next -> prev) is one cycle through all its triangles: one fan.
-void check_fans(const Corners& c, MeshCheck& out) {
+void check_fans(const MeshCorners& c, MeshCheck& out) {
   const std::size_t nv = c.start.size() - 1;
   for (std::uint32_t v = 0; v < nv; ++v) {
     const std::uint32_t b = c.start[v], e = c.start[v + 1];
@@ -228,7 +223,7 @@ MeshCheck check_mesh(const TriMesh& m, double voxel, const std::size_t* crossing
     const glm::dvec3 a(m.positions[i[0]]), b(m.positions[i[1]]), d(m.positions[i[2]]);
     c.volume += glm::dot(a, glm::cross(b, d)) / 6.0;
   }
-  const Corners corners = corners_of(m);
+  const MeshCorners corners = corners_of(m);
   check_edges(corners, c, edges);
   check_fans(corners, c);
   c.self_intersections = crossings ? *crossings : crossing_pairs(m, voxel).size();

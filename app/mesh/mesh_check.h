@@ -35,6 +35,14 @@ struct MeshCheck {
 // `crossings`: the count of crossing_pairs() when the caller has it
 // already (untangle() ends with one), so the search is not run twice.
 MeshCheck check_mesh(const TriMesh& mesh, double voxel, const std::size_t* crossings = nullptr);
+// Per vertex, its corners in one flat array: in each of its triangles, the
+// vertex after it and the one after that (counter-clockwise), and the triangle.
+struct MeshCorners {
+  std::vector<std::uint32_t> start;  // vertex -> its first corner; start[v + 1] ends them
+  std::vector<std::uint32_t> next, prev, tri;
+};
+MeshCorners corners_of(const TriMesh& mesh);
+
 // The pairs of triangles, not neighbours, that cross (each pair once).
 std::vector<std::pair<std::uint32_t, std::uint32_t>> crossing_pairs(const TriMesh& mesh, double voxel);
 

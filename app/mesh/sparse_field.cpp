@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
 
 namespace ms {
 
 namespace {
-
-constexpr int kCorners = (kBrick + 1) * (kBrick + 1) * (kBrick + 1);
 
 glm::ivec3 brick_of(const glm::ivec3& c) {
   return {c.x >= 0 ? c.x / kBrick : -1, c.y >= 0 ? c.y / kBrick : -1, c.z >= 0 ? c.z / kBrick : -1};
@@ -21,51 +20,42 @@ bool may_hold(float d, int side, const SparseOptions& o, double voxel) {
   return std::abs(d) <= (o.lipschitz * (r + 1e-3) + o.band) * voxel;
 }
 
-// The cells of sign change on a brick's faces whose neighbours across
-// them were skipped: a field that breaks its Lipschitz bound, or rounding.
-// Returns the missing bricks' coordinates.
+// Whether a sign change inside brick values `v` reaches the part of its
+// border it shares with the neighbour at offset `side` (each axis -1, 0
+// or 1): a corner there whose neighbour along an axis, in the brick,
+// has the other sign.
+bool reaches(const float* v, const glm::ivec3& side) {
+  for (int i = 0; i < kBrickCorners; ++i) {
+    const glm::ivec3 l = SparseField::corner_at(i);
+    bool on = true;
+    for (int a = 0; a < 3; ++a) on = on && (side[a] == 0 || l[a] == (side[a] < 0 ? 0 : kBrick));
+    if (!on) continue;
+    for (int a = 0; a < 3; ++a)
+      for (int o = -1; o <= 1; o += 2) {
+        glm::ivec3 m = l;
+        m[a] += o;
+        if (m[a] >= 0 && m[a] <= kBrick && (v[SparseField::corner_index(m)] < 0.0f) != (v[i] < 0.0f)) return true;
+      }
+  }
+  return false;
+}
+
+// The skipped bricks a sign change of the bricks from `from` on reaches
+// (a field that breaks its Lipschitz bound, or rounding): their coordinates.
 std::vector<glm::ivec3> missing_neighbours(const SparseField& f, std::size_t from) {
   std::vector<glm::ivec3> out;
-  std::unordered_map<std::uint64_t, bool> seen;
+  std::unordered_set<std::uint64_t> seen;
   const glm::ivec3 nb = f.grid.cells / kBrick;
   for (std::size_t s = from; s < f.bricks.size(); ++s) {
-    const float* v = &f.values[s * kCorners];
-    bool neg = false, pos = false;
-    for (int i = 0; i < kCorners; ++i) (v[i] < 0.0f ? neg : pos) = true;
-    if (!neg || !pos) continue;
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const glm::ivec3 b = f.bricks[s] + glm::ivec3(dx, dy, dz);
-          if (b.x < 0 || b.y < 0 || b.z < 0 || b.x >= nb.x || b.y >= nb.y || b.z >= nb.z) continue;
-          const std::uint64_t k = SparseField::key(b);
-          if (f.index.count(k) || seen.count(k)) continue;
-          // Only a neighbour sharing a face, edge or corner that changes sign.
-          bool near = false;
-          for (int z = 0; z <= kBrick && !near; ++z)
-            for (int y = 0; y <= kBrick && !near; ++y)
-              for (int x = 0; x <= kBrick && !near; ++x) {
-                const glm::ivec3 l(x, y, z);
-                const glm::ivec3 side = glm::ivec3(dx, dy, dz);
-                bool on = true;
-                for (int a = 0; a < 3; ++a)
-                  on = on && (side[a] == 0 || (side[a] < 0 ? l[a] == 0 : l[a] == kBrick));
-                if (!on) continue;
-                const float c = v[(z * (kBrick + 1) + y) * (kBrick + 1) + x];
-                // A face corner next to a sign change inside this brick.
-                for (int a = 0; a < 3 && !near; ++a)
-                  for (int o = -1; o <= 1 && !near; o += 2) {
-                    glm::ivec3 m = l;
-                    m[a] += o;
-                    if (m[a] < 0 || m[a] > kBrick) continue;
-                    near = (v[(m.z * (kBrick + 1) + m.y) * (kBrick + 1) + m.x] < 0.0f) != (c < 0.0f);
-                  }
-              }
-          if (near) {
-            seen[k] = true;
-            out.push_back(b);
-          }
-        }
+    if (!f.changes_sign(s)) continue;
+    for (int d = 0; d < 27; ++d) {
+      const glm::ivec3 side(d % 3 - 1, (d / 3) % 3 - 1, d / 9 - 1), b = f.bricks[s] + side;
+      if (b.x < 0 || b.y < 0 || b.z < 0 || b.x >= nb.x || b.y >= nb.y || b.z >= nb.z) continue;
+      const std::uint64_t k = SparseField::key(b);
+      if (f.index.count(k) || seen.count(k) || !reaches(f.brick_values(s), side)) continue;
+      seen.insert(k);
+      out.push_back(b);
+    }
   }
   return out;
 }
@@ -98,9 +88,23 @@ int SparseField::slot_of_cell(const glm::ivec3& c) const {
   return it == index.end() ? -1 : static_cast<int>(it->second);
 }
 
-float SparseField::at(int slot, const glm::ivec3& v) const {
-  const glm::ivec3 l = v - bricks[static_cast<std::size_t>(slot)] * kBrick;
-  return values[static_cast<std::size_t>(slot) * kCorners + (l.z * (kBrick + 1) + l.y) * (kBrick + 1) + l.x];
+bool SparseField::changes_sign(std::size_t slot) const {
+  const float* v = brick_values(slot);
+  bool neg = false, pos = false;
+  for (int i = 0; i < kBrickCorners && !(neg && pos); ++i) (v[i] < 0.0f ? neg : pos) = true;
+  return neg && pos;
+}
+
+long SparseField::cell_index(const glm::ivec3& c) const {
+  const int slot = slot_of_cell(c);
+  if (slot < 0) return -1;
+  const glm::ivec3 l = c - bricks[static_cast<std::size_t>(slot)] * kBrick;
+  return static_cast<long>(slot) * kBrickCells + (l.z * kBrick + l.y) * kBrick + l.x;
+}
+
+glm::ivec3 SparseField::cell_at(std::size_t index) const {
+  const int l = static_cast<int>(index % kBrickCells);
+  return bricks[index / kBrickCells] * kBrick + glm::ivec3(l % kBrick, (l / kBrick) % kBrick, l / (kBrick * kBrick));
 }
 
 MeshGrid mesh_grid(const glm::dvec3& lo, const glm::dvec3& hi, int resolution, double voxel) {
@@ -129,7 +133,6 @@ SparseField sample_sparse(FieldSource& source, const MeshGrid& grid, const Spars
   for (int level = 0;; ++level) {
     if (opts.progress) opts.progress("sampling", 0.05 * level / 8.0);
     const std::vector<float> d = source.cells(cubes);
-    f.cube_tests += cubes.size();
     std::vector<glm::ivec4> next;
     for (std::size_t i = 0; i < cubes.size(); ++i) {
       const glm::ivec4 c = cubes[i];

@@ -18,6 +18,8 @@
 namespace ms {
 
 constexpr int kBrick = 4;  // cells along a brick's side
+constexpr int kBrickCells = kBrick * kBrick * kBrick;
+constexpr int kBrickCorners = (kBrick + 1) * (kBrick + 1) * (kBrick + 1);
 
 struct MeshGrid {
   glm::dvec3 origin{0.0};  // world position of voxel (0, 0, 0)
@@ -44,14 +46,26 @@ struct SparseField {
   // millions of times, and an array is many times quicker than a hash.
   std::vector<std::int32_t> dense;
   std::vector<glm::ivec3> bricks;                          // slot -> brick coordinate
-  std::vector<float> values;                               // slot * (kBrick+1)^3 + corner
-  std::uint64_t cube_tests = 0;                            // coarse cubes evaluated
+  std::vector<float> values;                               // slot * kBrickCorners + corner_index()
 
   static std::uint64_t key(const glm::ivec3& brick);
+  // Corner l of a brick (0..kBrick on each axis): its offset in the
+  // brick's values, x fastest; corner_at() is the inverse.
+  static int corner_index(const glm::ivec3& l) { return (l.z * (kBrick + 1) + l.y) * (kBrick + 1) + l.x; }
+  static glm::ivec3 corner_at(int i) {
+    constexpr int n = kBrick + 1;
+    return {i % n, (i / n) % n, i / (n * n)};
+  }
+  const float* brick_values(std::size_t slot) const { return &values[slot * kBrickCorners]; }
+  // Whether the brick's corners differ in sign: only such a brick holds surface.
+  bool changes_sign(std::size_t slot) const;
   // The slot of the brick holding cell `c`, or -1 when it was skipped.
   int slot_of_cell(const glm::ivec3& c) const;
-  // Voxel `v` read from brick `slot` (v inside its closed range).
-  float at(int slot, const glm::ivec3& v) const;
+  // Cell `c` among every sampled cell (slot * kBrickCells + its place in
+  // the brick, x fastest), or -1 when its brick was skipped; cell_at() is
+  // the inverse. The meshing passes keep their per-cell tables so.
+  long cell_index(const glm::ivec3& c) const;
+  glm::ivec3 cell_at(std::size_t index) const;
 };
 
 constexpr std::size_t kDenseBricks = std::size_t{1} << 26;

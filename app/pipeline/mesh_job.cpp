@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <string>
+#include <utility>
 
 #include "core/deadline.h"
 #include "core/error.h"
@@ -66,20 +69,19 @@ LevelSetBand band_of(const SparseField& f, const Scene& scene, int band) {
   b.voxel = f.grid.voxel;
   b.origin = f.grid.origin;
   b.band = static_cast<float>(band * f.grid.voxel);
-  const int n = kBrick + 1;
   for (std::size_t s = 0; s < f.bricks.size(); ++s)
-    for (int i = 0; i < n * n * n; ++i) {
-      const float v = f.values[s * n * n * n + static_cast<std::size_t>(i)];
+    for (int i = 0; i < kBrickCorners; ++i) {
+      const float v = f.brick_values(s)[i];
       if (std::abs(v) >= b.band) continue;
-      b.ijk.push_back(f.bricks[s] * kBrick + glm::ivec3(i % n, (i / n) % n, i / (n * n)));
+      b.ijk.push_back(f.bricks[s] * kBrick + SparseField::corner_at(i));
       b.value.push_back(v);
     }
   return b;
 }
 
-// The sparse field meshed, checked and measured, into r; then written.
-void export_mesh(FieldSampler& sampler, const SparseField& sparse, const Scene& scene, const MeshJob& job,
-                 const MeshProgress& progress, MeshReport& r) {
+// The sparse field meshed, checked and measured, into r.
+TriMesh mesh_of(FieldSampler& sampler, const SparseField& sparse, const Scene& scene, const MeshJob& job,
+                const MeshProgress& progress, MeshReport& r) {
   const auto m = std::chrono::steady_clock::now();
   DualContour dc = dual_contour(sampler, sparse, progress);
   if (dc.mesh.positions.empty())
@@ -96,26 +98,8 @@ void export_mesh(FieldSampler& sampler, const SparseField& sparse, const Scene& 
   r.triangles = dc.mesh.triangles();
   r.surface_cells = dc.cells;
   r.split_cells = dc.split_cells;
-  r.missing = dc.missing;
   r.untangled = dc.untangled;
-  r.samples = sampler.evaluations();
-  r.readback_bytes = sampler.readback_bytes();
-  if (progress) progress("writing", 0.9);
-  const auto w = std::chrono::steady_clock::now();
-  write_mesh(dc.mesh, materials_of(scene), job.output);
-  r.write_s = since(w);
-}
-
-void export_level_set(const FieldSampler& sampler, const SparseField& sparse, const Scene& scene, const MeshJob& job,
-                      const MeshProgress& progress, MeshReport& r) {
-  const LevelSetBand band = band_of(sparse, scene, job.band);
-  r.band_voxels = band.ijk.size();
-  r.samples = sampler.evaluations();
-  r.readback_bytes = sampler.readback_bytes();
-  if (progress) progress("writing", 0.9);
-  const auto w = std::chrono::steady_clock::now();
-  write_level_set(band, job.output);
-  r.write_s = since(w);
+  return std::move(dc.mesh);
 }
 
 // Everything that can fail on bad input, before any GL: the format, the
@@ -139,6 +123,16 @@ const LoadedInput& checked_input(const MeshJob& job, LoadedInput& in, MeshReport
 
 MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgress& progress) {
   const auto start = std::chrono::steady_clock::now();
+  // From here on the export has job.frame.timeout seconds: checked between
+  // stages, and a watchdog ends the process if a dispatch never returns.
+  const std::string what = job.frame.label.empty() ? "the mesh export" : job.frame.label;
+  const Deadline deadline = Deadline::after(job.frame.timeout);
+  std::optional<Watchdog> watchdog;
+  if (deadline.limited()) watchdog.emplace().arm(deadline, what);
+  const MeshProgress step = [&](const char* stage, double fraction) {
+    deadline.check(what);
+    if (progress) progress(stage, fraction);
+  };
   MeshReport r;
   LoadedInput in;
   const Scene& scene = checked_input(job, in, r).scene;
@@ -176,12 +170,27 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   SparseOptions so;
   so.lipschitz = std::max(scene.quality.lipschitz, 1e-3f);
   so.band = r.format == MeshFormat::vdb ? static_cast<float>(job.band) : 0.0f;
-  so.progress = progress;
+  so.progress = step;
   const SparseField sparse = sample_sparse(sampler, grid, so);
   r.bricks = sparse.bricks.size();
   r.sample_s = since(start);
-  if (r.format == MeshFormat::vdb) export_level_set(sampler, sparse, scene, job, progress, r);
-  else export_mesh(sampler, sparse, scene, job, progress, r);
+  std::optional<LevelSetBand> band;
+  std::optional<TriMesh> mesh;
+  if (r.format == MeshFormat::vdb) {
+    band = band_of(sparse, scene, job.band);
+    r.band_voxels = band->ijk.size();
+  } else {
+    mesh = mesh_of(sampler, sparse, scene, job, step, r);
+  }
+  r.samples = sampler.evaluations();
+  r.readback_bytes = sampler.readback_bytes();
+  step("writing", 0.9);
+  // The write is atomic, and not cut short by the watchdog: no temporary is left.
+  if (watchdog) watchdog->disarm();
+  const auto w = std::chrono::steady_clock::now();
+  if (band) write_level_set(*band, job.output);
+  else write_mesh(*mesh, materials_of(scene), job.output);
+  r.write_s = since(w);
   r.seconds = since(start);
   return r;
 }

@@ -44,7 +44,7 @@ struct MeshReport {
   glm::ivec3 cells{0};
   double voxel = 0.0;
   std::size_t bricks = 0, samples = 0, readback_bytes = 0;
-  std::size_t vertices = 0, triangles = 0, surface_cells = 0, split_cells = 0, missing = 0, untangled = 0;
+  std::size_t vertices = 0, triangles = 0, surface_cells = 0, split_cells = 0, untangled = 0;
   std::size_t band_voxels = 0;     // a level set's voxels
   MeshCheck check;
   MeshAccuracy accuracy;
@@ -53,7 +53,10 @@ struct MeshReport {
 };
 
 // Throws bad_input for a scene without a field, no box, an output of
-// another extension; system for GL and write failures (no file left).
+// another extension; system for GL and write failures (no file left), and
+// past job.frame.timeout (a watchdog too, for a dispatch that never
+// returns), naming the job by its frame.label or "the mesh export".
+// `progress`, when given, hears each stage after the deadline is checked.
 MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgress& progress = {});
 
 std::string mesh_report_json(const MeshReport& r);   // one object, schema marchstudio.mesh/1

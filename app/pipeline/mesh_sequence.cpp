@@ -7,7 +7,6 @@
 #include <utility>
 #include <vector>
 
-#include "core/deadline.h"
 #include "core/error.h"
 #include "core/hash.h"
 #include "core/version.h"
@@ -65,7 +64,7 @@ Scan scan_frames(const MeshSequenceJob& job, const std::string& job_fp) {
 }
 
 // Frame f meshed and written, under its own --timeout (as each frame of a
-// render sequence has), then stamped.
+// render sequence has: mesh_scene() keeps it), then stamped.
 MeshReport mesh_frame(const MeshSequenceJob& job, FrameSession& session, int f, const std::string& job_fp) {
   MeshJob m = job.mesh;
   m.output = job.pattern.path(f);
@@ -73,22 +72,14 @@ MeshReport mesh_frame(const MeshSequenceJob& job, FrameSession& session, int f, 
   m.frame.time = time;
   // The old stamp goes first: a run killed between the new file and its
   // stamp leaves a file no stamp vouches for, which the next run redoes.
+  m.frame.label = "frame " + std::to_string(f);  // names it in a --timeout's error
   remove_stamp(m.output);
-  const MeshReport r = mesh_scene_timed(m, session, "frame " + std::to_string(f));
+  const MeshReport r = mesh_scene(m, session);
   write_stamp(m.output, frame_parts(m.output), frame_fingerprint(job_fp, f, time));
   return r;
 }
 
 }  // namespace
-
-MeshReport mesh_scene_timed(const MeshJob& job, FrameSession& session, const std::string& what) {
-  const Deadline deadline = Deadline::after(job.frame.timeout);
-  std::optional<Watchdog> watchdog;
-  if (deadline.limited()) watchdog.emplace().arm(deadline, what);
-  MeshReport r = mesh_scene(job, session, [&deadline, &what](const char*, double) { deadline.check(what); });
-  if (watchdog) watchdog->disarm();
-  return r;
-}
 
 std::string mesh_job_fingerprint(const MeshJob& job) {
   const FrameJob& fj = job.frame;

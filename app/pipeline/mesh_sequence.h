@@ -40,11 +40,6 @@ struct MeshSequenceReport {
 // number and time (frame_fingerprint()).
 std::string mesh_job_fingerprint(const MeshJob& job);
 
-// One mesh under job.frame.timeout (a watchdog, and the deadline checked
-// between stages), `what` naming it in the timeout's error: a sequence's
-// frame, a batch's mesh line (cli/batch.cpp).
-MeshReport mesh_scene_timed(const MeshJob& job, FrameSession& session, const std::string& what);
-
 // Bad input (the pattern's format, the scene) throws before any file is
 // touched; a failed write throws system with no partial file, the frames
 // before it kept and stamped. Progress on stderr (pipeline/progress.h): a
