@@ -8,7 +8,6 @@
 #include <glm/geometric.hpp>
 
 #include "render/graph_field_cache.h"
-#include "shader/graph_interp_detail.h"
 
 namespace ms {
 
@@ -64,7 +63,7 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
   }
   mean_list_ = inner > 0 ? sum / static_cast<double>(inner) : 0.0;
   if (!from_cache_ && build_ms_ >= prune_cache_ms())
-    cache.save(kept, bytes, (b.program.size() + coarse * graph_detail::kCoarseList) * sizeof(std::uint32_t));
+    cache.save(kept, bytes, pool_base(plan, b) * sizeof(std::uint32_t));
 }
 
 void GraphField::run_pass(const Program& prune) {

@@ -57,9 +57,13 @@ std::size_t cell_count(const GraphEvalPlan& plan) {
   return n;
 }
 
+std::size_t pool_base(const GraphEvalPlan& plan, const GraphBuffers& b) {
+  return b.program.size() + coarse_cell_count(plan) * kCoarseList;
+}
+
 std::size_t program_capacity(const GraphEvalPlan& plan, const GraphBuffers& b) {
   if (!plan.pruned()) return b.program.size();
-  return b.program.size() + coarse_cell_count(plan) * kCoarseList + plan.pool;
+  return pool_base(plan, b) + plan.pool;
 }
 
 GraphEvalPlan plan_graph_eval(const SceneGraph& g, GraphEval eval, bool prune, const GraphBox& box, float cell_size) {
@@ -111,8 +115,8 @@ GraphEvalPlan plan_graph_eval(const SceneGraph& g, GraphEval eval, bool prune, c
 
 std::vector<std::uint32_t> grid_header(const GraphEvalPlan& plan, const GraphBuffers& b) {
   std::vector<std::uint32_t> h(graph_detail::kHeader * 4, 0u);
-  const std::size_t len = b.program.size(), pool_base = len + coarse_cell_count(plan) * kCoarseList;
-  h[0] = static_cast<std::uint32_t>(pool_base);
+  const std::size_t len = b.program.size();
+  h[0] = static_cast<std::uint32_t>(pool_base(plan, b));
   h[1] = static_cast<std::uint32_t>(plan.pool);
   h[2] = static_cast<std::uint32_t>(len);
   std::size_t cells = 0, coarse = 0;

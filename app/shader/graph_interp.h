@@ -63,6 +63,9 @@ std::size_t coarse_cell_count(const GraphEvalPlan& plan);  // the pruning pass's
 // Instructions the program buffer holds: the program, the coarse cells'
 // lists, then the pool of the fine cells' lists.
 std::size_t program_capacity(const GraphEvalPlan& plan, const GraphBuffers& b);
+// Where the fine lists' pool starts in the program buffer, in words: after
+// the program and the coarse cells' lists (a pruned plan's).
+std::size_t pool_base(const GraphEvalPlan& plan, const GraphBuffers& b);
 // The cell buffer's head: the levels' geometry, where their cells and
 // lists start, and the graph's box, so that moving the graph changes
 // buffers only, never the shader. The cells follow it.
