@@ -57,6 +57,7 @@ const char* mesh_format_name(MeshFormat f);  // "obj", "ply", ...
 void write_mesh(const TriMesh& mesh, const std::vector<MeshMaterial>& materials,
                 const std::filesystem::path& file);
 // An OpenVDB FloatGrid of class level set, named, with its transform.
-void write_level_set(const LevelSetBand& band, const std::filesystem::path& file);
+// Returns the written grid's active voxels (a voxel listed twice is one).
+std::uint64_t write_level_set(const LevelSetBand& band, const std::filesystem::path& file);
 
 }  // namespace ms

@@ -178,7 +178,6 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   std::optional<TriMesh> mesh;
   if (r.format == MeshFormat::vdb) {
     band = band_of(sparse, scene, job.band);
-    r.band_voxels = band->ijk.size();
   } else {
     mesh = mesh_of(sampler, sparse, scene, job, step, r);
   }
@@ -188,7 +187,7 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   // The write is atomic, and not cut short by the watchdog: no temporary is left.
   if (watchdog) watchdog->disarm();
   const auto w = std::chrono::steady_clock::now();
-  if (band) write_level_set(*band, job.output);
+  if (band) r.band_voxels = write_level_set(*band, job.output);
   else write_mesh(*mesh, materials_of(scene), job.output);
   r.write_s = since(w);
   r.seconds = since(start);
