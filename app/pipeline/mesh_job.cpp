@@ -15,6 +15,7 @@
 #include "mesh/dual_contour.h"
 #include "mesh/sparse_field.h"
 #include "mesh/untangle.h"
+#include "mesh/vertex_normals.h"
 #include "pipeline/input.h"
 #include "render/field_sampler.h"
 #include "render/graph_field.h"
@@ -88,6 +89,7 @@ TriMesh mesh_of(FieldSampler& sampler, const SparseField& sparse, const Scene& s
     fail_input("no surface inside the box: map() is positive (or negative) everywhere there", scene.file.string(),
                0, job.bounds ? "--bounds" : "bounds");
   const std::size_t crossings = untangle(dc, sparse.grid);
+  vertex_normals(sampler, dc);
   r.accuracy = measure_accuracy(sampler, dc, sparse.grid.voxel);
   r.mesh_s = since(m);
   if (progress) progress("checking", 0.8);
