@@ -280,7 +280,7 @@ def check_seed(verts, h, tol):
 
 
 def write_ply(path, verts, faces):
-    """Binary PLY as `marchstudio mesh` writes it, material 0 throughout."""
+    """Binary PLY in the layout `marchstudio mesh` writes, less its normals, material 0 throughout."""
     v = np.zeros(len(verts), dtype=[("p", "<f4", 3), ("m", "<u2")])
     v["p"] = verts
     f = np.zeros(len(faces), dtype=[("n", "u1"), ("i", "<u4", 3)])

@@ -3,9 +3,10 @@
 //   mesh-shot MESH.ply -o out.png [--size 640x360] --eye x,y,z --target x,y,z
 //             [--up x,y,z] [--fov 45] [--scene SCENE.toml] [--wire]
 //
-// Reads the binary PLY `marchstudio mesh` writes (float x, y, z, ushort
-// material; faces as list uchar uint): anything else is one line and exit 2.
-// Faces are flat (normals from a geometry shader), lit by a key light fixed
+// Reads the binary PLY `marchstudio mesh` writes (float x, y, z, optional
+// float nx, ny, nz, ushort material; faces as list uchar uint): anything
+// else is one line and exit 2. Faces are flat (normals from a geometry
+// shader, the file's are skipped: the picture shows the facets), lit by a key light fixed
 // to the camera plus ambient, coloured by material id; --wire draws their
 // edges. 4x MSAA, resolved before the read-back. --scene takes the camera
 // from the scene's [camera].
@@ -48,8 +49,13 @@ struct Options {
   bool eye = false, target = false, wire = false;
 };
 
-// The header, up to end_header: the exporter's layout (material optional).
-bool read_ply_header(std::istream& in, const std::string& path, std::size_t& nv, std::size_t& nf) {
+struct PlyLayout {
+  std::size_t stride = 12;  // bytes per vertex
+  bool material = false;    // a ushort at stride - 2
+};
+
+// The header, up to end_header: the exporter's layout (normals and material optional).
+PlyLayout read_ply_header(std::istream& in, const std::string& path, std::size_t& nv, std::size_t& nf) {
   std::string line, element;
   std::vector<std::string> props;
   if (!std::getline(in, line) || line != "ply") fail_input("not a PLY file", path);
@@ -75,19 +81,27 @@ bool read_ply_header(std::istream& in, const std::string& path, std::size_t& nv,
     }
   }
   if (line != "end_header") fail_input("the PLY header has no end_header", path);
-  const std::vector<std::string> xyz = {"property float x", "property float y", "property float z"};
-  const bool has_mat = props.size() == 4 && props[3] == "property ushort material";
-  if (!(props == xyz || (has_mat && std::equal(xyz.begin(), xyz.end(), props.begin()))))
-    fail_input("vertices must be float x, y, z and optionally ushort material", path);
-  return has_mat;
+  std::vector<std::string> want = {"property float x", "property float y", "property float z"};
+  PlyLayout l;
+  if (props.size() >= 6 && props[3] == "property float nx") {
+    want.insert(want.end(), {"property float nx", "property float ny", "property float nz"});
+    l.stride += 12;
+  }
+  l.material = props.size() == want.size() + 1 && props.back() == "property ushort material";
+  if (l.material) {
+    want.push_back(props.back());
+    l.stride += 2;
+  }
+  if (props != want) fail_input("vertices must be float x, y, z, optionally nx, ny, nz and ushort material", path);
+  return l;
 }
 
 Mesh read_ply(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail_input("cannot open the mesh", path);
   std::size_t nv = 0, nf = 0;
-  const bool has_mat = read_ply_header(in, path, nv, nf);
-  const std::size_t stride = has_mat ? 14 : 12;
+  const PlyLayout layout = read_ply_header(in, path, nv, nf);
+  const std::size_t stride = layout.stride;
   std::vector<char> raw(nv * stride);
   in.read(raw.data(), static_cast<std::streamsize>(raw.size()));
   Mesh m;
@@ -95,7 +109,7 @@ Mesh read_ply(const std::string& path) {
   m.material.resize(nv, 0);
   for (std::size_t i = 0; i < nv; ++i) {
     std::memcpy(&m.xyz[i * 3], &raw[i * stride], 12);
-    if (has_mat) std::memcpy(&m.material[i], &raw[i * stride + 12], 2);
+    if (layout.material) std::memcpy(&m.material[i], &raw[i * stride + stride - 2], 2);
   }
   raw.resize(nf * 13);
   in.read(raw.data(), static_cast<std::streamsize>(raw.size()));

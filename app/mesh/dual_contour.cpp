@@ -16,6 +16,9 @@ namespace {
 constexpr int kB = kBrick;
 // How far (in voxels) a projected vertex may leave its cell.
 constexpr double kCellMargin = 0.1;
+// A QEF's eigenvalues below this fraction of the largest are dropped: a
+// crease is kept where its planes meet at more than about 11 degrees.
+constexpr double kFeatureCutoff = 0.01;
 
 int corner_local(const glm::ivec3& l) { return SparseField::corner_index(l); }
 glm::ivec3 unit(int axis) { return glm::ivec3(axis == 0, axis == 1, axis == 2); }
@@ -110,12 +113,15 @@ void cell_vertices(const SparseField& f, const Edges& e, const glm::ivec3& cell,
     }
     // A cell with several patches: each vertex at its own crossings' mean,
     // where the patches stay apart (their QEF points may cross).
-    QefSolution s = q.solve(p.count > 1 ? 2.0 : 0.01);
+    QefSolution s = q.solve(p.count > 1 ? 2.0 : kFeatureCutoff);
+    // The planes meet in a line or a point: the normals are split there.
+    const int rank = p.count > 1 ? q.solve(kFeatureCutoff).rank : s.rank;
     if (!(std::isfinite(s.point.x) && std::isfinite(s.point.y) && std::isfinite(s.point.z))) s.point = glm::dvec3(0.5);
     s.point = glm::clamp(s.point, glm::dvec3(0.0), glm::dvec3(1.0));
     const std::size_t v = at + static_cast<std::size_t>(k);
     dc.mesh.positions[v] = glm::vec3(f.grid.origin + (glm::dvec3(cell) + s.point) * f.grid.voxel);
     dc.cell[v] = cell;
+    dc.crease[v] = rank >= 2;
     dc.mass[v] = glm::vec3(f.grid.origin + (glm::dvec3(cell) + glm::clamp(s.mass, glm::dvec3(0.0), glm::dvec3(1.0))) *
                                                f.grid.voxel);
   }
@@ -186,6 +192,7 @@ Vertices place_vertices(const SparseField& f, const Edges& e, DualContour& dc) {
   }
   dc.mesh.positions.resize(n);
   dc.cell.resize(n);
+  dc.crease.resize(n);
   dc.mass.resize(n);
   std::size_t missing[2] = {0, 0};
   auto solve = [&](std::size_t part) {

@@ -24,6 +24,7 @@ namespace ms {
 struct DualContour {
   TriMesh mesh;
   std::vector<glm::ivec3> cell;        // per vertex: its cell's first voxel
+  std::vector<std::uint8_t> crease;    // per vertex: its QEF has rank 2 or 3 (on a crease or corner)
   std::vector<glm::vec3> mass;         // per vertex: its crossings' mean, world units
   std::vector<glm::vec3> crossings;    // every edge's root, world units
   std::vector<std::uint32_t> crossing_quad;  // per crossing: its first triangle (-1 if no quad)

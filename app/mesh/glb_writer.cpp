@@ -3,7 +3,8 @@
 // (start-up, and tools/gpu's lean bench, which links pipeline/ and so
 // mesh/, carries none); the tests read what this writes with tinygltf's
 // loader. One mesh, one primitive per material group, all sharing the
-// POSITION and _MATERIAL accessors.
+// POSITION, NORMAL and _MATERIAL accessors (a vertex with several normals
+// written once per normal: glTF has one per vertex, and unit length).
 //
 // _MATERIAL is FLOAT SCALAR, not UNSIGNED_SHORT: glTF allows any type on
 // an application-specific ("_") attribute, but importers (Blender's among
@@ -35,16 +36,18 @@ json position_accessor(const TriMesh& mesh) {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
-  return {{"bufferView", 0}, {"componentType", kFloat}, {"count", mesh.positions.size()}, {"type", "VEC3"},
-          {"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}};
+  return {{"bufferView", 0}, {"componentType", kFloat}, {"type", "VEC3"}, {"min", {lo.x, lo.y, lo.z}},
+          {"max", {hi.x, hi.y, hi.z}}};
 }
 
-// The JSON chunk and the BIN chunk's bytes: positions, material ids, indices.
-json gltf_document(const TriMesh& mesh, const std::vector<MeshMaterial>& materials, const MaterialGroups& g,
-                   std::size_t& bin_size) {
-  const std::size_t nv = mesh.positions.size(), ni = mesh.indices.size();
-  const std::size_t pos_bytes = 12 * nv, mat_bytes = 4 * nv, idx_bytes = 4 * ni;
-  bin_size = pos_bytes + mat_bytes + idx_bytes;
+// The JSON chunk, and the BIN chunk's size: positions, normals, material
+// ids, indices, each of the vertices `sv` writes.
+json gltf_document(const TriMesh& mesh, const SplitVertices& sv, const std::vector<MeshMaterial>& materials,
+                   const MaterialGroups& g, std::size_t& bin_size) {
+  const std::size_t nv = sv.position.size(), ni = mesh.indices.size();
+  const std::size_t pos_bytes = 12 * nv, nrm_bytes = sv.normal.empty() ? 0 : 12 * nv, mat_bytes = 4 * nv,
+                    idx_bytes = 4 * ni;
+  bin_size = pos_bytes + nrm_bytes + mat_bytes + idx_bytes;
   json doc = {{"asset", {{"version", "2.0"}, {"generator", std::string("marchstudio ") + kVersion}}},
               {"scene", 0}};
   if (ni == 0) {  // an accessor may not be empty: no mesh at all
@@ -55,14 +58,24 @@ json gltf_document(const TriMesh& mesh, const std::vector<MeshMaterial>& materia
   doc["scenes"] = json::array({{{"nodes", {0}}}});
   doc["nodes"] = json::array({{{"mesh", 0}}});
   doc["buffers"] = json::array({{{"byteLength", bin_size}}});
-  doc["bufferViews"] = json::array({
-      {{"buffer", 0}, {"byteOffset", 0}, {"byteLength", pos_bytes}, {"byteStride", 12}, {"target", kArrayBuffer}},
-      {{"buffer", 0}, {"byteOffset", pos_bytes}, {"byteLength", mat_bytes}, {"target", kArrayBuffer}},
-      {{"buffer", 0}, {"byteOffset", pos_bytes + mat_bytes}, {"byteLength", idx_bytes},
-       {"target", kElementArrayBuffer}},
-  });
-  json accessors = json::array({position_accessor(mesh),
-                                {{"bufferView", 1}, {"componentType", kFloat}, {"count", nv}, {"type", "SCALAR"}}});
+  json views = json::array(), accessors = json::array(), attributes = json::object();
+  std::size_t offset = 0;
+  // One view per attribute, in the BIN chunk's order, and its accessor.
+  const auto attribute = [&](const char* name, std::size_t bytes, json accessor) {
+    json view = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}, {"target", kArrayBuffer}};
+    if (accessor["type"] == "VEC3") view["byteStride"] = 12;
+    accessor["bufferView"] = views.size();
+    accessor["count"] = nv;
+    attributes[name] = accessors.size();
+    views.push_back(std::move(view));
+    accessors.push_back(std::move(accessor));
+    offset += bytes;
+  };
+  attribute("POSITION", pos_bytes, position_accessor(mesh));
+  if (nrm_bytes) attribute("NORMAL", nrm_bytes, {{"componentType", kFloat}, {"type", "VEC3"}});
+  attribute("_MATERIAL", mat_bytes, {{"componentType", kFloat}, {"type", "SCALAR"}});
+  const std::size_t index_view = views.size();
+  views.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", idx_bytes}, {"target", kElementArrayBuffer}});
   json primitives = json::array(), mats = json::array();
   const std::vector<std::string> names = group_names(g, materials);
   for (std::size_t i = 0; i < g.groups.size(); ++i) {
@@ -71,11 +84,12 @@ json gltf_document(const TriMesh& mesh, const std::vector<MeshMaterial>& materia
                     {"pbrMetallicRoughness",
                      {{"baseColorFactor", {c.r, c.g, c.b, 1.0f}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}},
                     {"extras", {{"marchstudio_material", g.groups[i].id}}}});
-    accessors.push_back({{"bufferView", 2}, {"byteOffset", 12 * g.groups[i].first}, {"componentType", kUint},
+    accessors.push_back({{"bufferView", index_view}, {"byteOffset", 12 * g.groups[i].first}, {"componentType", kUint},
                          {"count", 3 * g.groups[i].count}, {"type", "SCALAR"}});
-    primitives.push_back({{"attributes", {{"POSITION", 0}, {"_MATERIAL", 1}}},
-                          {"indices", accessors.size() - 1}, {"material", i}, {"mode", kTriangles}});
+    primitives.push_back({{"attributes", attributes}, {"indices", accessors.size() - 1}, {"material", i},
+                          {"mode", kTriangles}});
   }
+  doc["bufferViews"] = std::move(views);
   doc["accessors"] = std::move(accessors);
   doc["materials"] = std::move(mats);
   doc["meshes"] = json::array({{{"primitives", std::move(primitives)}}});
@@ -86,9 +100,10 @@ json gltf_document(const TriMesh& mesh, const std::vector<MeshMaterial>& materia
 
 void write_glb(const TriMesh& mesh, const std::vector<MeshMaterial>& materials, const fs::path& file) {
   const MaterialGroups g = group_by_material(mesh);
+  const SplitVertices sv = split_by_normal(mesh);
   BufferedFile out(file);
   std::size_t bin_size = 0;
-  std::string text = gltf_document(mesh, materials, g, bin_size).dump();
+  std::string text = gltf_document(mesh, sv, materials, g, bin_size).dump();
   text.resize((text.size() + 3) / 4 * 4, ' ');  // chunks are 4-byte aligned; JSON pads with spaces
   const std::uint64_t total = 12 + 8 + text.size() + (bin_size ? 8 + bin_size : 0);
   if (total > std::numeric_limits<std::uint32_t>::max())
@@ -102,14 +117,20 @@ void write_glb(const TriMesh& mesh, const std::vector<MeshMaterial>& materials, 
   if (bin_size) {
     out.put_u32(static_cast<std::uint32_t>(bin_size));  // every part a multiple of 4: no padding
     out.put("BIN\0", 4);
-    for (const glm::vec3& p : mesh.positions) {
-      for (int c = 0; c < 3; ++c) out.put_f32(p[c]);
+    for (std::uint32_t p : sv.position) {
+      for (int c = 0; c < 3; ++c) out.put_f32(mesh.positions[p][c]);
       out.flush_if_full();
     }
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v)
-      out.put_f32(mesh.material.empty() ? 0.0f : static_cast<float>(mesh.material[v]));
+    for (std::uint32_t n : sv.normal) {
+      for (int c = 0; c < 3; ++c) out.put_f32(mesh.normals[n][c]);
+      out.flush_if_full();
+    }
+    for (std::uint32_t p : sv.position) {
+      out.put_f32(mesh.material.empty() ? 0.0f : static_cast<float>(mesh.material[p]));
+      out.flush_if_full();
+    }
     for (std::uint32_t t : g.order) {
-      for (int c = 0; c < 3; ++c) out.put_u32(mesh.indices[3 * t + c]);
+      for (int c = 0; c < 3; ++c) out.put_u32(sv.indices[3 * t + c]);
       out.flush_if_full();
     }
   }

@@ -55,7 +55,7 @@ void append_bytes(void* user, const char* data, std::uint64_t n) {
 
 }  // namespace
 
-void write_level_set(const LevelSetBand& band, const fs::path& file) {
+std::uint64_t write_level_set(const LevelSetBand& band, const fs::path& file) {
   check_band(band, file);
   const VdbModule& m = vdb_module();
   if (!m.write)
@@ -70,10 +70,12 @@ void write_level_set(const LevelSetBand& band, const fs::path& file) {
                        band.value.data(),
                        band.value.size()};
   std::string bytes;
+  std::uint64_t active = 0;
   char err[512] = {};
-  if (m.write(&b, append_bytes, &bytes, err, sizeof err) != 0)
+  if (m.write(&b, append_bytes, &bytes, &active, err, sizeof err) != 0)
     fail_system(std::string("cannot make the OpenVDB grid: ") + err, file.string());
   write_file_atomic(file, bytes);
+  return active;
 }
 
 }  // namespace ms

@@ -1,5 +1,6 @@
 // What the mesh exporter hands its writers: a triangle mesh with a material
-// id per vertex, or the narrow band of a level set. Plain data, no GL.
+// id per vertex and normals per corner, or the narrow band of a level set.
+// Plain data, no GL.
 //
 //   TriMesh m = ...;                          // mesh/dual_contour.h makes one
 //   write_mesh(m, materials, "part.glb");     // the format from the extension
@@ -23,6 +24,10 @@ struct TriMesh {
   std::vector<glm::vec3> positions;
   std::vector<std::uint16_t> material;  // per vertex: the scene's material index
   std::vector<std::uint32_t> indices;   // three per triangle
+  // Unit normals, and for each corner (as `indices`) which of them: a
+  // vertex on a crease has one per side. Both empty: no normals written.
+  std::vector<glm::vec3> normals;
+  std::vector<std::uint32_t> normal_index;
   std::size_t triangles() const { return indices.size() / 3; }
 };
 
@@ -51,12 +56,16 @@ std::optional<MeshFormat> mesh_format_for(const std::filesystem::path& file);
 const char* mesh_format_name(MeshFormat f);  // "obj", "ply", ...
 
 // OBJ (text, with a .mtl beside it named after the file: `usemtl` groups by
-// the first vertex's material), PLY (binary little-endian, a `material`
-// vertex property), STL (binary), glTF 2.0 binary (.glb: a _MATERIAL vertex
-// attribute and one primitive per material). Throws bad_input for .vdb.
+// the first vertex's material; `vn` and `f v//vn`), PLY (binary
+// little-endian, nx ny nz and a `material` vertex property), STL (binary,
+// each facet's own normal), glTF 2.0 binary (.glb: NORMAL, a _MATERIAL
+// vertex attribute and one primitive per material). PLY and GLB hold one
+// normal per vertex, so a vertex with several is written once per normal.
+// Throws bad_input for .vdb.
 void write_mesh(const TriMesh& mesh, const std::vector<MeshMaterial>& materials,
                 const std::filesystem::path& file);
 // An OpenVDB FloatGrid of class level set, named, with its transform.
-void write_level_set(const LevelSetBand& band, const std::filesystem::path& file);
+// Returns the written grid's active voxels (a voxel listed twice is one).
+std::uint64_t write_level_set(const LevelSetBand& band, const std::filesystem::path& file);
 
 }  // namespace ms

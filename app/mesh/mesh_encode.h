@@ -1,6 +1,7 @@
 // What the mesh writers share (mesh_writers.cpp, glb_writer.cpp): the
-// checks on a TriMesh, its triangles grouped by material, the materials'
-// names, and a buffered writer over io/atomic_file.h. Internal to mesh/.
+// checks on a TriMesh, its vertices split where they have several normals,
+// its triangles grouped by material, the materials' names, and a buffered
+// writer over io/atomic_file.h. Internal to mesh/.
 //
 //   check_mesh(mesh, file);                     // bad_input naming the file
 //   const MaterialGroups g = group_by_material(mesh);
@@ -16,9 +17,21 @@
 
 namespace ms::mesh_detail {
 
-// Indices a whole number of triangles, each within the positions, and a
-// material per vertex or none (all material 0). Throws bad_input.
+// Indices a whole number of triangles, each within the positions, a
+// material per vertex or none (all material 0), and a normal per corner,
+// each within the normals, or none. Throws bad_input.
 void check_mesh(const TriMesh& mesh, const std::filesystem::path& file);
+
+// The vertices a format of one normal per vertex writes (PLY, GLB): vertex
+// i is position i with its first corner's normal; a position with more
+// normals is repeated after them all, once per other normal. Without
+// normals, the positions as they are.
+struct SplitVertices {
+  std::vector<std::uint32_t> position;  // per vertex written: its position
+  std::vector<std::uint32_t> normal;    // per vertex written: its normal (empty: no normals)
+  std::vector<std::uint32_t> indices;   // the triangles, over the vertices written
+};
+SplitVertices split_by_normal(const TriMesh& mesh);
 
 // A triangle's material: its first vertex's.
 std::uint16_t triangle_material(const TriMesh& mesh, std::size_t t);

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <numeric>
 #include <set>
+#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -34,6 +36,45 @@ void check_mesh(const TriMesh& mesh, const fs::path& file) {
       fail_input("mesh index " + std::to_string(i) + " is past its " + std::to_string(mesh.positions.size()) +
                      " vertices",
                  file.string());
+  if (mesh.normals.empty() && mesh.normal_index.empty()) return;
+  if (mesh.normal_index.size() != mesh.indices.size())
+    fail_input("mesh has " + std::to_string(mesh.normal_index.size()) + " normal indices for " +
+                   std::to_string(mesh.indices.size()) + " corners",
+               file.string());
+  if (mesh.normals.size() > std::numeric_limits<std::uint32_t>::max())
+    fail_input("mesh has more normals than a 32-bit index reaches", file.string());
+  for (std::uint32_t i : mesh.normal_index)
+    if (i >= mesh.normals.size())
+      fail_input("mesh normal index " + std::to_string(i) + " is past its " + std::to_string(mesh.normals.size()) +
+                     " normals",
+                 file.string());
+}
+
+SplitVertices split_by_normal(const TriMesh& mesh) {
+  SplitVertices s;
+  s.position.resize(mesh.positions.size());
+  std::iota(s.position.begin(), s.position.end(), 0u);
+  s.indices = mesh.indices;
+  if (mesh.normal_index.empty()) return s;
+  constexpr std::uint32_t kNone = 0xffffffffu;
+  s.normal.assign(mesh.positions.size(), kNone);
+  for (std::size_t c = 0; c < mesh.indices.size(); ++c)
+    if (s.normal[mesh.indices[c]] == kNone) s.normal[mesh.indices[c]] = mesh.normal_index[c];
+  // A position no triangle uses still needs a normal to write: any.
+  for (std::uint32_t& n : s.normal)
+    if (n == kNone) n = 0;
+  std::unordered_map<std::uint64_t, std::uint32_t> extra;  // position << 32 | normal -> vertex
+  for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
+    const std::uint32_t p = mesh.indices[c], n = mesh.normal_index[c];
+    if (s.normal[p] == n) continue;
+    const auto [it, added] = extra.try_emplace(std::uint64_t{p} << 32 | n, static_cast<std::uint32_t>(s.position.size()));
+    if (added) {
+      s.position.push_back(p);
+      s.normal.push_back(n);
+    }
+    s.indices[c] = it->second;
+  }
+  return s;
 }
 
 std::uint16_t triangle_material(const TriMesh& mesh, std::size_t t) {
@@ -140,7 +181,15 @@ void write_obj_text(const TriMesh& mesh, const MaterialGroups& g, const std::vec
     append_vec3(b, "v", p);
     out.flush_if_full();
   }
+  for (const glm::vec3& n : mesh.normals) {
+    append_vec3(b, "vn", n);
+    out.flush_if_full();
+  }
+  const bool normals = !mesh.normal_index.empty();
   char num[16];
+  const auto append_index = [&](std::uint32_t i) {
+    b.append(num, std::to_chars(num, num + sizeof num, std::uint64_t(i) + 1).ptr);  // 1-based
+  };
   for (std::size_t i = 0; i < g.groups.size(); ++i) {
     b += "usemtl " + names[i] + "\n";
     for (std::size_t k = 0; k < g.groups[i].count; ++k) {
@@ -148,7 +197,10 @@ void write_obj_text(const TriMesh& mesh, const MaterialGroups& g, const std::vec
       b += 'f';
       for (int c = 0; c < 3; ++c) {
         b += ' ';
-        b.append(num, std::to_chars(num, num + sizeof num, std::uint64_t(mesh.indices[3 * t + c]) + 1).ptr);
+        append_index(mesh.indices[3 * t + c]);
+        if (!normals) continue;
+        b += "//";
+        append_index(mesh.normal_index[3 * t + c]);
       }
       b += '\n';
       out.flush_if_full();
@@ -175,20 +227,26 @@ void write_obj(const TriMesh& mesh, const std::vector<MeshMaterial>& materials, 
 }
 
 void write_ply(const TriMesh& mesh, const fs::path& file) {
+  const SplitVertices sv = split_by_normal(mesh);
+  const bool normals = !sv.normal.empty();
   BufferedFile out(file);
   out.buffer() = std::string("ply\nformat binary_little_endian 1.0\ncomment marchstudio ") + kVersion +
-                 "\nelement vertex " + std::to_string(mesh.positions.size()) +
-                 "\nproperty float x\nproperty float y\nproperty float z\nproperty ushort material\n"
-                 "element face " + std::to_string(mesh.triangles()) +
+                 "\nelement vertex " + std::to_string(sv.position.size()) +
+                 "\nproperty float x\nproperty float y\nproperty float z\n" +
+                 (normals ? "property float nx\nproperty float ny\nproperty float nz\n" : "") +
+                 "property ushort material\nelement face " + std::to_string(mesh.triangles()) +
                  "\nproperty list uchar uint vertex_indices\nend_header\n";
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    for (int c = 0; c < 3; ++c) out.put_f32(mesh.positions[v][c]);
-    out.put_u16(mesh.material.empty() ? 0 : mesh.material[v]);
+  for (std::size_t v = 0; v < sv.position.size(); ++v) {
+    const std::uint32_t p = sv.position[v];
+    for (int c = 0; c < 3; ++c) out.put_f32(mesh.positions[p][c]);
+    if (normals)
+      for (int c = 0; c < 3; ++c) out.put_f32(mesh.normals[sv.normal[v]][c]);
+    out.put_u16(mesh.material.empty() ? 0 : mesh.material[p]);
     out.flush_if_full();
   }
   for (std::size_t t = 0; t < mesh.triangles(); ++t) {
     out.put_u8(3);
-    for (int c = 0; c < 3; ++c) out.put_u32(mesh.indices[3 * t + c]);
+    for (int c = 0; c < 3; ++c) out.put_u32(sv.indices[3 * t + c]);
     out.flush_if_full();
   }
   out.commit();

@@ -5,7 +5,8 @@
 //
 //   MarchVdbBand b{name, voxel, {ox, oy, oz}, band, ijk, value, count};
 //   std::string bytes, err(256, '\0');
-//   if (write(&b, append_to_string, &bytes, err.data(), err.size()) != 0) ...
+//   std::uint64_t active = 0;
+//   if (write(&b, append_to_string, &bytes, &active, err.data(), err.size()) != 0) ...
 //
 // The module serialises the grid to memory and hands the bytes back through
 // `sink`; the caller writes them through io/atomic_file.h, so the atomic
@@ -28,10 +29,11 @@ struct MarchVdbBand {
 // Receives the file's bytes, in one or more pieces, in order.
 typedef void (*MarchVdbSink)(void* user, const char* data, std::uint64_t n);
 
-// 0 when written; else not, with a NUL-terminated message in err[0, err_size).
-// Never throws.
-typedef int (*MarchVdbWrite)(const MarchVdbBand* band, MarchVdbSink sink, void* user, char* err,
-                             std::uint64_t err_size);
+// 0 when written, with the grid's active voxel count in *active (what a
+// reader of the file counts); else not, with a NUL-terminated message in
+// err[0, err_size). Never throws.
+typedef int (*MarchVdbWrite)(const MarchVdbBand* band, MarchVdbSink sink, void* user, std::uint64_t* active,
+                             char* err, std::uint64_t err_size);
 }
 
 namespace ms {

@@ -15,6 +15,7 @@
 #include "mesh/dual_contour.h"
 #include "mesh/sparse_field.h"
 #include "mesh/untangle.h"
+#include "mesh/vertex_normals.h"
 #include "pipeline/input.h"
 #include "render/field_sampler.h"
 #include "render/graph_field.h"
@@ -88,6 +89,7 @@ TriMesh mesh_of(FieldSampler& sampler, const SparseField& sparse, const Scene& s
     fail_input("no surface inside the box: map() is positive (or negative) everywhere there", scene.file.string(),
                0, job.bounds ? "--bounds" : "bounds");
   const std::size_t crossings = untangle(dc, sparse.grid);
+  vertex_normals(sampler, dc);
   r.accuracy = measure_accuracy(sampler, dc, sparse.grid.voxel);
   r.mesh_s = since(m);
   if (progress) progress("checking", 0.8);
@@ -178,7 +180,6 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   std::optional<TriMesh> mesh;
   if (r.format == MeshFormat::vdb) {
     band = band_of(sparse, scene, job.band);
-    r.band_voxels = band->ijk.size();
   } else {
     mesh = mesh_of(sampler, sparse, scene, job, step, r);
   }
@@ -188,7 +189,7 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   // The write is atomic, and not cut short by the watchdog: no temporary is left.
   if (watchdog) watchdog->disarm();
   const auto w = std::chrono::steady_clock::now();
-  if (band) write_level_set(*band, job.output);
+  if (band) r.band_voxels = write_level_set(*band, job.output);
   else write_mesh(*mesh, materials_of(scene), job.output);
   r.write_s = since(w);
   r.seconds = since(start);

@@ -45,7 +45,7 @@ struct MeshReport {
   double voxel = 0.0;
   std::size_t bricks = 0, samples = 0, readback_bytes = 0;
   std::size_t vertices = 0, triangles = 0, surface_cells = 0, split_cells = 0, untangled = 0;
-  std::size_t band_voxels = 0;     // a level set's voxels
+  std::size_t band_voxels = 0;     // a level set's active voxels, as written
   MeshCheck check;
   MeshAccuracy accuracy;
   // setup: load, assemble, compile, a graph's pruning; sample_s includes it

@@ -48,7 +48,7 @@ std::string mesh_report_json(const MeshReport& r) {
 std::string mesh_summary(const MeshReport& r) {
   char buf[256];
   if (r.format == MeshFormat::vdb)
-    std::snprintf(buf, sizeof buf, "%s: level set, %zu voxels in the band, %.2f s", r.output.c_str(), r.band_voxels,
+    std::snprintf(buf, sizeof buf, "%s: level set, %zu active voxels, %.2f s", r.output.c_str(), r.band_voxels,
                   r.seconds);
   else
     std::snprintf(buf, sizeof buf, "%s: %zu triangles, %zu vertices, %s, %.2f s", r.output.c_str(), r.triangles,

@@ -20,48 +20,11 @@
 #include <string>
 #include <vector>
 
+#include "mesh_read.h"
 #include "run.h"
 
 namespace ms::test {
 namespace {
-
-struct Ply {
-  std::vector<glm::vec3> v;
-  std::vector<std::uint16_t> material;
-  std::vector<std::uint32_t> tri;
-};
-
-// The exporter's binary PLY: float x y z, ushort material; list uchar uint.
-Ply read_ply(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string line;
-  std::size_t nv = 0, nf = 0;
-  while (std::getline(in, line) && line != "end_header") {
-    std::istringstream s(line);
-    std::string a, b;
-    s >> a >> b;
-    if (a == "element" && b == "vertex") s >> nv;
-    if (a == "element" && b == "face") s >> nf;
-  }
-  Ply p;
-  for (std::size_t i = 0; i < nv; ++i) {
-    glm::vec3 x;
-    std::uint16_t m = 0;
-    in.read(reinterpret_cast<char*>(&x), 12);
-    in.read(reinterpret_cast<char*>(&m), 2);
-    p.v.push_back(x);
-    p.material.push_back(m);
-  }
-  for (std::size_t i = 0; i < nf; ++i) {
-    unsigned char n = 0;
-    std::uint32_t t[3];
-    in.read(reinterpret_cast<char*>(&n), 1);
-    in.read(reinterpret_cast<char*>(t), 12);
-    p.tri.insert(p.tri.end(), t, t + 3);
-  }
-  EXPECT_TRUE(in.good()) << file;
-  return p;
-}
 
 // A scene of one map() (`body` returns its distance), material "part",
 // inside `bounds` (a TOML [bounds] body).
@@ -75,7 +38,7 @@ std::filesystem::path scene(const TempDir& dir, const std::string& name, const s
 }
 
 struct Exported {
-  Ply mesh;
+  ReadMesh mesh;
   nlohmann::json report;
 };
 
@@ -88,13 +51,14 @@ Exported export_mesh(const std::filesystem::path& scene_file, const TempDir& dir
   e.report = nlohmann::json::parse(r.out);
   e.mesh = read_ply(out);
   EXPECT_TRUE(e.report["manifold"].get<bool>()) << e.report["check"]["summary"];
-  EXPECT_EQ(e.report["vertices"].get<std::size_t>(), e.mesh.v.size());
+  EXPECT_TRUE(e.mesh.ok);
+  EXPECT_EQ(e.report["vertices"].get<std::size_t>(), distinct_positions(e.mesh));
   return e;
 }
 
 double worst(const Exported& e, const std::function<double(const glm::vec3&)>& d) {
   double w = 0.0;
-  for (const glm::vec3& v : e.mesh.v) w = std::max(w, std::abs(d(v)));
+  for (const glm::vec3& v : e.mesh.positions) w = std::max(w, std::abs(d(v)));
   return w / e.report["voxel"].get<double>();
 }
 
@@ -125,7 +89,7 @@ TEST(Mesh, AnOffGridBoxKeepsItsCorners) {
   for (int k = 0; k < 8; ++k) {
     const glm::vec3 corner = c + b * glm::vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
     float best = 1e9f;
-    for (const glm::vec3& v : e.mesh.v) best = std::min(best, glm::length(v - corner));
+    for (const glm::vec3& v : e.mesh.positions) best = std::min(best, glm::length(v - corner));
     EXPECT_LT(best / voxel, 0.1) << "corner " << k;
   }
 }
@@ -162,7 +126,7 @@ TEST(Mesh, PlanesJoinTheSolidOnlyWhenAsked) {
     EXPECT_EQ(r.exit_code, 0) << r.err;
     report = nlohmann::json::parse(r.out);
     float y = 1e9f;
-    for (const glm::vec3& v : read_ply(dir / "p.ply").v) y = std::min(y, v.y);
+    for (const glm::vec3& v : read_ply(dir / "p.ply").positions) y = std::min(y, v.y);
     return y;
   };
   nlohmann::json without, with;
@@ -183,9 +147,9 @@ TEST(Mesh, AFieldThatIsNaNInPlacesGivesFiniteVertices) {
   const RunResult r = run_marchstudio({"mesh", f.string(), "-o", (dir / "n.ply").string(), "--resolution", "48"},
                                       dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const Ply p = read_ply(dir / "n.ply");
-  ASSERT_FALSE(p.v.empty());
-  for (const glm::vec3& v : p.v) ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
+  const ReadMesh p = read_ply(dir / "n.ply");
+  ASSERT_FALSE(p.positions.empty());
+  for (const glm::vec3& v : p.positions) ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
 }
 
 TEST(Mesh, EveryFormatIsWritten) {

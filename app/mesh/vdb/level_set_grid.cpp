@@ -48,10 +48,13 @@ void set_error(char* err, std::uint64_t err_size, const char* what) {
 
 extern "C" __attribute__((visibility("default"))) int marchstudio_vdb_write(const MarchVdbBand* band,
                                                                            MarchVdbSink sink, void* user,
-                                                                           char* err, std::uint64_t err_size) {
+                                                                           std::uint64_t* active, char* err,
+                                                                           std::uint64_t err_size) {
   try {
     openvdb::initialize();
-    openvdb::GridPtrVec grids{band_grid(*band)};
+    const openvdb::FloatGrid::Ptr grid = band_grid(*band);
+    *active = grid->activeVoxelCount();
+    openvdb::GridPtrVec grids{grid};
     std::ostringstream os(std::ios::binary);
     openvdb::io::Stream(os).write(grids);
     const std::string bytes = os.str();
