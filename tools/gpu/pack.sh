@@ -24,7 +24,7 @@ bin=${1:-}
 die() { echo "pack.sh: $*" >&2; exit 1; }
 
 if [[ -z $bin ]]; then
-  cmake -S "$root" -B "$root/build-gpu" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMARCH_GPU_BENCH=ON -DMARCH_BUILD_TESTS=OFF
+  cmake -S "$root" -B "$root/build-gpu" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMARCH_GPU_BENCH=ON -DBUILD_TESTING=OFF
   cmake --build "$root/build-gpu" --target marchstudio-gpubench
   bin=$root/build-gpu/marchstudio-gpubench
 fi
