@@ -1,15 +1,17 @@
 #include "io/cache_dir.h"
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <utility>
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/input_file.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -43,27 +45,37 @@ fs::path cache_dir() {
   return private_temp_dir();
 }
 
-bool read_cache_file(const fs::path& path, std::string& bytes, std::size_t limit) {
+bool read_cache_file(const fs::path& path, std::string& bytes, std::size_t limit, std::string* why) {
   bytes.clear();
-  if (path.empty()) return false;
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-  if (fd < 0) return false;
+  std::string problem;
+  const auto miss = [&](std::string text) {
+    if (why) *why = std::move(text);
+    bytes.clear();
+    return false;
+  };
+  if (path.empty()) return miss({});
+  const int fd = open_regular_file(path, problem, false);
+  if (fd < 0) return miss(problem == "not found" ? std::string() : problem);
   struct stat st {};
-  bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && static_cast<std::uint64_t>(st.st_size) <= limit;
+  bool ok = ::fstat(fd, &st) == 0 && static_cast<std::uint64_t>(st.st_size) <= limit;
+  if (!ok) problem = "is larger than the " + std::to_string(limit) + " bytes an entry may be";
   while (ok) {
-    char buf[4096];
+    char buf[1 << 16];
     const ssize_t n = ::read(fd, buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       ok = n == 0;
+      if (!ok) problem = std::string("cannot be read: ") + std::strerror(errno);
       break;
     }
     bytes.append(buf, static_cast<std::size_t>(n));
     ok = bytes.size() <= limit;  // it grew since the fstat
+    if (!ok) problem = "grew while it was read";
   }
   ::close(fd);
-  if (!ok) bytes.clear();
-  return ok;
+  if (!ok) return miss(problem);
+  if (why) why->clear();
+  return true;
 }
 
 bool write_cache_file(const fs::path& path, std::string_view bytes, std::string* why) {

@@ -1,13 +1,18 @@
 #include "io/file_stamp.h"
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
+#include <cstring>
 #include <system_error>
+#include <vector>
 
 #include "core/error.h"
 #include "core/hash.h"
 #include "io/atomic_file.h"
+#include "io/cache_dir.h"
+#include "io/input_file.h"
 #include "io/json_doc.h"
 
 namespace ms {
@@ -25,25 +30,28 @@ struct Part {
   std::string hash;
 };
 
-// Size and content hash of `path`; false when it cannot be read whole.
-bool measure(const fs::path& path, Part& out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
+// Size and content hash of `path`; false, with `why`, when it is not a
+// regular file (opened without blocking: a FIFO in a frame's place never
+// waits for a writer) or cannot be read whole.
+bool measure(const fs::path& path, Part& out, std::string& why) {
+  const int fd = open_regular_file(path, why);
+  if (fd < 0) return false;
   Hash128 h;
-  char buf[1 << 16];
+  std::vector<char> buf(std::size_t{1} << 16);
   std::uintmax_t n = 0;
-  while (in) {
-    in.read(buf, sizeof buf);
-    const std::streamsize got = in.gcount();
-    if (got <= 0) break;
-    h.add_bytes(buf, static_cast<std::size_t>(got));
+  ssize_t got = 0;
+  while ((got = ::read(fd, buf.data(), buf.size())) != 0) {
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) break;
+    h.add_bytes(buf.data(), static_cast<std::size_t>(got));
     n += static_cast<std::uintmax_t>(got);
   }
-  if (in.bad()) return false;
+  if (got < 0) why = std::string("cannot be read: ") + std::strerror(errno);
+  ::close(fd);
   out.name = path.filename().string();
   out.bytes = n;
   out.hash = h.hex();
-  return true;
+  return got == 0;
 }
 
 std::string json_string(const std::string& s) {
@@ -72,7 +80,8 @@ void write_stamp(const fs::path& file, const std::vector<fs::path>& parts, const
                      ", \"files\": [";
   for (std::size_t i = 0; i < parts.size(); ++i) {
     Part p;
-    if (!measure(parts[i], p)) fail_system("cannot read back what was just written", parts[i].string());
+    std::string why;
+    if (!measure(parts[i], p, why)) fail_system("cannot read back what was just written: it " + why, parts[i].string());
     text += (i ? ", " : "") + std::string("{\"name\": ") + json_string(p.name) + ", \"bytes\": " + std::to_string(p.bytes) +
             ", \"hash\": \"" + p.hash + "\"}";
   }
@@ -88,10 +97,11 @@ StampCheck check_stamp(const fs::path& file, const std::vector<fs::path>& parts,
   std::error_code ec;
   if (!fs::exists(file, ec)) return StampCheck::missing;
   const fs::path stamp = stamp_path(file);
-  const std::uintmax_t size = fs::file_size(stamp, ec);
-  if (ec || size > kMaxStampBytes) return say(StampCheck::unmarked, "it has no stamp (" + stamp.filename().string() + ")");
-  std::ifstream in(stamp, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Read as a cache entry is: a hint that is there whole or not at all.
+  std::string text, problem;
+  if (!read_cache_file(stamp, text, kMaxStampBytes, &problem))
+    return say(StampCheck::unmarked, problem.empty() ? "it has no stamp (" + stamp.filename().string() + ")"
+                                                     : "its stamp " + stamp.filename().string() + " " + problem);
   JsonDoc doc;
   try {
     doc = parse_json_doc(text, stamp.string());
@@ -111,7 +121,8 @@ StampCheck check_stamp(const fs::path& file, const std::vector<fs::path>& parts,
     if (name < 0 || bytes < 0 || hash < 0 || doc.at(name).text != part.filename().string())
       return say(StampCheck::damaged, "its stamp lists other files");
     Part now;
-    if (!measure(part, now)) return say(StampCheck::damaged, part.filename().string() + " is missing or unreadable");
+    std::string problem;
+    if (!measure(part, now, problem)) return say(StampCheck::damaged, part.filename().string() + " " + problem);
     if (static_cast<double>(now.bytes) != doc.at(bytes).number)
       return say(StampCheck::damaged, part.filename().string() + " has " + std::to_string(now.bytes) + " bytes, " +
                                           std::to_string(static_cast<long long>(doc.at(bytes).number)) + " stamped");

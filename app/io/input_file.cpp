@@ -35,12 +35,12 @@ std::string errno_problem(int err) {
   fail_input(std::string(what) + " " + why, path.string(), 0, std::string(key));
 }
 
-// An fd on a regular file, or -1 with `why` set. O_NONBLOCK: opening a
-// FIFO returns at once instead of waiting for a writer.
-int open_regular(const fs::path& path, std::string& why) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+}  // namespace
+
+int open_regular_file(const fs::path& path, std::string& why, bool follow_links) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | (follow_links ? 0 : O_NOFOLLOW));
   if (fd < 0) {
-    why = errno_problem(errno);
+    why = !follow_links && errno == ELOOP ? "is a symbolic link, not followed" : errno_problem(errno);
     return -1;
   }
   struct stat st {};
@@ -53,12 +53,9 @@ int open_regular(const fs::path& path, std::string& why) {
     ::close(fd);
     return -1;
   }
-  // Reads block as usual from here on (a regular file never waits anyway).
   ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   return fd;
 }
-
-}  // namespace
 
 std::string input_file_problem(const fs::path& path) {
   if (path.empty()) return "not found (empty path)";
@@ -76,7 +73,7 @@ void check_input_file(const fs::path& path, std::string_view what, std::string_v
 std::string read_input_file(const fs::path& path, std::string_view what, std::string_view key, std::size_t max_bytes) {
   std::string why;
   if (path.empty()) refuse(path, what, key, "not found (empty path)");
-  const int fd = open_regular(path, why);
+  const int fd = open_regular_file(path, why);
   if (fd < 0) refuse(path, what, key, why);
   struct stat st {};
   ::fstat(fd, &st);

@@ -24,6 +24,15 @@ inline constexpr std::size_t kMaxImageInput = std::size_t{4} << 30;
 // not readable (permission denied)" ...; empty when it is one.
 std::string input_file_problem(const std::filesystem::path& path);
 
+// A descriptor on `path` for reading, or -1 with `why` set to a problem as
+// above: opened with O_NONBLOCK (a FIFO returns at once instead of waiting
+// for a writer), then checked on the open file itself (fstat) to be a
+// regular file; reads block as usual after. `follow_links` false: a link
+// at `path` itself is refused ("is a symbolic link, not followed"), as a
+// cache entry or stamp that marchstudio only ever writes as a file is.
+// The caller closes it.
+int open_regular_file(const std::filesystem::path& path, std::string& why, bool follow_links = true);
+
 // Throws bad_input "<what> <problem>" at `path` (and `key`) unless
 // input_file_problem() is empty.
 void check_input_file(const std::filesystem::path& path, std::string_view what, std::string_view key = {});

@@ -1,5 +1,6 @@
 #include "pipeline/mesh_sequence.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -75,7 +76,11 @@ MeshReport mesh_frame(const MeshSequenceJob& job, FrameSession& session, int f, 
   m.frame.label = "frame " + std::to_string(f);  // names it in a --timeout's error
   remove_stamp(m.output);
   const MeshReport r = mesh_scene(m, session);
-  write_stamp(m.output, frame_parts(m.output), frame_fingerprint(job_fp, f, time));
+  // A FIFO or a device is written through (io/atomic_file.h): nothing stays
+  // there for a stamp to vouch for, nor a file to read back.
+  const std::vector<fs::path> parts = frame_parts(m.output);
+  if (std::all_of(parts.begin(), parts.end(), [](const fs::path& p) { return output_kind(p) == OutputKind::replace; }))
+    write_stamp(m.output, parts, frame_fingerprint(job_fp, f, time));
   return r;
 }
 

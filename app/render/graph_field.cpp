@@ -44,9 +44,11 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
   const auto start = std::chrono::steady_clock::now();
   const PrunedCache cache(b, plan, prune_source);
   const GLuint kept[3] = {buffers_[2], buffers_[3], buffers_[4]};
-  const std::size_t bytes[3] = {program_capacity(plan, b) * sizeof(std::uint32_t), head.size() * sizeof(std::uint32_t),
-                                (coarse + 1) * 4 * sizeof(std::uint32_t)};
-  from_cache_ = cache.load(kept, bytes);
+  const PrunedSizes sizes{{program_capacity(plan, b) * sizeof(std::uint32_t), head.size() * sizeof(std::uint32_t),
+                           (coarse + 1) * 4 * sizeof(std::uint32_t)},
+                          pool_base(plan, b) * sizeof(std::uint32_t)};
+  std::string refused;
+  from_cache_ = cache.load(kept, sizes, &refused);
   if (!from_cache_) run_pass(*prune);
   std::vector<std::uint32_t> out(cells * 4);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[3]);
@@ -62,8 +64,12 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
     overflowed_ += out[i * 4 + 3] == 1u;
   }
   mean_list_ = inner > 0 ? sum / static_cast<double>(inner) : 0.0;
-  if (!from_cache_ && build_ms_ >= prune_cache_ms())
-    cache.save(kept, bytes, pool_base(plan, b) * sizeof(std::uint32_t));
+  // A refused entry is replaced whatever the pass took: it was kept once,
+  // and left as it is it would be refused again on every run.
+  const bool written = !from_cache_ && (build_ms_ >= prune_cache_ms() || !refused.empty()) && cache.save(kept, sizes);
+  if (!refused.empty())
+    cache_note_ = "; the cache's entry " + cache.path().string() + " " + refused + ", not used" +
+                  (written ? " and written again" : "");
 }
 
 void GraphField::run_pass(const Program& prune) {
@@ -94,7 +100,7 @@ std::string GraphField::summary() const {
   std::snprintf(buf, sizeof buf, ", %s %.1f ms, mean list %.1f instructions (of %zu), %d cells kept their coarse list",
                 from_cache_ ? "pruned grid read from the cache in" : "pruning", build_ms_, mean_list_, program_,
                 overflowed_);
-  return grid + buf;
+  return grid + buf + cache_note_;
 }
 
 GraphField::~GraphField() { glDeleteBuffers(5, buffers_); }

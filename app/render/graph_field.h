@@ -32,8 +32,8 @@ class GraphField {
   void bind() const;
   double build_ms() const { return build_ms_; }
   bool from_cache() const { return from_cache_; }
-  // "grid 16x23x22, pruning 412.3 ms, mean list 23.4 instructions (of 1999), 3 cells kept their coarse list";
-  // "" without a grid.
+  // "grid 16x23x22, pruning 412.3 ms, mean list 23.4 instructions (of 1999), 3 cells kept their coarse list",
+  // then why a cache entry that was there was not used, if one was not; "" without a grid.
   std::string summary() const;
 
  private:
@@ -45,6 +45,7 @@ class GraphField {
   // keeps its coarse cell's list), -1 before a pruning pass; and how many overflowed.
   double mean_list_ = -1.0;
   int overflowed_ = 0;
+  std::string cache_note_;  // "; the cache's entry ... not used ...", or empty
   GraphEvalPlan plan_;
   std::size_t program_ = 0;
 };
