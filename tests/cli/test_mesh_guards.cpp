@@ -2,10 +2,16 @@
 // cell limit is refused at once (it once looped forever), flags that make
 // no sense are one line each, a field that is NaN is said (an error under
 // --strict, or when nothing else is left), the memory budget stops a grid
-// whose surface would not fit, and every file written is printed on stdout.
+// whose surface would not fit, a long --frames range holds numbers, not
+// paths, and every file written is printed on stdout.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
 
 #include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <thread>
 #include <regex>
 #include <string>
 #include <vector>
@@ -136,6 +142,44 @@ TEST(MeshGuards, ASurfaceOverTheMemoryBudgetIsRefusedBeforeItIsSampled) {
   EXPECT_GE(std::stoi(m[1]), 8);
   EXPECT_LT(std::stoi(m[1]), 4096);
   EXPECT_TRUE(written_in(dir).empty()) << r.err;
+}
+
+// The resident peak (VmHWM, KiB) of `mesh --frames 0..last` once its first
+// frame is written, the process then killed.
+long peak_at_first_frame(const TempDir& dir, const fs::path& scene, int last) {
+  const std::string log = "frames" + std::to_string(last) + ".log";
+  const pid_t pid = spawn_marchstudio({"mesh", scene.string(), "--resolution", "8", "--frames",
+                                       "0.." + std::to_string(last), "-o", "f" + std::to_string(last) + "_%08d.ply"},
+                                      dir.path(), log);
+  const std::string first = "f" + std::to_string(last) + "_00000000.ply";
+  long peak = -1;
+  for (int i = 0; i < 6000 && peak < 0; ++i) {
+    if (read_file(dir / log).find(first + "\n") != std::string::npos) {
+      std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+      for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmHWM:", 0) == 0) peak = std::stol(line.substr(6));
+    }
+    int st = 0;
+    if (peak < 0 && waitpid(pid, &st, WNOHANG) == pid) {
+      ADD_FAILURE() << "it ended before its first frame: " << read_file(dir / log);
+      return -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ::kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+  return peak;
+}
+
+TEST(MeshGuards, AFrameRangeCostsItsNumbersNotItsPaths) {
+  TempDir dir;
+  const fs::path f = scene(dir, "ball", kSphere);
+  // A million frames held each frame's paths (about 64 bytes a frame:
+  // 7.3 GB for 10^8); their numbers are 4 bytes.
+  const long few = peak_at_first_frame(dir, f, 1), many = peak_at_first_frame(dir, f, 999999);
+  ASSERT_GT(few, 0);
+  ASSERT_GT(many, 0);
+  EXPECT_LT(many - few, 24 * 1024) << few << " KiB for 2 frames, " << many << " KiB for a million";
 }
 
 TEST(MeshGuards, EveryFileWrittenIsPrintedOnStdout) {
