@@ -44,7 +44,9 @@ vec2 fieldMap(vec3 p) {
   vec3 q = abs(p - 0.5 * (uClipA.xyz + uClipB.xyz)) - 0.5 * (uClipB.xyz - uClipA.xyz);
   float box = length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
   float clip = uClipKind == 1 ? length(p - uClipA.xyz) - uClipA.w : box;
-  return vec2(max(m.x, clip), m.y);
+  // A NaN or Inf from map() is kept (max() with the cut would hide it):
+  // the exporter counts such samples, as render counts such pixels.
+  return vec2(isnan(m.x) || isinf(m.x) ? m.x : max(m.x, clip), m.y);
 }
 
 vec3 voxelPoint(ivec3 v) { return uFieldOrigin + uFieldVoxel * vec3(v); }

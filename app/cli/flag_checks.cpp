@@ -80,6 +80,17 @@ CLI::Validator non_negative() {
       "NUMBER >= 0");
 }
 
+CLI::Validator positive() {
+  return CLI::Validator(
+      [](std::string& v) -> std::string {
+        char* end = nullptr;
+        const double x = std::strtod(v.c_str(), &end);
+        if (end == v.c_str() || *end != '\0' || !std::isfinite(x)) return "'" + v + "' is not a number";
+        return x > 0 ? "" : "must be > 0, got " + v;
+      },
+      "NUMBER > 0");
+}
+
 CLI::Option* add_hidden_pixels(CLI::App* cmd, const std::string& name, int& value, const std::string& description) {
   return cmd
       ->add_option_function<std::string>(

@@ -29,6 +29,9 @@ CLI::Validator seconds_value();
 // A number >= 0, said in those words (CLI11's NonNegativeNumber prints
 // DBL_MAX in full as its upper limit).
 CLI::Validator non_negative();
+// A finite number > 0, said in those words (CLI::PositiveNumber takes
+// "nan", and prints DBL_MAX in full).
+CLI::Validator positive();
 
 // A hidden option taking a whole number of pixels >= 0. CLI11 leaves a
 // hidden option's name out of its own errors ("marchstudio: : 1 required

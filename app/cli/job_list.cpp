@@ -167,7 +167,7 @@ int in_range(const KeyValue& kv, int lo, int hi) {
 
 const std::map<std::string, MeshHandler>& mesh_handlers() {
   static const std::map<std::string, MeshHandler> h = {
-      {"resolution", [](const KeyValue& kv, MeshArgs& m) { m.resolution = in_range(kv, 8, 4096); }},
+      {"resolution", [](const KeyValue& kv, MeshArgs& m) { m.resolution = in_range(kv, 8, kMaxMeshCells); }},
       {"voxel",
        [](const KeyValue& kv, MeshArgs& m) {
          m.voxel = number(kv);

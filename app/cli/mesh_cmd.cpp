@@ -3,6 +3,8 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -12,10 +14,12 @@
 #include "cli/flag_checks.h"
 #include "cli/input_flags.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "pipeline/mesh_job.h"
 #include "pipeline/mesh_sequence.h"
 #include "pipeline/progress.h"
 #include "pipeline/shader_dir.h"
+#include "pipeline/still_job.h"
 
 namespace ms {
 
@@ -25,17 +29,20 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   CLI::App* cmd = app.add_subcommand("mesh", "Export a scene's surface as a mesh or an OpenVDB level set (docs/mesh.md)");
   cmd->add_option("scene", a.input, "Scene .toml with a map() or a graph")->required();
   cmd->add_option("-o,--output", a.output,
-                  "Output: .obj (with .mtl), .ply, .stl, .glb, or .vdb (a level set) (default: <scene>.obj)");
-  cmd->add_option("--resolution", a.resolution, "Cells along the longest side of the box (default 256)")
-      ->check(CLI::Range(8, 4096));
-  cmd->add_option("--voxel", a.voxel, "The cell's size in world units, instead of --resolution")
-      ->check(CLI::PositiveNumber);
+                  "Output: .obj (with .mtl), .ply, .stl, .glb, or .vdb (a level set) (default: <scene>.obj)")
+      ->check(not_empty());
+  cmd->add_option("--resolution", a.resolution, "Cells along the longest side of the box (default 256, at most 4096)")
+      ->check(CLI::Range(8, kMaxMeshCells));
+  cmd->add_option("--voxel", a.voxel,
+                  "The cell's size in world units, instead of --resolution (at least the box's longest side / 4096)")
+      ->check(positive());
   cmd->add_option("--bounds", a.bounds, "The box to mesh, x0,y0,z0,x1,y1,z1 (default: the scene's [bounds])")
       ->delimiter(',')
       ->expected(6);
   cmd->add_flag("--planes", a.planes, "Include the scene's [[planes]], cut by the box (default: left out)");
   cmd->add_option("--band", a.band, "A .vdb level set's half-width in voxels (default 3)")->check(CLI::Range(1, 64));
-  cmd->add_option("--time", a.time, "Scene time in seconds (default: the scene's)")
+  cmd->add_option("--time", a.time, "Scene time in seconds, finite (default: the scene's)")
+      ->check(seconds_value())
       ->each([&a](const std::string&) { a.time_set = true; });
   cmd->add_option_function<std::string>(
          "--frames", [&a](const std::string& v) { a.frames = parse_frame_range(v); },
@@ -45,10 +52,13 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
       ->each([&a](const std::string&) { a.fps_set = true; });
   cmd->add_flag("--force", a.force,
                 "With --frames: mesh every frame again, even those on disk with this run's fingerprint");
+  cmd->add_flag("--strict", a.strict,
+                "Fail (exit 1, nothing written) when any sample of map() is NaN or Inf; without it a warning");
   cmd->add_flag("--json", a.json, "Print the report as one JSON object (schema marchstudio.mesh/1)");
   cmd->add_flag("-v,--verbose", a.verbose, "Print the grid, accuracy, check and stage times");
-  cmd->add_option("--timeout", a.timeout, "Give up after this many seconds: exit 3, nothing written")
-      ->check(seconds_value());
+  cmd->add_option("--timeout", a.timeout, "Give up after this many seconds (0: no limit): exit 3, nothing written")
+      ->check(seconds_value())
+      ->check(non_negative());
   add_backend_flag(cmd, a.backend);
   add_shader_dir_flag(cmd, a.shader_dir);
   add_allow_include_flag(cmd, a.allow_include);
@@ -67,8 +77,15 @@ MeshJob make_mesh_job(const MeshArgs& a) {
   job.frame.backend = a.backend;
   job.frame.defines = a.defines;
   job.frame.verbose = a.verbose;
+  // A --jobs line's values arrive without the flags' checks.
+  if (!std::isfinite(a.timeout) || a.timeout < 0)
+    fail_input("--timeout must be a number of seconds >= 0 (0: no limit)", {}, 0, "--timeout");
   job.frame.timeout = a.timeout;
+  job.frame.strict = a.strict;
+  if (!std::isfinite(a.time) || std::abs(a.time) > FLT_MAX)
+    fail_input("--time must be a finite number of seconds", {}, 0, "--time");
   if (a.time_set) job.frame.time = static_cast<float>(a.time);
+  if (!std::isfinite(a.voxel) || a.voxel < 0) fail_input("--voxel must be a number > 0", {}, 0, "--voxel");
   job.output = a.output.empty() ? fs::path(fs::path(a.input).stem().string() + ".obj") : fs::path(a.output);
   job.resolution = a.resolution;
   job.voxel = a.voxel;
@@ -106,7 +123,13 @@ int run_mesh_sequence(const MeshArgs& a) {
                "shift the animation with --frames instead");
   if (a.json) fail_input("--json reports one mesh, and --frames makes several", {}, 0, "--json");
   if (!std::isfinite(a.fps) || a.fps <= 0)
-    fail_input("--fps must be a positive number, got " + std::to_string(a.fps), {}, 0, "--fps");
+    fail_input("--fps must be a positive number, got " + format_number(a.fps), {}, 0, "--fps");
+  // Frame f is at time f / fps, a 32-bit float in the shader.
+  const double last_time = std::max(std::abs(double(a.frames->first)), std::abs(double(a.frames->last))) / a.fps;
+  if (!(last_time <= FLT_MAX))
+    fail_input("--fps " + format_number(a.fps) + " puts frame " + std::to_string(a.frames->last) + " at time " +
+                   format_number(last_time) + " s, beyond a 32-bit float",
+               {}, 0, "--fps", "give frames per second, e.g. --fps 24");
   MeshSequenceJob job;
   job.range = *a.frames;
   job.fps = a.fps;
@@ -137,11 +160,13 @@ int run_mesh(const MeshArgs& a) {
   const MeshJob job = make_mesh_job(a);
   const bool tty = isatty(STDERR_FILENO) && !a.json;
   FrameSession session;
+  say_removed_temps(mesh_files(job.output));
   const MeshReport r = mesh_scene(job, session, progress_for(tty));
   if (tty) std::fputs("\r\033[K", stderr);
   if (a.json) {
     std::printf("%s\n", mesh_report_json(r).c_str());
   } else {
+    for (const std::string& path : r.written) std::printf("%s\n", path.c_str());  // as render prints its image's
     std::fprintf(stderr, "marchstudio: wrote %s\n", mesh_summary(r).c_str());
     if (a.verbose)
       for (const std::string& line : mesh_report_lines(r)) std::fprintf(stderr, "  %s\n", line.c_str());

@@ -21,7 +21,7 @@ namespace ms {
 
 struct MeshArgs {
   std::string input;
-  std::string output;        // empty: <input stem>.obj in the current directory
+  std::string output;        // not given: <input stem>.obj in the current directory
   int resolution = 256;      // cells along the box's longest side
   double voxel = 0.0;        // --voxel: the cell's size instead
   std::vector<float> bounds; // --bounds x0,y0,z0,x1,y1,z1
@@ -33,6 +33,7 @@ struct MeshArgs {
   double fps = kSceneFps;
   bool fps_set = false;
   bool force = false;        // --frames: mesh every frame again
+  bool strict = false;       // NaN or Inf samples of map() are an error
   bool json = false;
   bool verbose = false;
   double timeout = 0.0;

@@ -43,8 +43,8 @@ bool alive(long pid) { return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 
 
 }  // namespace
 
-RemoveTempOnSignal::RemoveTempOnSignal(const fs::path& target) {
-  const std::string temp = temp_path_for(target, ::getpid()).string();
+RemoveTempOnSignal::RemoveTempOnSignal(const fs::path& target, Remove what) {
+  const std::string temp = (what == Remove::file ? target : temp_path_for(target, ::getpid())).string();
   // Before the handler: it may run at once.
   if (g_count < kSlots && temp.size() < PATH_MAX) {
     slot_ = g_count;

@@ -1,6 +1,7 @@
 // The temporaries of io/atomic_file.h (".<name>.tmp<pid>" beside the
 // target) under signals and reruns, for every still a process writes (one
-// image, a --jobs batch, a tiled still): one signal scope for all of them.
+// image, a --jobs batch, a tiled still) and every mesh (an OBJ with its
+// .mtl): one signal scope for all of them.
 //
 //   for (const fs::path& p : remove_dead_temps({output})) ...   // a killed run's
 //   {
@@ -28,7 +29,10 @@ namespace ms {
 // job's); they belong to one thread, the one that writes.
 class RemoveTempOnSignal {
  public:
-  explicit RemoveTempOnSignal(const std::filesystem::path& target);
+  // Remove::file: `target` itself instead, for a file this write has just
+  // made that means nothing without the rest (an OBJ's new .mtl).
+  enum class Remove { temporary, file };
+  explicit RemoveTempOnSignal(const std::filesystem::path& target, Remove what = Remove::temporary);
   ~RemoveTempOnSignal();
   RemoveTempOnSignal(const RemoveTempOnSignal&) = delete;
   RemoveTempOnSignal& operator=(const RemoveTempOnSignal&) = delete;

@@ -8,6 +8,10 @@ namespace ms {
 
 namespace {
 
+// The bricks kept around a surface are a shell about this many bricks
+// thick: those within a brick's half-diagonal of it, and their neighbours.
+constexpr double kShell = 2.5;
+
 glm::ivec3 brick_of(const glm::ivec3& c) {
   return {c.x >= 0 ? c.x / kBrick : -1, c.y >= 0 ? c.y / kBrick : -1, c.z >= 0 ? c.z / kBrick : -1};
 }
@@ -64,6 +68,8 @@ void add_bricks(FieldSource& source, SparseField& f, const std::vector<glm::ivec
   std::vector<glm::ivec3> first(bricks.size());
   for (std::size_t i = 0; i < bricks.size(); ++i) first[i] = bricks[i] * kBrick;
   const std::vector<float> v = source.bricks(first, kBrick);
+  f.samples += v.size();
+  for (const float x : v) f.nonfinite += !std::isfinite(x);
   for (const glm::ivec3& b : bricks) {
     f.index[SparseField::key(b)] = static_cast<std::uint32_t>(f.bricks.size());
     f.bricks.push_back(b);
@@ -133,6 +139,13 @@ SparseField sample_sparse(FieldSource& source, const MeshGrid& grid, const Spars
   for (int level = 0;; ++level) {
     if (opts.progress) opts.progress("sampling", 0.05 * level / 8.0);
     const std::vector<float> d = source.cells(cubes);
+    f.samples += d.size();
+    double ahead = 0.0;
+    for (std::size_t i = 0; i < cubes.size(); ++i) {
+      f.nonfinite += !std::isfinite(d[i]);
+      if (may_hold(d[i], cubes[i].w, opts, grid.voxel)) ahead += kShell * std::pow(cubes[i].w / kBrick, 2);
+    }
+    if (opts.bricks_ahead) opts.bricks_ahead(ahead);
     std::vector<glm::ivec4> next;
     for (std::size_t i = 0; i < cubes.size(); ++i) {
       const glm::ivec4 c = cubes[i];
@@ -153,11 +166,13 @@ SparseField sample_sparse(FieldSource& source, const MeshGrid& grid, const Spars
   std::vector<glm::ivec3> bricks;
   for (const glm::ivec4& c : cubes) bricks.push_back(glm::ivec3(c) / kBrick);
   if (opts.progress) opts.progress("sampling", 0.1);
+  if (opts.bricks_ahead) opts.bricks_ahead(static_cast<double>(bricks.size()));
   add_bricks(source, f, bricks);
   // A surface that leaves a brick into a skipped one: sample that too.
   for (std::size_t from = 0, round = 0; round < 4; ++round) {
     const std::vector<glm::ivec3> more = missing_neighbours(f, from);
     if (more.empty()) break;
+    if (opts.bricks_ahead) opts.bricks_ahead(static_cast<double>(f.bricks.size() + more.size()));
     from = f.bricks.size();
     add_bricks(source, f, more);
   }

@@ -11,12 +11,16 @@
 
 #include "core/deadline.h"
 #include "core/error.h"
+#include "core/format.h"
+#include "core/memory_budget.h"
 #include "io/atomic_file.h"
+#include "io/temp_cleanup.h"
 #include "mesh/dual_contour.h"
 #include "mesh/sparse_field.h"
 #include "mesh/untangle.h"
 #include "mesh/vertex_normals.h"
 #include "pipeline/input.h"
+#include "pipeline/nonfinite.h"
 #include "render/field_sampler.h"
 #include "render/graph_field.h"
 #include "render/program.h"
@@ -62,8 +66,36 @@ std::vector<MeshMaterial> materials_of(const Scene& scene) {
   return out;
 }
 
+// A --voxel finer than the cell limit allows on this box: refused before
+// the grid is sized (its cell count would overflow an int).
+void check_voxel(const MeshJob& job, const MeshBox& box) {
+  if (job.voxel <= 0.0) return;
+  const glm::dvec3 size = glm::dvec3(box.max) - glm::dvec3(box.min);
+  const double longest = std::max({size.x, size.y, size.z}), cells = longest / job.voxel;
+  if (cells <= kMaxMeshCells) return;
+  fail_input("--voxel " + format_number(job.voxel) + " makes " + format_number(cells) +
+                 " cells along the box's longest side, over the limit of " + std::to_string(kMaxMeshCells),
+             {}, 0, "--voxel", "give --voxel " + format_number(longest / kMaxMeshCells) + " or more");
+}
+
+// Before bricks are sampled: what the export would hold for `bricks`
+// against the memory budget, with a grid that fits (the bricks grow as the
+// surface's area, the square of the cells along a side).
+void check_memory(double bricks, const MeshJob& job) {
+  const double need = bricks * kBytesPerBrick, budget = memory_budget();
+  if (need <= budget) return;
+  const double shrink = 0.9 * std::sqrt(budget / need);
+  const std::string hint =
+      job.voxel > 0.0 ? "give --voxel " + format_number(job.voxel / shrink) + " or more"
+                      : "give --resolution " + std::to_string(std::max(8, static_cast<int>(job.resolution * shrink))) +
+                            " or less, or a smaller --bounds";
+  throw Error({Exit::system, job.frame.input.string(), 0, job.voxel > 0.0 ? "--voxel" : "--resolution",
+               "the mesh needs about " + format_bytes(need) + ", over the " + format_bytes(budget) + " memory budget",
+               hint, {}});
+}
+
 // Every sampled voxel within the band, from the bricks as sampled (a voxel
-// two bricks share is listed twice, with one value).
+// two bricks share is listed twice, with one value; NaN and Inf left out).
 LevelSetBand band_of(const SparseField& f, const Scene& scene, int band) {
   LevelSetBand b;
   b.name = scene.name.empty() ? "surface" : scene.name;
@@ -73,7 +105,7 @@ LevelSetBand band_of(const SparseField& f, const Scene& scene, int band) {
   for (std::size_t s = 0; s < f.bricks.size(); ++s)
     for (int i = 0; i < kBrickCorners; ++i) {
       const float v = f.brick_values(s)[i];
-      if (std::abs(v) >= b.band) continue;
+      if (!(std::abs(v) < b.band)) continue;
       b.ijk.push_back(f.bricks[s] * kBrick + SparseField::corner_at(i));
       b.value.push_back(v);
     }
@@ -85,6 +117,10 @@ TriMesh mesh_of(FieldSampler& sampler, const SparseField& sparse, const Scene& s
                 const MeshProgress& progress, MeshReport& r) {
   const auto m = std::chrono::steady_clock::now();
   DualContour dc = dual_contour(sampler, sparse, progress);
+  if (dc.mesh.positions.empty() && sparse.nonfinite > 0)
+    fail_input("no surface inside the box: map() is NaN or Inf at " + std::to_string(sparse.nonfinite) + " of " +
+                   std::to_string(sparse.samples) + " samples and positive (or negative) elsewhere",
+               scene.file.string(), 0, "map", "see docs/stability.md");
   if (dc.mesh.positions.empty())
     fail_input("no surface inside the box: map() is positive (or negative) everywhere there", scene.file.string(),
                0, job.bounds ? "--bounds" : "bounds");
@@ -121,7 +157,30 @@ const LoadedInput& checked_input(const MeshJob& job, LoadedInput& in, MeshReport
   return in;
 }
 
+// The files, with SIGINT and SIGTERM removing each one's temporary, and an
+// OBJ's .mtl when it is new: it was written first and would name no OBJ.
+void write_files(const MeshJob& job, const Scene& scene, const std::optional<LevelSetBand>& band,
+                 const std::optional<TriMesh>& mesh, MeshReport& r) {
+  const std::vector<fs::path> files = mesh_files(job.output);
+  std::error_code ec;
+  const bool new_mtl = files.size() > 1 && !fs::exists(job.output, ec) && output_kind(files[1]) == OutputKind::replace;
+  const RemoveTempOnSignal output_temp(job.output);
+  std::optional<RemoveTempOnSignal> mtl_temp, mtl_file;  // destroyed before output_temp, as the guards nest
+  if (files.size() > 1) mtl_temp.emplace(files[1]);
+  if (new_mtl) mtl_file.emplace(files[1], RemoveTempOnSignal::Remove::file);
+  if (band) r.band_voxels = write_level_set(*band, job.output);
+  else write_mesh(*mesh, materials_of(scene), job.output);
+  mtl_file.reset();  // the OBJ landed: its .mtl stays
+  for (const fs::path& f : files) r.written.push_back(f.string());
+}
+
 }  // namespace
+
+std::vector<fs::path> mesh_files(const fs::path& file) {
+  std::vector<fs::path> files{file};
+  if (mesh_format_for(file) == MeshFormat::obj) files.push_back(fs::path(file).replace_extension(".mtl"));
+  return files;
+}
 
 MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgress& progress) {
   const auto start = std::chrono::steady_clock::now();
@@ -140,6 +199,7 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   const Scene& scene = checked_input(job, in, r).scene;
   MeshBox box;
   const FieldClip clip = clip_for(job, scene, box);
+  check_voxel(job, box);
   const MeshGrid grid = mesh_grid(glm::dvec3(box.min), glm::dvec3(box.max), job.resolution, job.voxel);
   r.cells = grid.cells;
   r.voxel = grid.voxel;
@@ -173,8 +233,13 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   so.lipschitz = std::max(scene.quality.lipschitz, 1e-3f);
   so.band = r.format == MeshFormat::vdb ? static_cast<float>(job.band) : 0.0f;
   so.progress = step;
+  so.bricks_ahead = [&job](double bricks) { check_memory(bricks, job); };
   const SparseField sparse = sample_sparse(sampler, grid, so);
   r.bricks = sparse.bricks.size();
+  r.nonfinite = sparse.nonfinite;
+  NonfiniteGuard guard{job.frame.input.string(), job.frame.strict, {}, "nothing written", "samples of map()"};
+  if (job.frame.label.rfind("frame ", 0) == 0) guard.where = job.frame.label;
+  guard_nonfinite(guard, static_cast<long long>(sparse.nonfinite), static_cast<long long>(sparse.samples));
   r.sample_s = since(start);
   std::optional<LevelSetBand> band;
   std::optional<TriMesh> mesh;
@@ -189,8 +254,7 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   // The write is atomic, and not cut short by the watchdog: no temporary is left.
   if (watchdog) watchdog->disarm();
   const auto w = std::chrono::steady_clock::now();
-  if (band) r.band_voxels = write_level_set(*band, job.output);
-  else write_mesh(*mesh, materials_of(scene), job.output);
+  write_files(job, scene, band, mesh, r);
   r.write_s = since(w);
   r.seconds = since(start);
   return r;

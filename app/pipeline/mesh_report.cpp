@@ -11,12 +11,14 @@ std::string mesh_report_json(const MeshReport& r) {
   nlohmann::ordered_json j;
   j["schema"] = "marchstudio.mesh/1";
   j["output"] = r.output;
+  j["written"] = r.written;
   j["format"] = mesh_format_name(r.format);
   j["cells"] = {r.cells.x, r.cells.y, r.cells.z};
   j["voxel"] = r.voxel;
   j["bricks"] = r.bricks;
   j["samples"] = r.samples;
   j["readback_bytes"] = r.readback_bytes;
+  j["nonfinite_samples"] = r.nonfinite;
   if (r.format == MeshFormat::vdb) {
     j["band_voxels"] = r.band_voxels;
   } else {

@@ -29,19 +29,30 @@ double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// The files frame f is made of: the mesh, and an OBJ's .mtl (mesh/mesh.h
-// names it after the file), which a complete frame needs as much.
-std::vector<fs::path> frame_parts(const fs::path& file) {
-  std::vector<fs::path> parts{file};
-  if (mesh_format_for(file) == MeshFormat::obj) parts.push_back(fs::path(file).replace_extension(".mtl"));
-  return parts;
-}
+// The files frame f is made of (mesh_files(): an OBJ's .mtl too), which a
+// complete frame needs every one of.
+std::vector<fs::path> frame_parts(const fs::path& file) { return mesh_files(file); }
 
+// Frame numbers only (a path is made when needed): a range of 10^8 frames
+// is 0.4 GB of them, as render --frames holds, not gigabytes of paths.
 struct Scan {
-  std::vector<int> todo;
-  std::vector<std::pair<int, std::string>> skipped;   // frame, path
+  std::vector<int> todo, skipped;
   std::vector<std::pair<int, std::string>> redone;    // frame, why
 };
+
+// A killed run's temporaries of the range's files, a chunk of frames at a
+// time for the same reason.
+void sweep_dead_temps(const MeshSequenceJob& job) {
+  constexpr std::size_t kChunk = 8192;
+  std::vector<fs::path> files;
+  for (int f = job.range.first; f <= job.range.last; ++f) {
+    for (const fs::path& p : frame_parts(job.pattern.path(f))) files.push_back(p);
+    if (files.size() >= kChunk || f == job.range.last) {
+      say_removed_temps(files);
+      files.clear();
+    }
+  }
+}
 
 Scan scan_frames(const MeshSequenceJob& job, const std::string& job_fp) {
   Scan s;
@@ -55,7 +66,7 @@ Scan scan_frames(const MeshSequenceJob& job, const std::string& job_fp) {
     std::string why;
     const StampCheck c = check_stamp(path, frame_parts(path), frame_fingerprint(job_fp, f, time), &why);
     if (c == StampCheck::complete) {
-      s.skipped.emplace_back(f, path.string());
+      s.skipped.push_back(f);
       continue;
     }
     s.todo.push_back(f);
@@ -127,16 +138,11 @@ MeshSequenceReport mesh_sequence(const MeshSequenceJob& job, FrameSession& sessi
   output_kind(first, "-o");
   check_output_directory(first.parent_path(), "-o");
   const std::string job_fp = mesh_job_fingerprint(job.mesh);
-  std::vector<int> all;
-  for (int f = job.range.first; f <= job.range.last; ++f) all.push_back(f);
-  std::vector<fs::path> outputs;
-  for (int f : all)
-    for (const fs::path& p : frame_parts(job.pattern.path(f))) outputs.push_back(p);
-  say_removed_temps(outputs);
+  sweep_dead_temps(job);
   const Scan scan = scan_frames(job, job_fp);
 
   Progress progress(static_cast<int>(scan.todo.size()), tty, stderr, "frames", "meshed");
-  for (const auto& [f, p] : scan.skipped) progress.skipped(f, p);
+  for (int f : scan.skipped) progress.skipped(f, job.pattern.path(f).string());
   for (const auto& [f, why] : scan.redone)
     progress.line("frame " + std::to_string(f) + ": " + job.pattern.path(f).string() + " is not a complete frame (" +
                   why + "), meshing it again");
@@ -148,7 +154,7 @@ MeshSequenceReport mesh_sequence(const MeshSequenceJob& job, FrameSession& sessi
     const MeshReport m = mesh_frame(job, session, f, job_fp);
     progress.rendered(f, since(t0));
     ++r.meshed;
-    std::printf("%s\n", m.output.c_str());
+    for (const std::string& path : m.written) std::printf("%s\n", path.c_str());
     std::fflush(stdout);
     if (job.mesh.frame.verbose) progress.line(mesh_summary(m));
     if (!m.check.ok() && m.format != MeshFormat::vdb)

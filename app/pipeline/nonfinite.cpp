@@ -23,7 +23,7 @@ long long count_nonfinite_pixels(const Image& a, const Image* b) {
 void guard_nonfinite(const NonfiniteGuard& g, long long nonfinite, long long pixels) {
   if (nonfinite <= 0) return;
   const std::string what = (g.where.empty() ? "" : g.where + ": ") + std::to_string(nonfinite) + " of " +
-                           std::to_string(pixels) + " pixels have NaN/Inf values";
+                           std::to_string(pixels) + " " + g.unit + " have NaN/Inf values";
   if (g.strict)
     throw Error({Exit::threshold, g.input, 0, "--strict", g.consequence.empty() ? what : what + "; " + g.consequence,
                  {}, {}});

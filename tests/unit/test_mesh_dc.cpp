@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <stdexcept>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -115,6 +117,31 @@ TEST(MeshSparseField, CostGrowsWithAreaNotVolume) {
   EXPECT_LT(static_cast<double>(b.evals) / a.evals, 5.0) << a.evals << " -> " << b.evals;
   const double dense = std::pow(b.grid.cells.x + 1.0, 3.0);
   EXPECT_LT(static_cast<double>(b.evals), dense);
+}
+
+// The memory budget's hook: told the bricks ahead before they are
+// sampled, from the first level on, and a throw there stops the sampling.
+TEST(MeshSparseField, TheBricksAheadAreToldBeforeTheyAreSampled) {
+  const Field sphere = [](const glm::vec3& p) { return glm::length(p) - 1.0f; };
+  const MeshGrid grid = mesh_grid({-1.02, -1.02, -1.02}, {1.02, 1.02, 1.02}, 128, 0.0);
+  Analytic src(sphere, grid);
+  SparseOptions opts;
+  std::vector<double> told;
+  opts.bricks_ahead = [&](double bricks) { told.push_back(bricks); };
+  const SparseField f = sample_sparse(src, grid, opts);
+  ASSERT_GE(told.size(), 3u);
+  EXPECT_EQ(told.back(), static_cast<double>(f.bricks.size())) << "the last count is exact";
+  // Each level's estimate is of the surface's size, not the volume's.
+  const double bricks = static_cast<double>(f.bricks.size());
+  for (double t : told) {
+    EXPECT_GT(t, 0.5 * bricks) << t;
+    EXPECT_LT(t, 2.0 * bricks) << t;
+  }
+  // Over budget at the first level: stopped after its cells, no brick sampled.
+  Analytic stopped(sphere, grid);
+  opts.bricks_ahead = [](double) { throw std::runtime_error("over budget"); };
+  EXPECT_THROW(sample_sparse(stopped, grid, opts), std::runtime_error);
+  EXPECT_LE(stopped.evals, 512u);
 }
 
 TEST(MeshDualContour, ABoxKeepsItsCornersAndEdges) {
