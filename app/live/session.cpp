@@ -28,6 +28,13 @@ void Session::set_preset(const std::string& name) {
   scene_.quality.checker_filter = cur.checker_filter;
 }
 
+bool Session::reads_keyboard() const {
+  for (size_t i = 0; graph_ && i < graph_->size(); ++i)
+    for (const GraphInput& in : graph_->pass(i).inputs)
+      if (in.kind == InputKind::keyboard) return true;
+  return false;
+}
+
 Session::PreparedReload Session::prepare(bool from_disk) {
   PreparedReload p;
   ReloadResult& r = p.result;

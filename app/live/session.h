@@ -103,6 +103,8 @@ class Session {
   const Scene& file_scene() const { return file_scene_; }  // writeback diffs against it
   bool shadertoy() const { return !scene_.shadertoy_file.empty() || scene_.passes != nullptr; }
   bool has_toml() const { return scene_.file.extension() == ".toml"; }
+  // The last good build binds Shadertoy's keyboard texture to some pass.
+  bool reads_keyboard() const;
   // Files read with the scene itself (the TOML, its graph's JSON): a save
   // of one is a reload(true).
   std::vector<std::filesystem::path> scene_files() const;
