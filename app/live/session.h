@@ -50,6 +50,10 @@ struct ReloadResult {
   double prune_ms = -1.0;
 };
 
+// The line the viewer shows for an error: its whole log follows it (on
+// stderr and in the error box), so the hint points there, not to -v.
+std::string shown_error(ErrorInfo e);
+
 class Session {
  public:
   explicit Session(SessionOptions opts) : opts_(std::move(opts)) {}
