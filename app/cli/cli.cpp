@@ -50,16 +50,19 @@ bool idiff_requested(const CLI::App& app) {
 }  // namespace
 
 int run_cli(int argc, char** argv) {
-  // `marchstudio help [SUBCOMMAND]` is `marchstudio [SUBCOMMAND] --help`.
+  // `marchstudio help [SUBCOMMAND]` is `marchstudio [SUBCOMMAND] --help`;
+  // `marchstudio waves.frag` (glslViewer's habit) is `marchstudio view waves.frag`.
   std::vector<std::string> words;
-  std::vector<char*> help_argv;
-  if (argc >= 2 && std::string(argv[1]) == "help") {
+  std::vector<char*> new_argv;
+  if (argc >= 2 && (std::string(argv[1]) == "help" || opens_in_viewer(argv[1]))) {
+    const bool help = std::string(argv[1]) == "help";
     words = {argv[0]};
-    for (int i = 2; i < argc; ++i) words.emplace_back(argv[i]);
-    words.emplace_back("--help");
-    for (std::string& w : words) help_argv.push_back(w.data());
-    argc = static_cast<int>(help_argv.size());
-    argv = help_argv.data();
+    if (!help) words.emplace_back("view");
+    for (int i = help ? 2 : 1; i < argc; ++i) words.emplace_back(argv[i]);
+    if (help) words.emplace_back("--help");
+    for (std::string& w : words) new_argv.push_back(w.data());
+    argc = static_cast<int>(new_argv.size());
+    argv = new_argv.data();
   }
   CLI::App app{"marchstudio: a GLSL raymarching studio for SDF scenes", "marchstudio"};
   app.set_version_flag("--version", kSoftware);
@@ -80,6 +83,9 @@ int run_cli(int argc, char** argv) {
   CLI::App* info = add_info_command(app, info_args);
   MeshArgs mesh_args;
   CLI::App* mesh = add_mesh_command(app, mesh_args);
+  // After the subcommands, which would inherit it.
+  app.footer("A scene or shader file alone, marchstudio FILE (.toml, .glsl, .frag, .fs, .json), opens it in the viewer "
+             "as marchstudio view FILE does.");
 
   if (const std::string bad = unknown_subcommand(app, argc, argv); !bad.empty()) {
     std::fprintf(stderr, "marchstudio: %s (see 'marchstudio --help')\n", bad.c_str());

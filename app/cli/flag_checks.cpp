@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "cli/glslviewer_flags.h"
 #include "core/error.h"
 #include "scene/suggest.h"
 
@@ -118,7 +119,12 @@ std::string unknown_subcommand(const CLI::App& app, int argc, char** argv) {
     if (sub->get_name() == argv[1]) return {};
     names.push_back(sub->get_name());
   }
-  return "unknown subcommand '" + std::string(argv[1]) + "'" + hint_for(argv[1], names) + "; one of " + joined(names);
+  std::string out = "unknown subcommand '" + std::string(argv[1]) + "'" + hint_for(argv[1], names) + "; one of " +
+                    joined(names);
+  // A scene or shader that is not there (one that is opens in the viewer).
+  if (is_input_name(argv[1]))
+    out += "; to open a file: marchstudio view FILE, or marchstudio render FILE for an image";
+  return out;
 }
 
 std::string explain_extras(const CLI::App& app, const CLI::ExtrasError& e) {

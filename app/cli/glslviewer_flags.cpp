@@ -29,6 +29,16 @@ std::string export_file(std::string_view v) {
 
 }  // namespace
 
+bool is_input_name(const std::string& arg) {
+  const std::string ext = std::filesystem::path(arg).extension().string();
+  return ext == ".toml" || ext == ".glsl" || ext == ".frag" || ext == ".fs" || ext == ".json";
+}
+
+bool opens_in_viewer(const std::string& arg) {
+  std::error_code ec;
+  return is_input_name(arg) && std::filesystem::is_regular_file(arg, ec);
+}
+
 void refuse_image_inputs(const std::vector<std::string>& inputs) {
   for (const std::string& in : inputs)
     if (is_image_name(in))

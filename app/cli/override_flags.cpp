@@ -128,7 +128,8 @@ void add_override_flags(CLI::App* cmd, Overrides& out) {
            }
          },
          "Override a scene key before it is checked, e.g. camera.fov=30, materials.ball.color=[1,0,0], "
-         "lights[0].intensity=3, quality.preset=fast (repeatable; docs/usage.md#overrides)")
+         "lights[0].intensity=3, quality.preset=fast; it beats an [[animation]] of the key (repeatable; "
+         "docs/usage.md#overrides)")
       ->allow_extra_args(false);  // one value each: `--set a=1 scene.toml` leaves the scene alone
   cmd->add_option_function<std::vector<std::string>>(
          "--uniform",

@@ -4,6 +4,7 @@
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace ms {
 
@@ -36,6 +37,11 @@ class Error : public std::runtime_error {
  private:
   ErrorInfo info_;
 };
+
+// The hint's words for the rest of a compile log (ErrorInfo::detail): the
+// command line prints the log under -v; the viewer shows it anyway and says
+// so in their place (live/session.h).
+inline constexpr std::string_view kVerboseHint = "-v prints them all";
 
 // "file:line: what (hint)", the line printed after "marchstudio: ".
 std::string format_error(const ErrorInfo& info);

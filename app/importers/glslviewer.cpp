@@ -256,9 +256,11 @@ ShaderSource assemble_glslviewer_pass(const ShaderProject& p, size_t index, cons
       "uniform vec2 uJitter;\n"
       "uniform vec2 uPixelOffset;\n"
       "layout(location = 0) out vec4 outColor;\n"
-      "vec4 msFragColor;\n"
-      "vec4 msFragData[4];\n"  // gl_FragData: [0] is the pass's colour, as with one draw buffer
-      "vec4 msFragCoord;\n"
+      // Initialised here, not only in main(), which comes after the user's
+      // functions: a read there must not warn of these names, which are ours.
+      "vec4 msFragColor = vec4(0.0);\n"
+      "vec4 msFragData[4] = vec4[4](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));\n"  // [0] is the pass's colour
+      "vec4 msFragCoord = vec4(0.0);\n"
       "#define varying\n"
       "#define texture2D texture\n"
       "#define texture2DProj textureProj\n"
@@ -285,7 +287,7 @@ ShaderSource assemble_glslviewer_pass(const ShaderProject& p, size_t index, cons
     if (name == "v_color") root += "  v_color = " + type + "(1.0);\n";
     if (name == "v_normal") root += "  v_normal = vec3(0.0, 0.0, 1.0);\n";
   }
-  root += "  msFragColor = vec4(0.0);\n  msFragData[0] = vec4(0.0);\n  msGlslViewerMain();\n";
+  root += "  msGlslViewerMain();\n";
   const std::vector<std::string> words = tokens(strip_comments(pass.code));
   if (std::find(words.begin(), words.end(), "gl_FragData") != words.end()) root += "  msFragColor = msFragData[0];\n";
   // The main pass as Shadertoy's Image pass writes (one home for the

@@ -43,8 +43,10 @@ std::string wrapper_head(const ProjectPass& pass) {
        "uniform vec2      uPixelOffset;          // marchstudio: a tile's lower-left pixel in the image\n"
        "layout(location = 0) out vec4 outColor;\n"
        // gl_FragCoord in the whole image, also in a tile's framebuffer
-       // (render/tiled_still.h): main() sets it before mainImage runs.
-       "vec4 msFragCoord;\n"
+       // (render/tiled_still.h): main() sets it before mainImage runs. The
+       // initialiser keeps a read in a function above main() from warning
+       // of a name that is ours.
+       "vec4 msFragCoord = vec4(0.0);\n"
        "#define gl_FragCoord msFragCoord\n";
   return s;
 }

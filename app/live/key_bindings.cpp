@@ -22,30 +22,44 @@ bool imgui_wants_mouse() { return ImGui::GetCurrentContext() && ImGui::GetIO().W
 
 void on_key(GLFWwindow* w, int key, int, int action, int mods) {
   if (imgui_wants_keys()) return;
-  ViewState& s = state_of(w);
-  // A Shadertoy shader gets every key; of the viewer's own, only those
-  // outside the keys shaders read (Escape, Tab, Home, F-keys) still act.
-  if (s.shadertoy) {
-    keyboard_event(s.keys, key, action);
-    if (action != GLFW_PRESS) return;
-    switch (key) {
-      case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
-      case GLFW_KEY_HOME: s.want_rewind = true; break;
-      case GLFW_KEY_TAB:
-      case GLFW_KEY_F1: s.show_panel = !s.show_panel; break;
-      case GLFW_KEY_F2: s.paused = !s.paused; break;
-      case GLFW_KEY_F5: s.want_disk_reload = true; break;
-      case GLFW_KEY_F9: s.want_record_toggle = true; break;
-      case GLFW_KEY_F8: s.want_mesh = true; break;  // M is the shader's: the export says why there is no mesh
-      case GLFW_KEY_F12:
-        if (mods & GLFW_MOD_SHIFT) s.want_window_shot = true;
-        else s.want_shot = true;
-        break;
-      default: break;
-    }
-    return;
+  if (key_event(state_of(w), key, action, mods)) glfwSetWindowShouldClose(w, GLFW_TRUE);
+}
+
+// A shader that reads the keyboard gets every key; of the viewer's own,
+// only those outside the keys shaders read (Escape, Tab, Home, F-keys) act.
+bool shader_key_event(ViewState& s, int key, int action, int mods) {
+  keyboard_event(s.keys, key, action);
+  if (action != GLFW_PRESS) return false;
+  switch (key) {
+    case GLFW_KEY_ESCAPE: return true;
+    case GLFW_KEY_HOME: s.want_rewind = true; break;
+    case GLFW_KEY_TAB:
+    case GLFW_KEY_F1: s.show_panel = !s.show_panel; break;
+    case GLFW_KEY_F2: s.paused = !s.paused; break;
+    case GLFW_KEY_F5: s.want_disk_reload = true; break;
+    case GLFW_KEY_F9: s.want_record_toggle = true; break;
+    case GLFW_KEY_F8: s.want_mesh = true; break;  // M is the shader's: the export says why there is no mesh
+    case GLFW_KEY_F12:
+      if (mods & GLFW_MOD_SHIFT) s.want_window_shot = true;
+      else s.want_shot = true;
+      break;
+    default: break;
   }
-  if (action == GLFW_RELEASE) return;
+  return false;
+}
+
+// Keys that act on a scene's camera or debug view: a shader owns its camera
+// and has no debug views, so for one they do nothing.
+bool scene_only_key(int key, bool ctrl) {
+  if (key >= GLFW_KEY_0 && key < GLFW_KEY_0 + kDebugViews) return !ctrl;
+  return key == GLFW_KEY_R || key == GLFW_KEY_C || key == GLFW_KEY_V;
+}
+
+}  // namespace
+
+bool key_event(ViewState& s, int key, int action, int mods) {
+  if (s.shader_keys) return shader_key_event(s, key, action, mods);
+  if (action == GLFW_RELEASE) return false;
   const bool shift = mods & GLFW_MOD_SHIFT, ctrl = mods & GLFW_MOD_CONTROL;
   const bool press = action == GLFW_PRESS;  // repeat only for stepping time
   switch (key) {
@@ -53,17 +67,17 @@ void on_key(GLFWwindow* w, int key, int, int action, int mods) {
     case GLFW_KEY_RIGHT: {
       const double step = (shift ? 1.0 : kTimeStep) * (key == GLFW_KEY_LEFT ? -1.0 : 1.0);
       s.time = std::max(std::min(0.0, s.start_time), s.time + step);  // a negative start stays reachable
-      return;
+      return false;
     }
     default: break;
   }
-  if (!press) return;
+  if (!press || (s.shadertoy && scene_only_key(key, ctrl))) return false;
   if (key >= GLFW_KEY_0 && key < GLFW_KEY_0 + kDebugViews && !ctrl) {
     s.debug_view = key - GLFW_KEY_0;
-    return;
+    return false;
   }
   switch (key) {
-    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
+    case GLFW_KEY_ESCAPE: return true;
     case GLFW_KEY_SPACE: s.paused = !s.paused; break;
     case GLFW_KEY_HOME: s.want_rewind = true; break;
     case GLFW_KEY_R: s.camera = s.scene_camera; break;
@@ -88,7 +102,10 @@ void on_key(GLFWwindow* w, int key, int, int action, int mods) {
       break;
     default: break;
   }
+  return false;
 }
+
+namespace {
 
 void on_button(GLFWwindow* w, int button, int action, int mods) {
   ViewState& s = state_of(w);

@@ -17,6 +17,12 @@ bool same_camera(const Camera& a, const Camera& b) {
 
 }  // namespace
 
+std::string shown_error(ErrorInfo e) {
+  if (const size_t at = e.hint.find(kVerboseHint); at != std::string::npos && !e.detail.empty())
+    e.hint.replace(at, kVerboseHint.size(), "the full log is below");
+  return format_error(e);
+}
+
 void Session::set_preset(const std::string& name) {
   preset_ = name;
   if (!disk_ok_) return;  // reload(true) applies it to what it reads
@@ -26,6 +32,13 @@ void Session::set_preset(const std::string& name) {
   scene_.quality.ao = cur.ao;
   scene_.quality.reflections = cur.reflections;
   scene_.quality.checker_filter = cur.checker_filter;
+}
+
+bool Session::reads_keyboard() const {
+  for (size_t i = 0; graph_ && i < graph_->size(); ++i)
+    for (const GraphInput& in : graph_->pass(i).inputs)
+      if (in.kind == InputKind::keyboard) return true;
+  return false;
 }
 
 Session::PreparedReload Session::prepare(bool from_disk) {
@@ -197,7 +210,7 @@ std::shared_ptr<GraphField> Session::adopt_field(PreparedReload& p, ReloadResult
 }
 
 void Session::fail(const Error& e, ReloadResult& r) {
-  error_ = format_error(e.info());
+  error_ = shown_error(e.info());
   error_log_ = e.info().detail;
   error_file_ = e.info().file;
   r.ok = false;

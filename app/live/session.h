@@ -50,6 +50,10 @@ struct ReloadResult {
   double prune_ms = -1.0;
 };
 
+// The line the viewer shows for an error: its whole log follows it (on
+// stderr and in the error box), so the hint points there, not to -v.
+std::string shown_error(ErrorInfo e);
+
 class Session {
  public:
   explicit Session(SessionOptions opts) : opts_(std::move(opts)) {}
@@ -103,6 +107,8 @@ class Session {
   const Scene& file_scene() const { return file_scene_; }  // writeback diffs against it
   bool shadertoy() const { return !scene_.shadertoy_file.empty() || scene_.passes != nullptr; }
   bool has_toml() const { return scene_.file.extension() == ".toml"; }
+  // The last good build binds Shadertoy's keyboard texture to some pass.
+  bool reads_keyboard() const;
   // Files read with the scene itself (the TOML, its graph's JSON): a save
   // of one is a reload(true).
   std::vector<std::filesystem::path> scene_files() const;

@@ -29,6 +29,7 @@ struct ViewState {
   bool show_help = false;
   float render_scale = 1.0f;  // render at a fraction of the window, for slow GPUs
   bool shadertoy = false;
+  bool shader_keys = false;  // the shader reads the keyboard: it takes the letter keys (live/key_bindings.h)
 
   // Mouse drag in progress.
   Drag drag = Drag::none;

@@ -97,6 +97,7 @@ void Viewer::finish_reload(const Compiling& c, const ReloadResult& r, double war
   watcher_.watch(session_.watched_files());
   watcher_.set_match_any(!r.ok);
   if (!r.ok) report_failure(r);
+  s_.shader_keys = session_.reads_keyboard();  // letters are the viewer's unless the shader reads them
   if (r.ok)  // docs/viewer.md#folding, #compute
     log_.line(std::string("program fused=") + (session_.fused() ? "1" : "0") + " dispatch=" + drawer_->dispatch());
   if (r.ok && r.graph)  // docs/viewer.md#graphs: a parameter or transform saved compiles nothing

@@ -132,6 +132,10 @@ void report_input_warnings(const std::vector<std::string>& warnings, const std::
   }
 }
 
+void report_scene_notes(const Scene& scene, const std::string& input) {
+  for (const std::string& n : scene.notes) std::fprintf(stderr, "marchstudio: %s: note: %s\n", input.c_str(), n.c_str());
+}
+
 std::vector<std::string> unbound_warnings(const PassGraph& graph) {
   std::vector<std::string> out;
   for (const std::string& c : graph.unbound_sampled()) out.push_back(c + " is sampled but nothing is bound to it: it reads black");

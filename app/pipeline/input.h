@@ -52,6 +52,9 @@ void apply_shadertoy_options(LoadedInput& in, const ShadertoyOptions& f);
 // `strict` the first is an error (exit 1) instead. Also the channels a
 // pass samples with nothing bound, once the graph exists.
 void report_input_warnings(const std::vector<std::string>& warnings, const std::string& input, bool strict);
+// Under -v: each of scene.notes (how the scene was read) as
+// "marchstudio: <input>: note: ...".
+void report_scene_notes(const Scene& scene, const std::string& input);
 // The warnings of a graph's channels sampled with nothing bound.
 std::vector<std::string> unbound_warnings(const PassGraph& graph);
 

@@ -50,7 +50,7 @@ std::string program_log(GLuint program) { return info_log(program, glGetProgrami
   if (!first && !diags.empty()) first = &diags.front();
   if (!first) fail_input(stage + " failed with an empty log", src.files.empty() ? "" : src.files[0]);
   std::string hint = first->suggestion;
-  if (errors > 1) hint += (hint.empty() ? "+" : "; +") + std::to_string(errors - 1) + " more; -v prints them all";
+  if (errors > 1) hint += (hint.empty() ? "+" : "; +") + std::to_string(errors - 1) + " more; " + std::string(kVerboseHint);
   // The whole log, mapped, for -v: what "+N more" stands for.
   throw Error(ErrorInfo{Exit::bad_input, first->file, first->line, {}, stage + " error: " + first->message, hint,
                         format_diagnostics(diags)});

@@ -335,12 +335,15 @@ Scene parse_scene(std::string_view toml_text, const fs::path& display_path, cons
   toml::table root = parse_toml(toml_text, r);
   // Before validation, so an override meets every check the file does.
   const std::vector<std::string> keys = apply_overrides(root, overrides);
+  Scene scene;
   try {
-    return read_scene(r, root, display_path);
+    scene = read_scene(r, root, display_path);
   } catch (const Error& e) {
     if (overrides.empty()) throw;
     throw Error(blame_override(e.info(), overrides, keys));
   }
+  drop_overridden_tracks(scene, overrides, keys);
+  return scene;
 }
 
 Scene load_scene(const fs::path& toml_path, const SceneOverrides& overrides) {

@@ -98,6 +98,14 @@ bool under(const std::string& key, const std::string& base) {
          (key[base.size()] == '.' || key[base.size()] == '[');
 }
 
+// The last override of `key`, of a part of it or of a table holding it (the
+// one whose value the scene holds), or keys.size() when none touches it.
+std::size_t override_of(const std::string& key, const std::vector<std::string>& keys) {
+  for (std::size_t i = keys.size(); i-- > 0;)
+    if (keys[i] == key || under(key, keys[i]) || under(keys[i], key)) return i;
+  return keys.size();
+}
+
 }  // namespace
 
 std::vector<std::string> apply_overrides(toml::table& root, const SceneOverrides& overrides) {
@@ -106,16 +114,26 @@ std::vector<std::string> apply_overrides(toml::table& root, const SceneOverrides
   return keys;
 }
 
-ErrorInfo blame_override(ErrorInfo e, const SceneOverrides& overrides, const std::vector<std::string>& keys) {
-  // The last override of a key is the one whose value the scene holds.
-  for (std::size_t i = keys.size(); i-- > 0;) {
-    const std::string& k = keys[i];
-    if (e.key != k && !under(e.key, k) && !under(k, e.key)) continue;
-    e.file.clear();
-    e.line = 0;
-    e.key = overrides[i].flag;
-    break;
+void drop_overridden_tracks(Scene& scene, const SceneOverrides& overrides, const std::vector<std::string>& keys) {
+  std::vector<AnimationTrack>& tracks = scene.animation;
+  for (auto t = tracks.begin(); t != tracks.end();) {
+    const std::size_t i = override_of(t->target, keys);
+    if (i == keys.size()) {
+      ++t;
+      continue;
+    }
+    scene.notes.push_back(overrides[i].flag + " replaces the [[animation]] of " + quote(t->target) + " at line " +
+                          std::to_string(t->line) + ": the set value holds at every time");
+    t = tracks.erase(t);
   }
+}
+
+ErrorInfo blame_override(ErrorInfo e, const SceneOverrides& overrides, const std::vector<std::string>& keys) {
+  const std::size_t i = override_of(e.key, keys);
+  if (i == keys.size()) return e;
+  e.file.clear();
+  e.line = 0;
+  e.key = overrides[i].flag;
   return e;
 }
 

@@ -16,6 +16,10 @@
 // whose `name` is that word (`materials.ball`). The last step replaces or
 // adds the value; a value array's element can be replaced by index
 // (`camera.position[1]`). cli/override_flags.h parses the flags.
+//
+// An override beats the file's [[animation]] too: a track animating an
+// overridden value (or one inside or around it) is dropped, so the set
+// value holds at every time, and -v says so (Scene::notes).
 #pragma once
 #include <cstddef>
 #include <string>
@@ -24,6 +28,7 @@
 #include <toml++/toml.h>
 
 #include "core/error.h"
+#include "scene/scene.h"
 
 namespace ms {
 
@@ -46,6 +51,11 @@ using SceneOverrides = std::vector<SceneOverride>;
 // blame_override(). A path that cannot be applied (a missing entry, a step
 // into a number) is an ms::Error naming the flag.
 std::vector<std::string> apply_overrides(toml::table& root, const SceneOverrides& overrides);
+
+// Drops each track of scene.animation whose target an override set (the
+// same value, a part of it or a table holding it; `keys` as
+// apply_overrides() returned them), with a note in scene.notes.
+void drop_overridden_tracks(Scene& scene, const SceneOverrides& overrides, const std::vector<std::string>& keys);
 
 // An error of the scene's validation at or under an overridden key is that
 // override's fault: the same message, located at its flag rather than at a

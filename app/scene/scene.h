@@ -173,6 +173,9 @@ struct Scene {
   Sky sky;
   Bloom bloom;                     // [post.bloom]
   std::vector<AnimationTrack> animation;  // applied by animated(scene, time)
+  // How the scene was read, for -v: "--set camera.fov replaces ..." for
+  // each [[animation]] track a --set dropped (scene/overrides.h).
+  std::vector<std::string> notes;
 };
 
 }  // namespace ms

@@ -152,13 +152,15 @@ std::vector<fs::path> expand_input(const Reader& r, int line, const std::string&
   const fs::path p = (base / value).lexically_normal();
   if (!is_glob(value)) return {p};
   const std::string pattern = p.filename().string();
+  // A suite in the working directory has an empty base: its folder is ".".
+  const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
   std::vector<fs::path> out;
   std::error_code ec;
-  for (fs::directory_iterator it(p.parent_path(), ec), end; !ec && it != end; it.increment(ec)) {
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const fs::path f = it->path();
     if (::fnmatch(pattern.c_str(), f.filename().c_str(), FNM_PERIOD) != 0 || !fs::is_regular_file(f, ec)) continue;
     if (std::count(exclude.begin(), exclude.end(), f.stem().string())) continue;
-    out.push_back(f);
+    out.push_back(p.parent_path() / f.filename());
   }
   std::sort(out.begin(), out.end());
   if (out.empty()) r.fail(line, key, "no file matches " + quote(p.string()));

@@ -234,6 +234,9 @@ TEST_F(Viewer, FailedBuildCarriesTheWholeLog) {
   const std::string line = wait_for_line(log(), "^reload failed 1 ", 20);
   ASSERT_FALSE(line.empty()) << read_file(log());
   EXPECT_NE(line.find("more"), std::string::npos) << "two errors should give a '+N more' hint: " << line;
+  // The log follows, here as in the red box: the hint says so, not "-v".
+  EXPECT_NE(line.find("the full log is below"), std::string::npos) << line;
+  EXPECT_EQ(line.find("-v prints"), std::string::npos) << line;
   const std::string map = (dir / "seed.glsl").string();
   bool one = false, two = false;
   for (const std::string& l : file_lines(log())) {
