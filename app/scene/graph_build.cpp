@@ -1,5 +1,6 @@
 #include "scene/graph_build.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -8,6 +9,7 @@
 #include <glm/matrix.hpp>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "io/input_file.h"
 #include "scene/graph_vocab.h"
 #include "scene/suggest.h"
@@ -71,7 +73,7 @@ class Builder {
 
  private:
   [[noreturn]] void fail(int v, const std::string& what, const std::string& hint = {}) const {
-    fail_input(what, display_, doc_.at(v).line, prefix_ + doc_.pointer(v), hint);
+    fail_input(what, display_, doc_.at(v).line, prefix_ + shown_pointer(doc_, v), hint);
   }
 
   // A node: a leaf is made at once; an operator is pushed to collect its children.
@@ -171,7 +173,7 @@ class Builder {
 
   void check_keys(int v) const {
     for (int c = doc_.at(v).first; c != -1; c = doc_.at(c).next) {
-      const std::string& k = doc_.at(c).key;
+      const std::string_view k = doc_.key(c);
       bool known = false;
       for (std::string_view n : kNodeKeys) known = known || n == k;
       if (known) continue;
@@ -187,12 +189,12 @@ class Builder {
 
   const std::vector<GraphParam>* params_of(int v) const {
     if (const int s = doc_.member(v, "sdf"); s != -1 && doc_.at(s).kind == JsonKind::string)
-      if (const int fn = find_primitive(doc_.at(s).text); fn != -1) return &graph_primitives()[static_cast<std::size_t>(fn)].params;
+      if (const int fn = find_primitive(doc_.text(s)); fn != -1) return &graph_primitives()[static_cast<std::size_t>(fn)].params;
     if (const int o = doc_.member(v, "op"); o != -1 && doc_.at(o).kind == JsonKind::string)
-      if (const int fn = find_operator(doc_.at(o).text); fn != -1) return &graph_operators()[static_cast<std::size_t>(fn)].params;
+      if (const int fn = find_operator(doc_.text(o)); fn != -1) return &graph_operators()[static_cast<std::size_t>(fn)].params;
     return nullptr;
   }
-  bool is_param(int v, const std::string& k) const {
+  bool is_param(int v, std::string_view k) const {
     const std::vector<GraphParam>* defs = params_of(v);
     if (!defs) return true;  // the unknown function is reported first
     for (const GraphParam& p : *defs)
@@ -203,7 +205,7 @@ class Builder {
   template <class T>
   int name_of(int v, std::span<const T> list, const char* what) const {
     if (doc_.at(v).kind != JsonKind::string) fail(v, std::string("the ") + what + " must be named by a string");
-    const std::string& name = doc_.at(v).text;
+    const std::string_view name = doc_.text(v);
     for (std::size_t i = 0; i < list.size(); ++i)
       if (list[i].name == name) return static_cast<int>(i);
     std::vector<std::string_view> names;
@@ -258,10 +260,10 @@ class Builder {
     if (doc_.at(m).kind != JsonKind::string) fail(m, "'material' must be a string naming a [[materials]] entry");
     std::vector<std::string_view> names;
     for (std::size_t i = 0; i < mats_.size(); ++i) {
-      if (mats_[i].name == doc_.at(m).text) return static_cast<int>(i);
+      if (mats_[i].name == doc_.text(m)) return static_cast<int>(i);
       names.push_back(mats_[i].name);
     }
-    fail(m, "unknown material " + quote(doc_.at(m).text), did_you_mean(doc_.at(m).text, names));
+    fail(m, "unknown material " + quote(doc_.text(m)), did_you_mean(doc_.text(m), names));
   }
 
   const JsonDoc& doc_;
@@ -337,13 +339,38 @@ SceneGraph build_graph(const JsonDoc& doc, int node, const std::string& display,
   return Builder(doc, display, prefix, materials).build(node);
 }
 
+std::string shown_pointer(const JsonDoc& doc, int v) {
+  constexpr std::size_t kHead = 4, kTail = 8;
+  const std::string full = doc.pointer(v);
+  std::vector<std::string_view> steps;
+  for (std::size_t at = 0; at < full.size();) {
+    const std::size_t end = std::min(full.find('/', at + 1), full.size());
+    steps.push_back(std::string_view(full).substr(at + 1, end - at - 1));
+    at = end;
+  }
+  std::string out;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (steps.size() > kHead + kTail + 1 && i == kHead) {
+      out += "/...";
+      i = steps.size() - kTail - 1;
+      continue;
+    }
+    out += "/" + printable(steps[i]);
+  }
+  return out;
+}
+
 SceneGraph load_graph_file(const std::filesystem::path& file, const std::vector<Material>& materials) {
   const std::string display = file.string();
-  const JsonDoc doc = parse_json_doc(read_input_file(file, "graph file"), display);
+  // A node takes two values or more ("sdf" and its object, or "op", its
+  // object, its children), and an operator's frame two levels (its object
+  // and the children's array).
+  const JsonCost builder{sizeof(GraphNode) / 2 + sizeof(float), sizeof(Frame) / 2};
+  const JsonDoc doc = parse_json_doc(read_input_file(file, "graph file"), display, builder);
   if (doc.at(0).kind != JsonKind::object) fail_input("a graph file must be an object {\"root\": NODE}", display, 1);
   for (int c = doc.at(0).first; c != -1; c = doc.at(c).next)
-    if (doc.at(c).key != "root")
-      fail_input("unknown key " + quote(doc.at(c).key), display, doc.at(c).line, doc.pointer(c),
+    if (doc.key(c) != "root")
+      fail_input("unknown key " + quote(doc.key(c)), display, doc.at(c).line, shown_pointer(doc, c),
                  "a graph file holds only \"root\"");
   const int root = doc.member(0, "root");
   if (root == -1) fail_input("missing \"root\"", display, 1, "", "a graph file is {\"root\": NODE}");
