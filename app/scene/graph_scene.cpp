@@ -21,7 +21,7 @@ namespace {
 // The box the tracer marches: the graph's, grown so that a hit's
 // tolerance and the normals' offsets near the surface stay inside.
 Bounds bounds_of(const GraphBox& box) {
-  const float pad = 1e-3f * glm::length(box.max - box.min) + 1e-3f;
+  const float pad = static_cast<float>(1e-3 * glm::length(glm::dvec3(box.max - box.min)) + 1e-3);  // no float overflow
   Bounds b;
   b.kind = BoundsKind::box;
   b.min = box.min - pad;

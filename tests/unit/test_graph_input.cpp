@@ -1,7 +1,8 @@
 // The graph reader against hostile input: the JSON document's size is
 // checked from the text before it is allocated, and a value costs a fixed
-// few bytes; names and pointers in error lines are cut, so a megabyte key
-// is not echoed.
+// few bytes; a finite graph too large for float is refused at the node
+// that overflows, with its cause, not called unbounded; names and pointers
+// in error lines are cut, so a megabyte key is not echoed.
 #include <functional>
 #include <string>
 #include <vector>
@@ -64,6 +65,35 @@ TEST(JsonBudget, DepthAndCountAreRefusedByNameBeforeTheParse) {
             std::string::npos);
   // Within the budget the same texts parse.
   EXPECT_EQ(ms::parse_json_doc(wide, "w.json", {}, 1e9).values.size(), 100002u);
+}
+
+TEST(GraphOverflow, AHugeRadiusIsNamedAtItsNodeNotCalledUnbounded) {
+  const std::string e = graph_error(node("{\"op\": \"opUnion\", \"children\": [{\"sdf\": \"sdSphere\", \"r\": 1}, "
+                                         "{\"sdf\": \"sdSphere\", \"r\": 1e30}]}"));
+  EXPECT_NE(e.find("g.json:1: /root/children/1: its box reaches 1e+30 along x, past the 1e+18"), std::string::npos)
+      << e;
+  EXPECT_EQ(e.find("unbounded"), std::string::npos) << e;
+}
+
+TEST(GraphOverflow, NestedScalesAreNamedAtTheScaleThatOverflows) {
+  const auto nested = [](const std::string& s) {
+    return node("{\"op\": \"opUnion\", \"scale\": " + s + ", \"children\": [{\"sdf\": \"sdSphere\", \"r\": 1}, "
+                "{\"sdf\": \"sdSphere\", \"r\": 1, \"scale\": " + s + "}]}");
+  };
+  const std::string big = graph_error(nested("1e30"));
+  EXPECT_NE(big.find("/root/scale: the scales from the root down to this node multiply to 1e+30, past the 1e+18"),
+            std::string::npos) << big;
+  const std::string tiny = graph_error(nested("1e-30"));
+  EXPECT_NE(tiny.find("/root/scale: the scales from the root down to this node multiply to 1e-30, under the 1e-18"),
+            std::string::npos) << tiny;
+  // Each within range, together past it: the inner scale is named.
+  const std::string two = graph_error(nested("1e10"));
+  EXPECT_NE(two.find("/root/children/1/scale: the scales from the root down to this node multiply to 1e+20"),
+            std::string::npos) << two;
+  for (const std::string* e : {&big, &tiny, &two}) EXPECT_EQ(e->find("unbounded"), std::string::npos) << *e;
+  // An infinite plane is still what it is.
+  EXPECT_NE(graph_error(node("{\"sdf\": \"sdPlane\", \"n\": [0, 1, 0], \"w\": 0}")).find("unbounded"),
+            std::string::npos);
 }
 
 TEST(GraphErrors, MegabyteNamesAreCutInTheLine) {
