@@ -39,19 +39,25 @@ int JsonDoc::member(int obj, std::string_view name) const {
 }
 
 std::string JsonDoc::pointer(int i) const {
-  std::vector<std::string> parts;
-  for (; at(i).parent != -1; i = at(i).parent) {
-    const JsonValue& v = at(i);
-    if (at(v.parent).kind == JsonKind::array) {
-      parts.push_back(std::to_string(v.index));
+  constexpr std::size_t kHead = 4, kTail = 8;
+  std::vector<int> steps;  // from the value up
+  for (; at(i).parent != -1; i = at(i).parent) steps.push_back(i);
+  std::string out;
+  for (std::size_t n = 0; n < steps.size(); ++n) {
+    if (steps.size() > kHead + kTail + 1 && n == kHead) {
+      out += "/...";
+      n = steps.size() - kTail - 1;
+      continue;
+    }
+    const int s = steps[steps.size() - 1 - n];
+    if (at(at(s).parent).kind == JsonKind::array) {
+      out += "/" + std::to_string(at(s).index);
       continue;
     }
     std::string k;  // RFC 6901: '~' as "~0", '/' as "~1"
-    for (char c : key(i)) k += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
-    parts.push_back(std::move(k));
+    for (char c : key(s)) k += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+    out += "/" + printable(k);
   }
-  std::string out;
-  for (auto it = parts.rbegin(); it != parts.rend(); ++it) out += "/" + *it;
   return out;
 }
 

@@ -47,7 +47,9 @@ struct JsonDoc {
   void set_key(JsonValue& v, std::string_view s);
   // The member named `key` of object `obj`, or -1.
   int member(int obj, std::string_view key) const;
-  // RFC 6901 pointer of value i: "" for the root, "/a/0/b" below it.
+  // RFC 6901 pointer of value i: "" for the root, "/a/0/b" below it. For
+  // error lines: each name cut as quote() cuts it, and a pointer of more
+  // than 13 steps shown as its first 4 and last 8 around "/...".
   std::string pointer(int i) const;
 };
 

@@ -78,7 +78,7 @@ class Builder {
 
  private:
   [[noreturn]] void fail(int v, const std::string& what, const std::string& hint = {}) const {
-    fail_input(what, display_, doc_.at(v).line, prefix_ + shown_pointer(doc_, v), hint);
+    fail_input(what, display_, doc_.at(v).line, prefix_ + doc_.pointer(v), hint);
   }
 
   // A node: a leaf is made at once; an operator is pushed to collect its children.
@@ -371,27 +371,6 @@ SceneGraph build_graph(const JsonDoc& doc, int node, const std::string& display,
   return Builder(doc, display, prefix, materials).build(node);
 }
 
-std::string shown_pointer(const JsonDoc& doc, int v) {
-  constexpr std::size_t kHead = 4, kTail = 8;
-  const std::string full = doc.pointer(v);
-  std::vector<std::string_view> steps;
-  for (std::size_t at = 0; at < full.size();) {
-    const std::size_t end = std::min(full.find('/', at + 1), full.size());
-    steps.push_back(std::string_view(full).substr(at + 1, end - at - 1));
-    at = end;
-  }
-  std::string out;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    if (steps.size() > kHead + kTail + 1 && i == kHead) {
-      out += "/...";
-      i = steps.size() - kTail - 1;
-      continue;
-    }
-    out += "/" + printable(steps[i]);
-  }
-  return out;
-}
-
 SceneGraph load_graph_file(const std::filesystem::path& file, const std::vector<Material>& materials) {
   const std::string display = file.string();
   // A node takes two values or more ("sdf" and its object, or "op", its
@@ -402,7 +381,7 @@ SceneGraph load_graph_file(const std::filesystem::path& file, const std::vector<
   if (doc.at(0).kind != JsonKind::object) fail_input("a graph file must be an object {\"root\": NODE}", display, 1);
   for (int c = doc.at(0).first; c != -1; c = doc.at(c).next)
     if (doc.key(c) != "root")
-      fail_input("unknown key " + quote(doc.key(c)), display, doc.at(c).line, shown_pointer(doc, c),
+      fail_input("unknown key " + quote(doc.key(c)), display, doc.at(c).line, doc.pointer(c),
                  "a graph file holds only \"root\"");
   const int root = doc.member(0, "root");
   if (root == -1) fail_input("missing \"root\"", display, 1, "", "a graph file is {\"root\": NODE}");

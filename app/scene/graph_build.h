@@ -27,10 +27,6 @@ SceneGraph build_graph(const JsonDoc& doc, int node, const std::string& display,
 // the builder keeps per value and level (io/json_doc.h's JsonCost).
 SceneGraph load_graph_file(const std::filesystem::path& file, const std::vector<Material>& materials);
 
-// doc.pointer(v) fit for an error line: each name cut as quote() cuts it,
-// and a deep one shown as its first and last steps around "/...".
-std::string shown_pointer(const JsonDoc& doc, int v);
-
 // [scene.graph] of a scene file, holding `root` as the file would.
 SceneGraph load_graph_table(const toml::table& graph, const std::string& display,
                             const std::vector<Material>& materials);

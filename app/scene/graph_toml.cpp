@@ -48,7 +48,7 @@ SceneGraph load_graph_table(const toml::table& graph, const std::string& display
   add_toml(doc, graph, -1, {}, last);
   for (int c = doc.at(0).first; c != -1; c = doc.at(c).next)
     if (doc.key(c) != "root")
-      fail_input("unknown key " + quote(doc.key(c)), display, doc.at(c).line, "scene.graph" + shown_pointer(doc, c),
+      fail_input("unknown key " + quote(doc.key(c)), display, doc.at(c).line, "scene.graph" + doc.pointer(c),
                  "[scene.graph] holds only root, as a graph file does");
   const int root = doc.member(0, "root");
   if (root == -1)
