@@ -21,9 +21,9 @@ CLI::Option* add_shader_dir_flag(CLI::App* cmd, std::string& dir) {
 
 CLI::Option* add_allow_include_flag(CLI::App* cmd, std::vector<std::string>& dirs) {
   return cmd->add_option("--allow-include", dirs,
-                         "Let #include and media (textures, audio, video, [sky] environment) read files under DIR "
-                         "too (default: the scene's directory and the shader dir; media: the scene's directory and "
-                         "--media-dir)");
+                         "Let #include (and scene.map, scene.graph, scene.shadertoy) and media (textures, audio, "
+                         "video, [sky] environment) read files under DIR too (default: the scene's directory and the "
+                         "shader dir; media: the scene's directory and --media-dir)");
 }
 
 CLI::Option* add_preset_flag(CLI::App* cmd, std::string& preset) {

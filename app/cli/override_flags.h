@@ -6,7 +6,7 @@
 //
 //   Overrides ov;
 //   add_override_flags(cmd, ov);                      // at flag set-up
-//   load_input_scene(input, disable, preset, ov.set); // pipeline/input.h
+//   load_input_scene(input, disable, opts, preset, ov.set); // pipeline/input.h
 //   opts.uniforms = ov.uniforms;                      // AssembleOptions
 #pragma once
 #include <string>

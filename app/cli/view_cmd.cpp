@@ -183,7 +183,7 @@ live::ScriptedDrag check_drag(const DragFlag& f, const fs::path& input, const Sc
     for (size_t i = 0; i < f.values.size(); ++i) d.to[i] = f.values[i];
     return d;
   }
-  Scene scene = load_scene(input, set);
+  Scene scene = load_scene(input, set, include_roots(input, opts));
   std::array<double, 3> cur{};
   int arity = 0;
   live::ScriptedDrag d = f.drag;

@@ -109,7 +109,7 @@ StampCheck check_stamp(const fs::path& file, const std::vector<fs::path>& parts,
     return say(StampCheck::unmarked, "its stamp cannot be read");
   }
   const int schema = doc.member(0, "schema"), fp = doc.member(0, "fingerprint"), files = doc.member(0, "files");
-  if (schema < 0 || doc.at(schema).text != kSchema || fp < 0 || files < 0 || doc.at(files).kind != JsonKind::array)
+  if (schema < 0 || doc.text(schema) != kSchema || fp < 0 || files < 0 || doc.at(files).kind != JsonKind::array)
     return say(StampCheck::unmarked, "its stamp cannot be read");
   if (doc.at(files).count != static_cast<int>(parts.size()))
     return say(StampCheck::damaged, "its stamp lists other files");
@@ -118,7 +118,7 @@ StampCheck check_stamp(const fs::path& file, const std::vector<fs::path>& parts,
     const JsonValue& e = doc.at(entry);
     const int name = doc.member(entry, "name"), bytes = doc.member(entry, "bytes"), hash = doc.member(entry, "hash");
     entry = e.next;
-    if (name < 0 || bytes < 0 || hash < 0 || doc.at(name).text != part.filename().string())
+    if (name < 0 || bytes < 0 || hash < 0 || doc.text(name) != part.filename().string())
       return say(StampCheck::damaged, "its stamp lists other files");
     Part now;
     std::string problem;
@@ -126,10 +126,10 @@ StampCheck check_stamp(const fs::path& file, const std::vector<fs::path>& parts,
     if (static_cast<double>(now.bytes) != doc.at(bytes).number)
       return say(StampCheck::damaged, part.filename().string() + " has " + std::to_string(now.bytes) + " bytes, " +
                                           std::to_string(static_cast<long long>(doc.at(bytes).number)) + " stamped");
-    if (now.hash != doc.at(hash).text)
+    if (now.hash != doc.text(hash))
       return say(StampCheck::damaged, part.filename().string() + " differs from what was written");
   }
-  if (doc.at(fp).text != fingerprint)
+  if (doc.text(fp) != fingerprint)
     return say(StampCheck::other_fingerprint, "its fingerprint differs: made from other inputs or settings");
   return StampCheck::complete;
 }

@@ -184,7 +184,9 @@ void Viewer::write_camera() {
   if (!session_.has_toml()) return s_.say("no scene TOML to write the camera to");
   const Scene& scene = session_.scene();
   try {
-    write_toml_edits(scene.file, camera_edits(s_.camera), [&](const std::string& text) { parse_scene(text, scene.file); });
+    write_toml_edits(scene.file, camera_edits(s_.camera), [&](const std::string& text) {
+      parse_scene(text, scene.file, {}, include_roots(scene.file, o_.assemble));
+    });
     log_.line("writeback camera " + scene.file.string());
     s_.say("camera written to " + scene.file.string());
   } catch (const Error& e) {
@@ -199,7 +201,9 @@ void Viewer::write_values() {
   const std::vector<TomlEdit> edits = scene_value_edits(session_.file_scene(), scene);
   if (edits.empty()) return s_.say("nothing changed since the file was read");
   try {
-    write_toml_edits(scene.file, edits, [&](const std::string& text) { parse_scene(text, scene.file); });
+    write_toml_edits(scene.file, edits, [&](const std::string& text) {
+      parse_scene(text, scene.file, {}, include_roots(scene.file, o_.assemble));
+    });
     log_.line("writeback values " + std::to_string(edits.size()) + " " + scene.file.string());
     s_.say(std::to_string(edits.size()) + " values written to " + scene.file.string());
   } catch (const Error& e) {

@@ -33,14 +33,14 @@ void apply_disable(Quality& q, const DisabledEffects& off) {
 
 }  // namespace
 
-LoadedInput load_input_scene(const fs::path& input, const DisabledEffects& disable,
+LoadedInput load_input_scene(const fs::path& input, const DisabledEffects& disable, const AssembleOptions& opts,
                              const std::string& preset, const SceneOverrides& overrides) {
   check_input_file(input, input.extension() == ".toml" ? "scene file" : "input file");
   LoadedInput in;
   in.path = input;
   in.overrides = overrides;
   if (input.extension() == ".toml") {
-    in.scene = load_scene(input, overrides);
+    in.scene = load_scene(input, overrides, include_roots(input, opts));
   } else {
     if (!overrides.empty())
       fail_input("--set needs a scene .toml: " + input.filename().string() + " has no scene keys", {}, 0,
@@ -96,7 +96,7 @@ void assemble_input(LoadedInput& in, const AssembleOptions& opts) {
 Scene read_input_scene(const fs::path& input, const AssembleOptions& opts, const SceneOverrides& overrides) {
   if (input.extension() != ".toml") return load_input(input, {}, opts, {}, overrides).scene;
   check_input_file(input, "scene file");
-  Scene s = load_scene(input, overrides);
+  Scene s = load_scene(input, overrides, include_roots(input, opts));
   if (!s.shadertoy_file.empty() || s.passes) request_zero_initialised_locals();  // as WebGL: before any context
   return s;
 }
@@ -144,7 +144,7 @@ std::vector<std::string> unbound_warnings(const PassGraph& graph) {
 
 LoadedInput load_input(const fs::path& input, const DisabledEffects& disable, const AssembleOptions& opts,
                        const std::string& preset, const SceneOverrides& overrides) {
-  LoadedInput in = load_input_scene(input, disable, preset, overrides);
+  LoadedInput in = load_input_scene(input, disable, opts, preset, overrides);
   assemble_input(in, opts);
   return in;
 }

@@ -76,9 +76,11 @@ LoadedInput load_input(const std::filesystem::path& input, const DisabledEffects
 
 // load_input() in two steps, for callers whose shader depends on the scene
 // (fuse_post) or who apply flags to it: the scene alone (no passes), then
-// its passes (for a Shadertoy input: the project read, media found).
+// its passes (for a Shadertoy input: the project read, media found). A
+// graph file is read only inside include_roots(input, opts).
 LoadedInput load_input_scene(const std::filesystem::path& input, const DisabledEffects& disable,
-                             const std::string& preset = {}, const SceneOverrides& overrides = {});
+                             const AssembleOptions& opts, const std::string& preset = {},
+                             const SceneOverrides& overrides = {});
 void assemble_input(LoadedInput& in, const AssembleOptions& opts);
 
 // The passes of `scene` read from `input`: an SDF scene's one pass (its

@@ -99,7 +99,7 @@ MeshReport mesh_frame(const MeshSequenceJob& job, FrameSession& session, int f, 
 
 std::string mesh_job_fingerprint(const MeshJob& job) {
   const FrameJob& fj = job.frame;
-  const LoadedInput in = load_input_scene(fj.input, fj.disable, fj.preset, fj.set);
+  const LoadedInput in = load_input_scene(fj.input, fj.disable, fj.assemble_options(), fj.preset, fj.set);
   Hash128 h;
   h.add(std::string(kSoftware) + " mesh fingerprint 1");
   h.add(read_input_file(in.path, "input file", {}, kMaxTextInput));

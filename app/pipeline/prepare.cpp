@@ -21,7 +21,7 @@ PreparedFrame prepare(const FrameJob& job, bool display) {
   PreparedFrame p;
   p.display = display;
   p.opts = job.assemble_options();
-  p.in = load_input_scene(job.input, job.disable, job.preset, job.set);
+  p.in = load_input_scene(job.input, job.disable, p.opts, job.preset, job.set);
   if (job.verbose) report_scene_notes(p.in.scene, job.input.string());
   if (job.aovs() && p.in.shadertoy)
     fail_input("--aov needs a scene: a Shadertoy shader has no AOV outputs", job.input.string(), 0, "--aov");

@@ -1,5 +1,6 @@
 #include "scene/graph_build.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -8,6 +9,7 @@
 #include <glm/matrix.hpp>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "io/input_file.h"
 #include "scene/graph_vocab.h"
 #include "scene/suggest.h"
@@ -23,6 +25,11 @@ struct Affine {
   glm::vec3 b{0.0f};
   float s = 1.0f;
 };
+
+// Past this a float length() of a box corner overflows (sqrt(FLT_MAX) is
+// 1.8e19), and the tracer's distances with it: world coordinates, lengths
+// and accumulated scales (and their inverses) of a graph stay within it.
+constexpr double kMaxCoord = 1e18;
 
 constexpr std::string_view kNodeKeys[] = {"sdf", "op", "children", "translate", "rotate", "scale", "matrix",
                                           "material", "name"};
@@ -97,7 +104,13 @@ class Builder {
     const auto& defs = graph_operators()[static_cast<std::size_t>(fn)].params;
     for (std::size_t i = 0, k = 0; i < defs.size(); k += static_cast<std::size_t>(defs[i].size), ++i)
       if (defs[i].length)
-        for (int j = 0; j < defs[i].size; ++j) f.params[k + static_cast<std::size_t>(j)] *= xf.s;
+        for (int j = 0; j < defs[i].size; ++j) {
+          const double world = static_cast<double>(f.params[k + static_cast<std::size_t>(j)]) * xf.s;
+          if (std::fabs(world) > kMaxCoord)
+            fail(doc_.member(v, defs[i].name), quote(defs[i].name) + " times the scales above it is " +
+                                                   format_number(world) + ", past the 1e+18 float lengths hold");
+          f.params[k + static_cast<std::size_t>(j)] = static_cast<float>(world);
+        }
     ++g_.operators;
     stack.push_back(std::move(f));
   }
@@ -143,7 +156,7 @@ class Builder {
     n.to_local = xf.a;
     n.offset = xf.b;
     n.scale = xf.s;
-    n.box = n.core = world_box(prim.box(p.data()), xf);
+    n.box = n.core = world_box(v, prim.box(p.data()), xf);
     n.lipschitz = prim.lipschitz;
     n.line = doc_.at(v).line;
     ++g_.primitives;
@@ -152,26 +165,35 @@ class Builder {
   }
 
   // The local box mapped to world space by interval arithmetic on
-  // p = a^-1 (q - b); a^-1 = s^2 a^T since a is a rotation over s.
-  static GraphBox world_box(const GraphBox& local, const Affine& xf) {
-    const glm::mat3 inv = glm::transpose(xf.a) * (xf.s * xf.s);
-    const glm::vec3 origin = -(inv * xf.b);
-    GraphBox w{origin, origin};
+  // p = a^-1 (q - b); a^-1 = s^2 a^T since a is a rotation over s. In
+  // double, so that a finite box too large for float is refused as that,
+  // and only an infinite primitive makes an infinite box.
+  GraphBox world_box(int v, const GraphBox& local, const Affine& xf) const {
+    const glm::dmat3 inv = glm::transpose(glm::dmat3(xf.a)) * (static_cast<double>(xf.s) * xf.s);
+    const glm::dvec3 origin = -(inv * glm::dvec3(xf.b));
+    glm::dvec3 lo = origin, hi = origin;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
-        const float m = inv[j][i];  // row i, column j
-        if (std::fabs(m) < 1e-7f) continue;
-        const float lo = m * local.min[j], hi = m * local.max[j];
-        w.min[i] += std::min(lo, hi);
-        w.max[i] += std::max(lo, hi);
+        const double m = inv[j][i];  // row i, column j: |m| <= s; a rotation's float zeros are ~1e-8
+        if (std::fabs(m) < 1e-7 * xf.s) continue;
+        const double a = m * local.min[j], b = m * local.max[j];
+        lo[i] += std::min(a, b);
+        hi[i] += std::max(a, b);
       }
+    const glm::dvec3 far = glm::max(glm::abs(lo), glm::abs(hi));
+    for (int i = 0; i < 3; ++i)
+      if (std::isfinite(far[i]) && far[i] > kMaxCoord)
+        fail(v, "its box reaches " + format_number(far[i]) + " along " + "xyz"[i] +
+                    ", past the 1e+18 float coordinates hold",
+             "its size and position, times the scales above it, must stay within 1e+18");
     // Float rounding of the transform must not cut the surface.
-    return box_grow(w, 1e-5f * (1.0f + glm::length(glm::max(glm::abs(w.min), glm::abs(w.max)))));
+    const double pad = 1e-5 * (1.0 + glm::length(far));
+    return box_grow(GraphBox{glm::vec3(lo), glm::vec3(hi)}, static_cast<float>(pad));
   }
 
   void check_keys(int v) const {
     for (int c = doc_.at(v).first; c != -1; c = doc_.at(c).next) {
-      const std::string& k = doc_.at(c).key;
+      const std::string_view k = doc_.key(c);
       bool known = false;
       for (std::string_view n : kNodeKeys) known = known || n == k;
       if (known) continue;
@@ -187,12 +209,12 @@ class Builder {
 
   const std::vector<GraphParam>* params_of(int v) const {
     if (const int s = doc_.member(v, "sdf"); s != -1 && doc_.at(s).kind == JsonKind::string)
-      if (const int fn = find_primitive(doc_.at(s).text); fn != -1) return &graph_primitives()[static_cast<std::size_t>(fn)].params;
+      if (const int fn = find_primitive(doc_.text(s)); fn != -1) return &graph_primitives()[static_cast<std::size_t>(fn)].params;
     if (const int o = doc_.member(v, "op"); o != -1 && doc_.at(o).kind == JsonKind::string)
-      if (const int fn = find_operator(doc_.at(o).text); fn != -1) return &graph_operators()[static_cast<std::size_t>(fn)].params;
+      if (const int fn = find_operator(doc_.text(o)); fn != -1) return &graph_operators()[static_cast<std::size_t>(fn)].params;
     return nullptr;
   }
-  bool is_param(int v, const std::string& k) const {
+  bool is_param(int v, std::string_view k) const {
     const std::vector<GraphParam>* defs = params_of(v);
     if (!defs) return true;  // the unknown function is reported first
     for (const GraphParam& p : *defs)
@@ -203,7 +225,7 @@ class Builder {
   template <class T>
   int name_of(int v, std::span<const T> list, const char* what) const {
     if (doc_.at(v).kind != JsonKind::string) fail(v, std::string("the ") + what + " must be named by a string");
-    const std::string& name = doc_.at(v).text;
+    const std::string_view name = doc_.text(v);
     for (std::size_t i = 0; i < list.size(); ++i)
       if (list[i].name == name) return static_cast<int>(i);
     std::vector<std::string_view> names;
@@ -258,10 +280,10 @@ class Builder {
     if (doc_.at(m).kind != JsonKind::string) fail(m, "'material' must be a string naming a [[materials]] entry");
     std::vector<std::string_view> names;
     for (std::size_t i = 0; i < mats_.size(); ++i) {
-      if (mats_[i].name == doc_.at(m).text) return static_cast<int>(i);
+      if (mats_[i].name == doc_.text(m)) return static_cast<int>(i);
       names.push_back(mats_[i].name);
     }
-    fail(m, "unknown material " + quote(doc_.at(m).text), did_you_mean(doc_.at(m).text, names));
+    fail(m, "unknown material " + quote(doc_.text(m)), did_you_mean(doc_.text(m), names));
   }
 
   const JsonDoc& doc_;
@@ -324,9 +346,21 @@ Affine Builder::transform(int v, const Affine& parent) const {
       t = {x[0], x[1], x[2]};
     }
   }
+  // The whole chain's scale, and what it does to the translation, must be
+  // a float the shader can use: else the box overflows and the graph would
+  // look unbounded.
+  const int own = doc_.member(v, "matrix") != -1 ? doc_.member(v, "matrix") : doc_.member(v, "scale");
+  const double total = static_cast<double>(parent.s) * s;
+  if (total > kMaxCoord || total < 1.0 / kMaxCoord)
+    fail(own, "the scales from the root down to this node multiply to " + format_number(total) +
+                  (total > 1.0 ? ", past the 1e+18" : ", under the 1e-18") + " float coordinates hold");
   // q = l^-1 (q_parent - t), l^-1 = rot^T / s.
   const glm::mat3 inv = glm::transpose(rot) / s;
-  return {inv * parent.a, inv * (parent.b - t), parent.s * s};
+  const Affine out{inv * parent.a, inv * (parent.b - t), static_cast<float>(total)};
+  if (!std::isfinite(out.b.x) || !std::isfinite(out.b.y) || !std::isfinite(out.b.z))
+    fail(doc_.member(v, "translate") != -1 ? doc_.member(v, "translate") : own != -1 ? own : v,
+         "the translation, in this node's units (the scales above divide it), is past float range");
+  return out;
 }
 
 }  // namespace
@@ -339,11 +373,15 @@ SceneGraph build_graph(const JsonDoc& doc, int node, const std::string& display,
 
 SceneGraph load_graph_file(const std::filesystem::path& file, const std::vector<Material>& materials) {
   const std::string display = file.string();
-  const JsonDoc doc = parse_json_doc(read_input_file(file, "graph file"), display);
+  // A node takes two values or more ("sdf" and its object, or "op", its
+  // object, its children), and an operator's frame two levels (its object
+  // and the children's array).
+  const JsonCost builder{sizeof(GraphNode) / 2 + sizeof(float), sizeof(Frame) / 2};
+  const JsonDoc doc = parse_json_doc(read_input_file(file, "graph file"), display, builder);
   if (doc.at(0).kind != JsonKind::object) fail_input("a graph file must be an object {\"root\": NODE}", display, 1);
   for (int c = doc.at(0).first; c != -1; c = doc.at(c).next)
-    if (doc.at(c).key != "root")
-      fail_input("unknown key " + quote(doc.at(c).key), display, doc.at(c).line, doc.pointer(c),
+    if (doc.key(c) != "root")
+      fail_input("unknown key " + quote(doc.key(c)), display, doc.at(c).line, doc.pointer(c),
                  "a graph file holds only \"root\"");
   const int root = doc.member(0, "root");
   if (root == -1) fail_input("missing \"root\"", display, 1, "", "a graph file is {\"root\": NODE}");

@@ -23,7 +23,8 @@ namespace ms {
 SceneGraph build_graph(const JsonDoc& doc, int node, const std::string& display, const std::string& prefix,
                        const std::vector<Material>& materials);
 
-// A graph file: {"root": NODE}.
+// A graph file: {"root": NODE}. Read within the memory budget with what
+// the builder keeps per value and level (io/json_doc.h's JsonCost).
 SceneGraph load_graph_file(const std::filesystem::path& file, const std::vector<Material>& materials);
 
 // [scene.graph] of a scene file, holding `root` as the file would.

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <system_error>
 
 #include <glm/geometric.hpp>
 #include <glm/common.hpp>
 
 #include "core/format.h"
 #include "io/input_file.h"
+#include "io/path_roots.h"
 #include "scene/graph_build.h"
 
 namespace ms {
@@ -19,7 +21,7 @@ namespace {
 // The box the tracer marches: the graph's, grown so that a hit's
 // tolerance and the normals' offsets near the surface stay inside.
 Bounds bounds_of(const GraphBox& box) {
-  const float pad = 1e-3f * glm::length(box.max - box.min) + 1e-3f;
+  const float pad = static_cast<float>(1e-3 * glm::length(glm::dvec3(box.max - box.min)) + 1e-3);  // no float overflow
   Bounds b;
   b.kind = BoundsKind::box;
   b.min = box.min - pad;
@@ -27,9 +29,23 @@ Bounds bounds_of(const GraphBox& box) {
   return b;
 }
 
+// Judged before the file is looked at, so the error does not tell which
+// files exist out there, and with the include rule (map, shadertoy).
+void confine_graph(const Reader& r, int line, const fs::path& file, const fs::path& scene_file,
+                   std::vector<fs::path> roots) {
+  std::error_code ec;
+  roots.insert(roots.begin(), fs::absolute(scene_file, ec).parent_path());
+  if (within_roots(file, roots)) return;
+  r.fail(line, "scene.graph",
+         "the graph file " + quote(ms::display_path(fs::absolute(file, ec))) +
+             " is outside the directories includes may read",
+         "allowed: " + describe_roots(roots) + "; widen with --allow-include DIR");
+}
+
 }  // namespace
 
-void attach_graph(const Reader& r, const toml::table& t, const fs::path& display_path, Scene& scene) {
+void attach_graph(const Reader& r, const toml::table& t, const fs::path& display_path,
+                  const std::vector<fs::path>& roots, Scene& scene) {
   const toml::node* n = t.get("graph");
   SceneGraph g;
   if (const toml::table* inline_graph = n->as_table()) {
@@ -41,6 +57,7 @@ void attach_graph(const Reader& r, const toml::table& t, const fs::path& display
     const int line = Reader::line_of(t, "graph");
     if (file.empty()) r.fail(line, "scene.graph", "'scene.graph' must not be empty");
     const fs::path resolved = (display_path.parent_path() / fs::path(file)).lexically_normal();
+    confine_graph(r, line, resolved, display_path, roots);
     if (const std::string why = input_file_problem(resolved); !why.empty())
       r.fail(line, "scene.graph", "graph file " + quote(resolved.string()) + " " + why,
              why == "not found" ? "'scene.graph' is relative to the scene file" : "");

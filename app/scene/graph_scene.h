@@ -14,8 +14,10 @@
 
 namespace ms {
 
-// `t` is the [scene] table; materials are read already.
-void attach_graph(const Reader& r, const toml::table& t, const std::filesystem::path& display_path, Scene& scene);
+// `t` is the [scene] table; materials are read already. A graph file must
+// lie, where its symlinks lead, in the scene file's folder or `roots`.
+void attach_graph(const Reader& r, const toml::table& t, const std::filesystem::path& display_path,
+                  const std::vector<std::filesystem::path>& roots, Scene& scene);
 
 // Where the graph's box pokes out of the scene's declared [bounds] box: ""
 // when it does not, else "by 0.3 along +x, 0.1 along -y". For the warning

@@ -233,7 +233,8 @@ void read_environment(const Reader& r, const toml::table& t, const fs::path& dis
 
 // Exactly one of scene.map (an SDF scene), scene.graph (a CSG graph) and
 // scene.shadertoy (a Shadertoy shader given size, time and spp by this file).
-void resolve_sources(const Reader& r, const toml::table* t, const fs::path& display_path, Scene& scene) {
+void resolve_sources(const Reader& r, const toml::table* t, const fs::path& display_path,
+                     const std::vector<fs::path>& roots, Scene& scene) {
   std::vector<std::string> given;
   for (const char* k : {"map", "graph", "shadertoy"})
     if (t && t->contains(k)) given.emplace_back(k);
@@ -251,7 +252,7 @@ void resolve_sources(const Reader& r, const toml::table* t, const fs::path& disp
     r.fail(t ? Reader::line_of(*t) : 0, "scene.map", "missing required key 'scene.map'",
            "add map = \"<file>.glsl\" under [scene]: the GLSL file that defines vec2 map(vec3 p); or graph = \"<file>.json\"");
   if (given[0] == "shadertoy") scene.shadertoy_file = resolve_glsl(r, *t, display_path, "shadertoy");
-  else if (given[0] == "graph") attach_graph(r, *t, display_path, scene);  // scene/graph_scene.h
+  else if (given[0] == "graph") attach_graph(r, *t, display_path, roots, scene);  // scene/graph_scene.h
   else scene.map_file = resolve_glsl(r, *t, display_path, "map");
 }
 
@@ -274,7 +275,8 @@ void check_shadertoy_wrapper(const Reader& r, const toml::table& root) {
 }
 
 // Every table and key of a parsed scene file, validated, into a Scene.
-Scene read_scene(const Reader& r, const toml::table& root, const fs::path& display_path) {
+Scene read_scene(const Reader& r, const toml::table& root, const fs::path& display_path,
+                 const std::vector<fs::path>& roots) {
   const Schema schema;
   r.check_keys(root, {}, schema.top, [&](std::string_view key) { return schema.elsewhere({}, key); });
 
@@ -324,20 +326,21 @@ Scene read_scene(const Reader& r, const toml::table& root, const fs::path& displ
   }
 
   // Last, so a broken scene file is reported before a missing map file.
-  resolve_sources(r, st, display_path, scene);
+  resolve_sources(r, st, display_path, roots, scene);
   return scene;
 }
 
 }  // namespace
 
-Scene parse_scene(std::string_view toml_text, const fs::path& display_path, const SceneOverrides& overrides) {
+Scene parse_scene(std::string_view toml_text, const fs::path& display_path, const SceneOverrides& overrides,
+                  const std::vector<fs::path>& roots) {
   const Reader r(display_path.string());
   toml::table root = parse_toml(toml_text, r);
   // Before validation, so an override meets every check the file does.
   const std::vector<std::string> keys = apply_overrides(root, overrides);
   Scene scene;
   try {
-    scene = read_scene(r, root, display_path);
+    scene = read_scene(r, root, display_path, roots);
   } catch (const Error& e) {
     if (overrides.empty()) throw;
     throw Error(blame_override(e.info(), overrides, keys));
@@ -346,8 +349,8 @@ Scene parse_scene(std::string_view toml_text, const fs::path& display_path, cons
   return scene;
 }
 
-Scene load_scene(const fs::path& toml_path, const SceneOverrides& overrides) {
-  return parse_scene(read_input_file(toml_path, "scene file"), toml_path, overrides);
+Scene load_scene(const fs::path& toml_path, const SceneOverrides& overrides, const std::vector<fs::path>& roots) {
+  return parse_scene(read_input_file(toml_path, "scene file"), toml_path, overrides, roots);
 }
 
 }  // namespace ms

@@ -46,35 +46,6 @@ std::string Range::describe() const {
   return "a number";
 }
 
-std::string printable(std::string_view text, std::size_t max_bytes) {
-  std::size_t cut = text.size();
-  if (cut > max_bytes) {
-    cut = max_bytes;
-    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // UTF-8 boundary
-  }
-  std::string out;
-  for (char c : text.substr(0, cut)) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '\n') out += "\\n";
-    else if (c == '\t') out += "\\t";
-    else if (u < 0x20 || u == 0x7F) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02X", u);
-      out += buf;
-    } else out += c;
-  }
-  if (cut < text.size()) out += "...";
-  return out;
-}
-
-// Appends rather than "'" + std::string: GCC 12 warns falsely (-Wrestrict) on that.
-std::string quote(std::string_view text) {
-  std::string out(1, '\'');
-  out += printable(text);
-  out += '\'';
-  return out;
-}
-
 std::string join_key(std::string_view path, std::string_view key) {
   return path.empty() ? std::string(key) : std::string(path) + "." + std::string(key);
 }

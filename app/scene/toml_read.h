@@ -45,11 +45,6 @@ struct Field {
 
 using Keys = std::span<const std::string_view>;
 
-// A key or value fit for a one-line message: control characters escaped,
-// long text cut, so a hostile file cannot break the error line.
-std::string printable(std::string_view text, std::size_t max_bytes = 64);
-// printable(text) in single quotes: 'fov'.
-std::string quote(std::string_view text);
 // "camera" + "fov" -> "camera.fov"; "" + "camera" -> "camera".
 std::string join_key(std::string_view path, std::string_view key);
 

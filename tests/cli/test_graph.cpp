@@ -30,12 +30,14 @@ int differing(const Image& a, const Image& b) {
   return a.pixels.size() == b.pixels.size() ? n : 1 << 30;
 }
 
-// part.toml written to `file` with a [bounds] box of its own.
+// part.toml written to `file` with a [bounds] box of its own, part.json
+// beside it (a graph file is read only from the scene's folder).
 void part_with_bounds(const std::filesystem::path& file, const std::string& min, const std::string& max) {
   std::string toml = read_file(kData / "part.toml");
   toml.replace(toml.find("graph = \"part.json\"\n"), 20,
-               "graph = \"" + (kData / "part.json").string() + "\"\n\n[bounds]\nmin = " + min + "\nmax = " + max + "\n");
+               "graph = \"part.json\"\n\n[bounds]\nmin = " + min + "\nmax = " + max + "\n");
   write_file(file, toml);
+  write_file(file.parent_path() / "part.json", read_file(kData / "part.json"));
 }
 
 TEST_P(GraphRender, TheGraphGivesTheImageOfTheSameMapWrittenByHand) {

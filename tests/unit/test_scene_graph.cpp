@@ -59,7 +59,7 @@ TEST(JsonDoc, ValuesKnowTheirLineAndPointer) {
   const int x = d.member(obj, "x~");
   EXPECT_EQ(d.pointer(x), "/a~1b/1/x~0");
   EXPECT_EQ(d.at(x).line, 3);
-  EXPECT_EQ(d.at(x).text, "s\xc3\xa9");
+  EXPECT_EQ(d.text(x), "s\xc3\xa9");
 }
 
 TEST(JsonDoc, MalformedTextIsOneLineWithItsLine) {
