@@ -135,16 +135,18 @@ int run_batch(const RenderArgs& a) {
       if (e.error) throw *e.error;
       outputs.claim(e);
       say_removed_temps({e.output()});  // per job: a job file's outputs are known only as it is read
+      std::vector<std::string> written{e.output().string()};
       if (e.mesh) {
         const MeshReport r = mesh_scene(*e.mesh, session);
         if (!r.check.ok() && r.format != MeshFormat::vdb)
           say("marchstudio: warning: " + r.output + ": the mesh check found " + r.check.summary());
+        if (!r.written.empty()) written = r.written;  // an OBJ's .mtl too, as `mesh` prints
         ++meshes;
       } else {
         render_still_job(*e.job, session);
       }
       if (paths_on_bar) std::fprintf(stderr, "\r\x1b[K");  // the bar redraws below the path
-      std::printf("%s\n", e.output().string().c_str());
+      for (const std::string& w : written) std::printf("%s\n", w.c_str());
       std::fflush(stdout);
     } catch (const Error& err) {
       say(job_error_line(e.label, err));

@@ -47,19 +47,25 @@ bool idiff_requested(const CLI::App& app) {
   return false;
 }
 
+// `marchstudio help [SUBCOMMAND]` is `marchstudio [SUBCOMMAND] --help`;
+// `marchstudio waves.frag` (glslViewer's habit) is `marchstudio view
+// waves.frag`. Empty when the command line stays as it is.
+std::vector<std::string> rewritten_args(int argc, char** argv) {
+  if (argc < 2 || (std::string(argv[1]) != "help" && !opens_in_viewer(argv[1]))) return {};
+  const bool help = std::string(argv[1]) == "help";
+  std::vector<std::string> words = {argv[0]};
+  if (!help) words.emplace_back("view");
+  for (int i = help ? 2 : 1; i < argc; ++i) words.emplace_back(argv[i]);
+  if (help) words.emplace_back("--help");
+  return words;
+}
+
 }  // namespace
 
 int run_cli(int argc, char** argv) {
-  // `marchstudio help [SUBCOMMAND]` is `marchstudio [SUBCOMMAND] --help`;
-  // `marchstudio waves.frag` (glslViewer's habit) is `marchstudio view waves.frag`.
-  std::vector<std::string> words;
+  std::vector<std::string> words = rewritten_args(argc, argv);
   std::vector<char*> new_argv;
-  if (argc >= 2 && (std::string(argv[1]) == "help" || opens_in_viewer(argv[1]))) {
-    const bool help = std::string(argv[1]) == "help";
-    words = {argv[0]};
-    if (!help) words.emplace_back("view");
-    for (int i = help ? 2 : 1; i < argc; ++i) words.emplace_back(argv[i]);
-    if (help) words.emplace_back("--help");
+  if (!words.empty()) {
     for (std::string& w : words) new_argv.push_back(w.data());
     argc = static_cast<int>(new_argv.size());
     argv = new_argv.data();

@@ -152,6 +152,7 @@ const LoadedInput& checked_input(const MeshJob& job, LoadedInput& in, MeshReport
   output_kind(job.output, "-o");
   in = load_input_scene(job.frame.input, job.frame.disable, job.frame.assemble_options(), job.frame.preset,
                         job.frame.set);
+  if (job.frame.verbose) report_scene_notes(in.scene, job.frame.input.string());
   if (in.shadertoy)
     fail_input("a Shadertoy shader has no map(): there is no field to mesh", job.frame.input.string(), 0, "scene",
                "mesh a scene .toml with [scene] map or graph");

@@ -249,7 +249,7 @@ void resolve_sources(const Reader& r, const toml::table* t, const fs::path& disp
     return;
   }
   if (given.empty())
-    r.fail(t ? Reader::line_of(*t) : 0, "scene.map", "missing required key 'scene.map'",
+    r.fail(t ? Reader::line_of(*t) : 0, "scene.map", "the scene names no source: one of 'scene.map', 'scene.graph' or 'scene.shadertoy' is required",
            "add map = \"<file>.glsl\" under [scene]: the GLSL file that defines vec2 map(vec3 p); or graph = \"<file>.json\"");
   if (given[0] == "shadertoy") scene.shadertoy_file = resolve_glsl(r, *t, display_path, "shadertoy");
   else if (given[0] == "graph") attach_graph(r, *t, display_path, roots, scene);  // scene/graph_scene.h

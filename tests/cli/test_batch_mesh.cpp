@@ -41,7 +41,9 @@ TEST(BatchMesh, StillsAndMeshesAreWrittenInOneBatch) {
   EXPECT_GT(coarse, 100) << "b.ply is not the seed sphere's mesh";
   EXPECT_NE(read_file(dir / "seed.obj").find("\nv "), std::string::npos) << "a \"mesh\" line without output";
   EXPECT_TRUE(fs::exists(dir / "seed.mtl"));
-  EXPECT_EQ(count_of(r.out, "\n"), 3) << r.out;
+  // Every file written, one a line: the OBJ line's .mtl too, as `mesh` prints.
+  EXPECT_EQ(count_of(r.out, "\n"), 4) << r.out;
+  EXPECT_NE(r.out.find("seed.mtl\n"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("marchstudio: batch: 1 images, 2 meshes, "), std::string::npos) << r.err;
 }
 

@@ -14,13 +14,9 @@ namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-#if defined(__SANITIZE_ADDRESS__)
-const std::string kLimit;  // ASan reserves terabytes of shadow memory
-#else
 // 700 MB: no job is valid, so no GL context is made; the 256 MiB compile
 // stack (core/big_stack.h) and malloc's thread arena are most of it.
-const std::string kLimit = "ulimit -v 700000; ";
-#endif
+const std::string kLimit = address_space_limit(700000);
 
 int count(const std::string& text, const std::string& needle) {
   int n = 0;

@@ -17,12 +17,7 @@ namespace ms::test {
 namespace {
 namespace fs = std::filesystem;
 
-// ASan reserves terabytes of shadow memory: there no limit can be set.
-#if defined(__SANITIZE_ADDRESS__)
-const std::string kLimit;
-#else
-const std::string kLimit = "ulimit -v 2000000; ";
-#endif
+const std::string kLimit = address_space_limit(2000000);
 
 std::uint32_t crc32(const std::string& bytes) {
   std::uint32_t c = 0xFFFFFFFFu;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "run.h"
+#include "signal_util.h"
 #include "test_viewer_util.h"
 
 namespace ms::test {
@@ -28,32 +29,13 @@ fs::path ball(const TempDir& dir) {
   return dir / "ball.toml";
 }
 
-std::string preload() {
-  const char* p = std::getenv("LD_PRELOAD");
-  return (p && *p ? std::string(p) + ":" : std::string()) + MARCH_SLOW_TEMP_SHIM;
-}
-
 // Meshes the ball to `output` with each temporary held 4 s after it is
-// made, sends `sig` once `temp_prefix` appears, and expects 128 + sig with
-// nothing left but the scene and the logs.
+// made: nothing is left but the scene and the logs (no mesh, no .mtl).
 void expect_signal_leaves_nothing(const std::string& output, const std::string& temp_prefix, int sig) {
   TempDir dir;
   const fs::path scene = ball(dir);
-  BackgroundProcess p({"env", "LD_PRELOAD=" + preload(), "SLOW_TEMP_MS=4000", MARCH_BIN, "mesh", scene.string(),
-                       "--resolution", "16", "-o", output},
-                      dir / "out.txt", dir / "err.txt", dir.path());
-  const auto temp_exists = [&] {
-    for (const std::string& name : dir.entries())
-      if (name.rfind(temp_prefix, 0) == 0) return true;
-    return false;
-  };
-  ASSERT_TRUE(wait_until(temp_exists, 90)) << read_file(dir / "err.txt");
-  p.signal(sig);
-  EXPECT_EQ(p.wait_exit(20), 128 + sig) << read_file(dir / "err.txt");
-  std::vector<std::string> left = dir.entries();
-  std::sort(left.begin(), left.end());
-  EXPECT_EQ(left, (std::vector<std::string>{"ball.glsl", "ball.toml", "err.txt", "out.txt"}))
-      << "no mesh, no .mtl, no temporary";
+  expect_signal_leaves_no_temp(dir, {"mesh", scene.string(), "--resolution", "16", "-o", output}, temp_prefix, sig,
+                               {"ball.glsl", "ball.toml"}, 4000);
 }
 
 TEST(MeshSignals, SigtermWhileAnObjIsWrittenLeavesNeitherItsTemporaryNorItsMtl) {
@@ -72,7 +54,7 @@ TEST(MeshSignals, AnObjThatWasThereKeepsItsMtl) {
   TempDir dir;
   const fs::path scene = ball(dir);
   ASSERT_EQ(run_marchstudio({"mesh", scene.string(), "--resolution", "16", "-o", "part.obj"}, dir.path()).exit_code, 0);
-  BackgroundProcess p({"env", "LD_PRELOAD=" + preload(), "SLOW_TEMP_MS=4000", MARCH_BIN, "mesh", scene.string(),
+  BackgroundProcess p({"env", "LD_PRELOAD=" + slow_temp_preload(), "SLOW_TEMP_MS=4000", MARCH_BIN, "mesh", scene.string(),
                        "--resolution", "16", "-o", "part.obj"},
                       dir / "out.txt", dir / "err.txt", dir.path());
   const auto temp_exists = [&] {

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "run.h"
+#include "signal_util.h"
 #include "test_viewer_util.h"
 
 namespace ms::test {
@@ -21,38 +22,10 @@ namespace fs = std::filesystem;
 
 const std::string kSeed = (source_dir() / "scenes/seed.toml").string();
 
-std::string preload() {
-  const char* p = std::getenv("LD_PRELOAD");
-  return (p && *p ? std::string(p) + ":" : std::string()) + MARCH_SLOW_TEMP_SHIM;
-}
-
-// Runs marchstudio `args` in `dir` with each temporary held 30 s after it
-// is made, sends `sig` once `temp_prefix` appears, and expects 128 + sig
-// with nothing left in `dir` but `keep` and the logs.
-void expect_signal_leaves_no_temp(const TempDir& dir, const std::vector<std::string>& args,
-                                  const std::string& temp_prefix, int sig, std::vector<std::string> keep) {
-  std::vector<std::string> argv = {"env", "LD_PRELOAD=" + preload(), "SLOW_TEMP_MS=30000", MARCH_BIN};
-  argv.insert(argv.end(), args.begin(), args.end());
-  BackgroundProcess p(argv, dir / "out.txt", dir / "err.txt", dir.path());
-  const auto temp_exists = [&] {
-    for (const std::string& name : dir.entries())
-      if (name.rfind(temp_prefix, 0) == 0) return true;
-    return false;
-  };
-  ASSERT_TRUE(wait_until(temp_exists, 90)) << read_file(dir / "err.txt");
-  p.signal(sig);
-  EXPECT_EQ(p.wait_exit(20), 128 + sig) << read_file(dir / "err.txt");
-  std::vector<std::string> left = dir.entries();
-  keep.insert(keep.end(), {"err.txt", "out.txt"});
-  std::sort(left.begin(), left.end());
-  std::sort(keep.begin(), keep.end());
-  EXPECT_EQ(left, keep) << "no image, no temporary";
-}
-
 TEST(StillSignals, SigtermWhileAStillIsWrittenLeavesNoTemporary) {
   TempDir dir;
   expect_signal_leaves_no_temp(dir, {"render", kSeed, "--size", "64x36", "-o", "still.png"}, ".still.png.tmp", SIGTERM,
-                               {});
+                               {}, 30000);
 }
 
 TEST(StillSignals, CtrlCWhileABatchWritesLeavesNoTemporary) {
@@ -60,7 +33,7 @@ TEST(StillSignals, CtrlCWhileABatchWritesLeavesNoTemporary) {
   write_file(dir / "jobs.jsonl", "{\"scene\": \"" + kSeed + "\", \"output\": \"a.png\"}\n{\"scene\": \"" + kSeed +
                                      "\", \"output\": \"b.png\"}\n");
   expect_signal_leaves_no_temp(dir, {"render", "--jobs", "jobs.jsonl", "--size", "48x27"}, ".a.png.tmp", SIGINT,
-                               {"jobs.jsonl"});
+                               {"jobs.jsonl"}, 30000);
 }
 
 TEST(StillSignals, ARerunRemovesADeadRunsTemporaryButNotALiveOnes) {

@@ -23,6 +23,18 @@ struct RunResult {
 RunResult run_marchstudio(const std::vector<std::string>& args, const std::filesystem::path& cwd = {},
                           const std::string& shell_prefix = {});
 
+// A `shell_prefix` that caps the run's address space at `kib` KiB, for
+// tests that a run stays small; empty under ASan, which reserves terabytes
+// of shadow memory and so cannot run under any cap.
+inline std::string address_space_limit(long kib) {
+#if defined(__SANITIZE_ADDRESS__)
+  (void)kib;
+  return {};
+#else
+  return "ulimit -v " + std::to_string(kib) + "; ";
+#endif
+}
+
 // Starts marchstudio in the background in `dir`, stdout and stderr to the
 // file `log` (relative to `dir`); the caller waits for or kills the pid.
 pid_t spawn_marchstudio(const std::vector<std::string>& args, const std::filesystem::path& dir, const std::string& log);

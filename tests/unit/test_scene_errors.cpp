@@ -196,10 +196,10 @@ const Case kCases[] = {
     {"EmptyMaterials", "materials = []\n[scene]\nmap = \"seed.glsl\"\n", 1, "materials",
      "the scene defines no materials", "[[materials]]", true},
     // scene.map.
-    {"NoSceneTable", "[[materials]]\nname = \"m\"\n", 0, "scene.map", "missing required key 'scene.map'",
+    {"NoSceneTable", "[[materials]]\nname = \"m\"\n", 0, "scene.map", "one of 'scene.map', 'scene.graph' or 'scene.shadertoy' is required",
      "vec2 map(vec3 p)", true},
     {"SceneWithoutMap", "[[materials]]\nname = \"m\"\n\n[scene]\nname = \"x\"\n", 4, "scene.map",
-     "missing required key 'scene.map'", "vec2 map", true},
+     "one of 'scene.map', 'scene.graph' or 'scene.shadertoy' is required", "vec2 map", true},
     {"EmptyMap", "[scene]\n\nmap = \"\"\n[[materials]]\nname = \"m\"\n", 3, "scene.map", "must not be empty", "",
      true},
     {"MapIsDirectory", "[scene]\nmap = \"nested\"\n[[materials]]\nname = \"m\"\n", 2, "scene.map", "is a directory",
