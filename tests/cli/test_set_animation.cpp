@@ -54,8 +54,9 @@ TEST(SetAnimation, SetBeatsTheTrackOfItsKey) {
 
 TEST(SetAnimation, MeshSaysItUnderVerboseToo) {
   Orbit o;
-  const RunResult r = run_marchstudio({"mesh", (o.dir / "animated.toml").string(), "--resolution", "16", "--set",
-                                       "camera.fov=30", "-v", "-o", (o.dir / "ball.obj").string()});
+  const RunResult r =
+      run_marchstudio({"mesh", (o.dir / "animated.toml").string(), "--resolution", "16", "--bounds", "-2,-2,-2,2,2,2",
+                       "--set", "camera.fov=30", "-v", "-o", (o.dir / "ball.obj").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("note: --set camera.fov replaces the [[animation]] of 'camera.fov' at line "),
             std::string::npos)
