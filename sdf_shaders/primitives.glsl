@@ -47,6 +47,17 @@ float sdPlane(vec3 p, vec3 n, float w) {
 }
 #endif
 
+#if !defined(MS_LIBRARY_SUBSET) || defined(USE_SDSLAB)
+// Slab: the points with x.x <= p.x <= x.y, y.x <= p.y <= y.y and
+// z.x <= p.z <= z.y, an axis-aligned box any side of which may be open
+// (-BIG or BIG; an axis open both ways is no constraint). Measured from
+// each side rather than from a centre, so a side at BIG costs no precision.
+// [exact; L = 1]
+float sdSlab(vec3 p, vec2 x, vec2 y, vec2 z) {
+  return msBoxQ(max(vec3(x.x, y.x, z.x) - p, p - vec3(x.y, y.y, z.y)));
+}
+#endif
+
 #if !defined(MS_LIBRARY_SUBSET) || defined(USE_SDBOX)
 // Axis-aligned box with half extents b. [exact; L = 1]
 float sdBox(vec3 p, vec3 b) {

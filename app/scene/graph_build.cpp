@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "io/input_file.h"
+#include "scene/graph_read.h"
 #include "scene/graph_vocab.h"
 #include "scene/suggest.h"
 #include "scene/toml_read.h"
@@ -26,11 +27,6 @@ struct Affine {
   float s = 1.0f;
 };
 
-// Past this a float length() of a box corner overflows (sqrt(FLT_MAX) is
-// 1.8e19), and the tracer's distances with it: world coordinates, lengths
-// and accumulated scales (and their inverses) of a graph stay within it.
-constexpr double kMaxCoord = 1e18;
-
 constexpr std::string_view kNodeKeys[] = {"sdf", "op", "children", "translate", "rotate", "scale", "matrix",
                                           "material", "name"};
 
@@ -45,10 +41,10 @@ struct Frame {
   int acc = -1;               // the fold so far
 };
 
-class Builder {
+class Builder : GraphReader {
  public:
   Builder(const JsonDoc& doc, std::string display, std::string prefix, const std::vector<Material>& mats)
-      : doc_(doc), display_(std::move(display)), prefix_(std::move(prefix)), mats_(mats) {}
+      : GraphReader(doc, std::move(display), std::move(prefix)), mats_(mats) {}
 
   SceneGraph build(int root) {
     std::vector<Frame> stack;
@@ -69,16 +65,31 @@ class Builder {
     }
     g_.root = result_;
     const GraphBox& box = g_.root_node().box;
-    if (!box.finite())
-      fail(root, "the graph is unbounded (an infinite plane, cylinder or cone not cut by an intersection)",
-           "put ground planes in [[planes]]; intersect infinite shapes with a box");
+    if (!box.finite()) fail_unbounded();
     if (box.empty()) fail(root, "the graph is empty: its intersections leave nothing");
     return std::move(g_);
   }
 
  private:
-  [[noreturn]] void fail(int v, const std::string& what, const std::string& hint = {}) const {
-    fail_input(what, display_, doc_.at(v).line, prefix_ + doc_.pointer(v), hint);
+  // Down from the root, the first child whose box is infinite, to the node
+  // whose own box is: an infinite primitive that nothing cuts.
+  [[noreturn]] void fail_unbounded() const {
+    int at = g_.root;
+    for (;;) {
+      const GraphNode& n = g_.nodes[static_cast<std::size_t>(at)];
+      int next = -1;
+      for (int c : {n.left, n.right})
+        if (next == -1 && c != -1 && !g_.nodes[static_cast<std::size_t>(c)].box.finite()) next = c;
+      if (next == -1) break;
+      at = next;
+    }
+    const GraphNode& n = g_.nodes[static_cast<std::size_t>(at)];
+    const std::string what =
+        n.leaf ? "an infinite " + std::string(graph_primitives()[static_cast<std::size_t>(n.fn)].name) +
+                     " not cut by an intersection"
+               : "this node's box is infinite though its children's are not";
+    fail(value_[static_cast<std::size_t>(at)], "the graph is unbounded: " + what,
+         "intersect it with a bounded shape or subtract it from one; ground planes go in [[planes]]");
   }
 
   // A node: a leaf is made at once; an operator is pushed to collect its children.
@@ -141,6 +152,7 @@ class Builder {
     n.lipschitz = op.lipschitz * std::max(na.lipschitz, nb.lipschitz);
     n.line = doc_.at(f.value).line;
     g_.nodes.push_back(n);
+    value_.push_back(f.value);
     return static_cast<int>(g_.nodes.size()) - 1;
   }
 
@@ -161,6 +173,7 @@ class Builder {
     n.line = doc_.at(v).line;
     ++g_.primitives;
     g_.nodes.push_back(n);
+    value_.push_back(v);
     return static_cast<int>(g_.nodes.size()) - 1;
   }
 
@@ -186,8 +199,12 @@ class Builder {
         fail(v, "its box reaches " + format_number(far[i]) + " along " + "xyz"[i] +
                     ", past the 1e+18 float coordinates hold",
              "its size and position, times the scales above it, must stay within 1e+18");
-    // Float rounding of the transform must not cut the surface.
-    const double pad = 1e-5 * (1.0 + glm::length(far));
+    // Float rounding of the transform must not cut the surface; an
+    // infinite side (a half-space's) must not spread to the others.
+    glm::dvec3 finite_far = far;
+    for (int i = 0; i < 3; ++i)
+      if (!std::isfinite(finite_far[i])) finite_far[i] = 0.0;
+    const double pad = 1e-5 * (1.0 + glm::length(finite_far));
     return box_grow(GraphBox{glm::vec3(lo), glm::vec3(hi)}, static_cast<float>(pad));
   }
 
@@ -233,46 +250,6 @@ class Builder {
     fail(v, std::string("unknown ") + what + " " + quote(name), did_you_mean(name, names));
   }
 
-  float number(int v, const std::string& what) const {
-    if (doc_.at(v).kind != JsonKind::number) fail(v, what + " must be a number");
-    const double d = doc_.at(v).number;
-    if (!std::isfinite(d) || std::fabs(d) > 1e30) fail(v, what + " must be a finite number");
-    return static_cast<float>(d);
-  }
-
-  // A number (size 1) or an array of `size` numbers.
-  std::vector<float> numbers(int v, int size, const std::string& what) const {
-    if (size == 1) return {number(v, what)};
-    const JsonValue& a = doc_.at(v);
-    if (a.kind != JsonKind::array || a.count != size)
-      fail(v, what + " must be an array of " + std::to_string(size) + " numbers",
-           a.kind == JsonKind::array ? "it has " + std::to_string(a.count) : "");
-    std::vector<float> out;
-    for (int c = a.first; c != -1; c = doc_.at(c).next) out.push_back(number(c, "each element of " + what));
-    return out;
-  }
-
-  std::vector<float> read_params(int v, const std::vector<GraphParam>& defs) const {
-    std::vector<float> out;
-    for (const GraphParam& p : defs) {
-      const int c = doc_.member(v, p.name);
-      if (c == -1) fail(v, "missing parameter " + quote(p.name), describe(defs));
-      const std::vector<float> xs = numbers(c, p.size, quote(p.name));
-      for (float x : xs)
-        if (p.nonneg && x < 0.0f) fail(c, quote(p.name) + " must not be negative", "it is a size");
-      out.insert(out.end(), xs.begin(), xs.end());
-    }
-    return out;
-  }
-
-  static std::string describe(const std::vector<GraphParam>& defs) {
-    if (defs.empty()) return "it takes none";
-    std::string s = "it takes ";
-    for (std::size_t i = 0; i < defs.size(); ++i)
-      s += (i ? ", " : "") + std::string(defs[i].name) + (defs[i].size > 1 ? " (" + std::to_string(defs[i].size) + " numbers)" : "");
-    return s;
-  }
-
   Affine transform(int v, const Affine& parent) const;
   int material(int v, int inherited) const {
     const int m = doc_.member(v, "material");
@@ -286,10 +263,9 @@ class Builder {
     fail(m, "unknown material " + quote(doc_.text(m)), did_you_mean(doc_.text(m), names));
   }
 
-  const JsonDoc& doc_;
-  std::string display_, prefix_;
   const std::vector<Material>& mats_;
   SceneGraph g_;
+  std::vector<int> value_;  // per node of g_, its JSON value (an operator's: the fold's)
   int result_ = -1;
 };
 

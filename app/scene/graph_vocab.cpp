@@ -28,12 +28,29 @@ GraphBox points(std::initializer_list<glm::vec3> ps, float r) {
 GraphParam pos(std::string_view n, int size = 3) { return {n, size, false, true}; }
 GraphParam len(std::string_view n, int size = 1) { return {n, size, true, true}; }
 GraphParam any(std::string_view n, int size = 1) { return {n, size, false, false}; }
+GraphParam range(std::string_view n) { return {n, 2, false, true, true}; }
+GraphParam unit(std::string_view n) { return {n, 3, false, false, false, true}; }
+
+// A range's end as a box coordinate: an open end is infinite.
+float bound(float v) { return std::fabs(v) >= kOpenBound ? std::copysign(kInf, v) : v; }
+// The half-space dot(p, n) + w <= 0 bounds the axis n lies along, if any.
+GraphBox half_space(const float* p) {
+  GraphBox b = sym(kInf, kInf, kInf);
+  for (int i = 0; i < 3; ++i)
+    if (p[(i + 1) % 3] == 0.0f && p[(i + 2) % 3] == 0.0f) {
+      if (p[i] > 0.0f) b.max[i] = -p[3] / p[i];
+      if (p[i] < 0.0f) b.min[i] = -p[3] / p[i];
+    }
+  return b;
+}
 
 const std::vector<GraphPrimitive>& primitives() {
   using P = const float*;
   static const std::vector<GraphPrimitive> v = {
       {"sdSphere", {len("r")}, 1, [](P p) { return sym(p[0], p[0], p[0]); }},
-      {"sdPlane", {any("n", 3), pos("w", 1)}, 1, [](P) { return sym(kInf, kInf, kInf); }},
+      {"sdPlane", {unit("n"), pos("w", 1)}, 1, half_space},
+      {"sdSlab", {range("x"), range("y"), range("z")}, 1,
+       [](P p) { return span({bound(p[0]), bound(p[2]), bound(p[4])}, {bound(p[1]), bound(p[3]), bound(p[5])}); }},
       {"sdBox", {len("b", 3)}, 1, [](P p) { return sym(p[0], p[1], p[2]); }},
       {"sdBoxCheap", {len("b", 3)}, 1, [](P p) { return sym(p[0], p[1], p[2]); }},
       {"sdRoundBox", {len("b", 3), len("r")}, 1, [](P p) { return sym(p[0], p[1], p[2]); }},

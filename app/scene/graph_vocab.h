@@ -21,7 +21,16 @@ struct GraphParam {
   int size = 1;          // floats: 1 (float), 2 (vec2), 3 (vec3)
   bool nonneg = true;    // a size: negative is refused (positions, directions, offsets may be)
   bool length = true;    // combinators: in length units, so scaled with the node (a count n is not)
+  // A [min, max] pair (size 2) either end of which may be open (null, or
+  // TOML's -inf / inf), and which may be left out (open both ways); an open
+  // end is stored as -+kOpenBound.
+  bool range = false;
+  bool unit = false;     // a direction of unit length (within 1e-4), as the bound of L = 1 needs
 };
+
+// An open end of a range parameter: the library's BIG, finite so that the
+// GLSL's distances to a side stay exact; a box treats it as infinite.
+inline constexpr float kOpenBound = 1e20f;
 
 struct GraphPrimitive {
   std::string_view name;
