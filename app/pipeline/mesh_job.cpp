@@ -158,8 +158,8 @@ const LoadedInput& checked_input(const MeshJob& job, LoadedInput& in, MeshReport
     fail_input("a Shadertoy shader has no map(): there is no field to mesh", job.frame.input.string(), 0, "scene",
                "mesh a scene .toml with [scene] map or graph");
   if (in.scene.graph_alone && job.planes)
-    fail_input("--planes has no effect on a graph file alone: it has no [[planes]], and its floor is for images", job.frame.input.string(), 0,
-               "--planes", "mesh a scene .toml whose [[planes]] name the ground");
+    fail_input("--planes has no effect on a graph file alone: it has no [[planes]], and its floor is for images",
+               job.frame.input.string(), 0, "--planes", "mesh a scene .toml whose [[planes]] name the ground");
   drop_floor(in.scene);  // a graph file alone meshes as the graph only
   return in;
 }

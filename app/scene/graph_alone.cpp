@@ -56,7 +56,8 @@ std::string upper(std::string s) {
 bool identifier(const std::string& s) {
   return !s.empty() && !std::isdigit(static_cast<unsigned char>(s[0])) && s[0] != '_' &&
          s.find("__") == std::string::npos &&
-         std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+         std::all_of(s.begin(), s.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
 // Named materials' colours, in turn: distinct enough to tell parts apart.
@@ -104,7 +105,8 @@ void add_floor(const GraphBox& box, Scene& scene) {
   if (scene.materials.size() >= kMaxMaterials)
     fail_input("too many materials: the graph names " + std::to_string(kMaxMaterials - 1) +
                    ", and with the default and the floor's that passes " + std::to_string(kMaxMaterials),
-               scene.file.string(), 1, {}, "name at most " + std::to_string(kMaxMaterials - 2) + ", or use a scene .toml");
+               scene.file.string(), 1, {},
+               "name at most " + std::to_string(kMaxMaterials - 2) + ", or use a scene .toml");
   Material floor;
   floor.name = "floor";
   for (int i = 1; std::any_of(scene.materials.begin(), scene.materials.end(),
@@ -152,7 +154,8 @@ std::vector<Material> graph_default_materials(const JsonDoc& doc, const std::str
         doc.key(i) != "material")
       continue;  // a 'material' that is not a string is the builder's to refuse
     const std::string name(doc.text(i));
-    const auto same = std::find_if(out.begin(), out.end(), [&](const Material& m) { return upper(m.name) == upper(name); });
+    const auto same =
+        std::find_if(out.begin(), out.end(), [&](const Material& m) { return upper(m.name) == upper(name); });
     if (same != out.end() && same->name == name) continue;
     const auto fail = [&](const std::string& what, const std::string& hint) {
       fail_input(what, display, v.line, prefix + doc.pointer(i), hint);
