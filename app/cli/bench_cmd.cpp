@@ -29,7 +29,7 @@ namespace ms {
 
 CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
   CLI::App* cmd = app.add_subcommand("bench", "Time a scene and count its steps per pixel (docs/bench.md)");
-  cmd->add_option("scene", a.input, "Scene .toml, or a Shadertoy shader (.glsl, .json): its passes are timed")->required();
+  cmd->add_option("scene", a.input, "Scene .toml, a graph file (.json) or a Shadertoy shader (.glsl, .json): its passes are timed")->required();
   add_shadertoy_flags(cmd, a.shadertoy);
   add_override_flags(cmd, a.overrides);
   add_size_flag(cmd, "--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());

@@ -3,9 +3,13 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "core/error.h"
 #include "io/image_io.h"
+#include "io/input_file.h"
+#include "io/json_doc.h"
+#include "scene/graph_alone.h"
 #include "scene/graph_scene.h"
 #include "scene/load.h"
 #include "scene/toml_read.h"  // printable(): one line per attribute
@@ -13,18 +17,38 @@
 namespace ms {
 
 CLI::App* add_info_command(CLI::App& app, InfoArgs& a) {
-  CLI::App* cmd = app.add_subcommand("info", "Print an image's size, channels, metadata and fingerprint, or a scene's source, graph, bounds and Lipschitz factor");
-  cmd->add_option("files", a.files, "Image files (PNG, JPEG, TIFF, EXR, ...) or scene files (.toml)")->required();
+  CLI::App* cmd = app.add_subcommand("info", "Print an image's size, channels, metadata and fingerprint, or a scene's or graph file's source, graph, bounds and Lipschitz factor");
+  cmd->add_option("files", a.files, "Image files (PNG, JPEG, TIFF, EXR, ...), scene files (.toml) or graph files (.json)")->required();
   cmd->add_flag("--fingerprint", a.fingerprint_only,
                 "Print only each file's fingerprint (exit 1 when one has none)");
   return cmd;
 }
+
+namespace {
+
+// A graph file, told from an image by its first bytes (no image format
+// starts as JSON does) and from Shadertoy JSON by its content; a FIFO or
+// a missing file is left to the image reader's error.
+bool is_graph_file(const std::string& f) {
+  if (!input_file_problem(f).empty()) return false;
+  char head[64] = {};
+  std::ifstream in(f, std::ios::binary);
+  in.read(head, sizeof head);
+  if (!looks_like_json(std::string_view(head, static_cast<std::size_t>(in.gcount())))) return false;
+  return json_input_kind(read_input_file(f, "input file"), f) == JsonInput::graph;
+}
+
+}  // namespace
 
 int run_info(const InfoArgs& a) {
   int status = 0;
   for (const std::string& f : a.files) {
     if (!a.fingerprint_only && std::filesystem::path(f).extension() == ".toml") {
       for (const std::string& line : scene_summary(load_scene(f))) std::printf("%s\n", line.c_str());
+      continue;
+    }
+    if (!a.fingerprint_only && is_graph_file(f)) {
+      for (const std::string& line : scene_summary(graph_alone_scene(f))) std::printf("%s\n", line.c_str());
       continue;
     }
     const ImageInfo info = read_image_info(f);

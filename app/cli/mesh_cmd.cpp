@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   CLI::App* cmd = app.add_subcommand("mesh", "Export a scene's surface as a mesh or an OpenVDB level set (docs/mesh.md)");
-  cmd->add_option("scene", a.input, "Scene .toml with a map() or a graph")->required();
+  cmd->add_option("scene", a.input, "Scene .toml with a map() or a graph, or a graph file (.json) alone")->required();
   cmd->add_option("-o,--output", a.output,
                   "Output: .obj (with .mtl), .ply, .stl, .glb, or .vdb (a level set) (default: <scene>.obj)")
       ->check(not_empty());

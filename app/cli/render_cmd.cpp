@@ -24,9 +24,9 @@ namespace ms {
 namespace fs = std::filesystem;
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
-  CLI::App* cmd = app.add_subcommand("render", "Render a scene (.toml) or a Shadertoy shader (.glsl) to an image");
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene (.toml), a graph file (.json) or a Shadertoy shader (.glsl) to an image");
   cmd->add_option("input", a.inputs,
-                  "Scene .toml or Shadertoy .glsl/.frag/.json; several make a batch (see --output-dir)");
+                  "Scene .toml, graph file .json, or Shadertoy .glsl/.frag/.json; several make a batch (see --output-dir)");
   cmd->add_option("-o,--output", a.output,
                   "Output image: .png .jpg .tif (8-bit sRGB) or .exr (linear float) (default: <stem>.png, the "
                   "input's file name stem, in the current directory)")

@@ -35,7 +35,7 @@ namespace fs = std::filesystem;
 CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
   CLI::App* cmd = app.add_subcommand("view", "Open a window on a scene (.toml) or Shadertoy shader (.glsl); "
                                              "reloads on every save (docs/viewer.md)");
-  cmd->add_option("input", a.input, "Scene .toml or Shadertoy .glsl/.frag")->required();
+  cmd->add_option("input", a.input, "Scene .toml, graph file (.json) or Shadertoy .glsl/.frag/.json")->required();
   add_size_flag(cmd, "--size", a.size, "Window size WxH (default: the scene's, at most 1280x720)")->check(not_empty());
   add_shader_dir_flag(cmd, a.shader_dir);
   add_define_flag(cmd, a.defines);

@@ -357,11 +357,6 @@ class Loader {
 
 }  // namespace
 
-bool looks_like_json(std::string_view text) {
-  const size_t at = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
-  return at != std::string_view::npos && (text[at] == '{' || text[at] == '[');
-}
-
 ShaderProject load_shadertoy_json(std::string_view text, const std::string& display) {
   json root;
   try {

@@ -21,8 +21,4 @@ namespace ms {
 // `display` names the file in errors and in each pass's `where`.
 ShaderProject load_shadertoy_json(std::string_view text, const std::string& display);
 
-// True when `text` looks like Shadertoy JSON (its first non-space byte is
-// '{' or '['): a .json input, or a .glsl that is really a download.
-bool looks_like_json(std::string_view text);
-
 }  // namespace ms

@@ -10,6 +10,7 @@
 #include "preprocess/glsl_scan.h"
 #include "importers/glslviewer.h"
 #include "importers/project_json.h"
+#include "io/json_doc.h"
 #include "importers/vscode.h"
 
 namespace ms {

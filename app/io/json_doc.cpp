@@ -342,4 +342,9 @@ JsonDoc parse_json_doc(std::string_view text, const std::string& display, JsonCo
   return Parser(text, display, s).run();
 }
 
+bool looks_like_json(std::string_view text) {
+  const std::size_t at = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+  return at != std::string_view::npos && (text[at] == '{' || text[at] == '[');
+}
+
 }  // namespace ms

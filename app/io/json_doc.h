@@ -61,6 +61,10 @@ struct JsonCost {
   std::size_t per_level = 0;
 };
 
+// True when `text` looks like JSON (its first non-space byte is '{' or
+// '['): a .json input, or a .glsl that is really a Shadertoy download.
+bool looks_like_json(std::string_view text);
+
 // Throws ms::Error (exit 2) naming `display`, the line and what is wrong:
 // malformed text, a duplicate key, a number that is not finite; and, before
 // anything is allocated, a text whose values and nesting with `extra` need

@@ -13,6 +13,8 @@
 #include "pipeline/shader_dir.h"
 #include "render/environment.h"
 #include "render/project_passes.h"
+#include "io/json_doc.h"
+#include "scene/graph_alone.h"
 #include "scene/load.h"
 #include "scene/quality.h"
 #include "scene/suggest.h"
@@ -31,6 +33,14 @@ void apply_disable(Quality& q, const DisabledEffects& off) {
   if (off.checker_filter) q.checker_filter = false;
 }
 
+// A bare input that holds a scene graph, by its content (a .json name may
+// be Shadertoy's, and a download may be named .glsl); JSON that is neither
+// is refused here, in one line.
+bool is_graph_file(const fs::path& input) {
+  const std::string text = read_input_file(input, "input file");
+  return looks_like_json(text) && json_input_kind(text, input.string()) == JsonInput::graph;
+}
+
 }  // namespace
 
 LoadedInput load_input_scene(const fs::path& input, const DisabledEffects& disable, const AssembleOptions& opts,
@@ -41,10 +51,12 @@ LoadedInput load_input_scene(const fs::path& input, const DisabledEffects& disab
   in.overrides = overrides;
   if (input.extension() == ".toml") {
     in.scene = load_scene(input, overrides, include_roots(input, opts));
+  } else if (!overrides.empty()) {
+    fail_input("--set needs a scene .toml: " + input.filename().string() + " has no scene keys", {}, 0,
+               overrides.front().flag, "wrap the shader or graph in a scene file, or use --size, --spp and --time");
+  } else if (is_graph_file(input)) {
+    in.scene = graph_alone_scene(input);  // the same for every subcommand (scene/graph_alone.h)
   } else {
-    if (!overrides.empty())
-      fail_input("--set needs a scene .toml: " + input.filename().string() + " has no scene keys", {}, 0,
-                 overrides.front().flag, "wrap the shader in a scene file, or use --size, --spp and --time");
     // Shadertoy's output is display-referred: no tone map, no encode.
     in.scene.file = input;
     in.scene.name = input.stem().string();
@@ -94,7 +106,11 @@ void assemble_input(LoadedInput& in, const AssembleOptions& opts) {
 }
 
 Scene read_input_scene(const fs::path& input, const AssembleOptions& opts, const SceneOverrides& overrides) {
-  if (input.extension() != ".toml") return load_input(input, {}, opts, {}, overrides).scene;
+  if (input.extension() != ".toml") {
+    LoadedInput in = load_input_scene(input, {}, opts, {}, overrides);
+    if (in.shadertoy) assemble_input(in, opts);  // its media and passes are checked as load_input() does
+    return in.scene;
+  }
   check_input_file(input, "scene file");
   Scene s = load_scene(input, overrides, include_roots(input, opts));
   if (!s.shadertoy_file.empty() || s.passes) request_zero_initialised_locals();  // as WebGL: before any context

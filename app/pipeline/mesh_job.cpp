@@ -26,6 +26,7 @@
 #include "render/program.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
+#include "scene/graph_alone.h"
 
 namespace ms {
 
@@ -156,6 +157,10 @@ const LoadedInput& checked_input(const MeshJob& job, LoadedInput& in, MeshReport
   if (in.shadertoy)
     fail_input("a Shadertoy shader has no map(): there is no field to mesh", job.frame.input.string(), 0, "scene",
                "mesh a scene .toml with [scene] map or graph");
+  if (in.scene.graph_alone && job.planes)
+    fail_input("--planes has no effect on a graph file alone: it has no [[planes]], and its floor is for images",
+               job.frame.input.string(), 0, "--planes", "mesh a scene .toml whose [[planes]] name the ground");
+  drop_floor(in.scene);  // a graph file alone meshes as the graph only
   return in;
 }
 

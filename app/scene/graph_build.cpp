@@ -347,7 +347,7 @@ SceneGraph build_graph(const JsonDoc& doc, int node, const std::string& display,
   return Builder(doc, display, prefix, materials).build(node);
 }
 
-SceneGraph load_graph_file(const std::filesystem::path& file, const std::vector<Material>& materials) {
+SceneGraph load_graph_file(const std::filesystem::path& file, std::vector<Material>& materials) {
   const std::string display = file.string();
   // A node takes two values or more ("sdf" and its object, or "op", its
   // object, its children), and an operator's frame two levels (its object
@@ -361,6 +361,7 @@ SceneGraph load_graph_file(const std::filesystem::path& file, const std::vector<
                  "a graph file holds only \"root\"");
   const int root = doc.member(0, "root");
   if (root == -1) fail_input("missing \"root\"", display, 1, "", "a graph file is {\"root\": NODE}");
+  if (materials.empty()) materials = graph_default_materials(doc, display, "");
   SceneGraph g = build_graph(doc, root, display, "", materials);
   g.file = file;
   return g;

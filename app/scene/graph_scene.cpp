@@ -16,11 +16,7 @@ namespace ms {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-// The box the tracer marches: the graph's, grown so that a hit's
-// tolerance and the normals' offsets near the surface stay inside.
-Bounds bounds_of(const GraphBox& box) {
+Bounds graph_bounds(const GraphBox& box) {
   const float pad = static_cast<float>(1e-3 * glm::length(glm::dvec3(box.max - box.min)) + 1e-3);  // no float overflow
   Bounds b;
   b.kind = BoundsKind::box;
@@ -28,6 +24,8 @@ Bounds bounds_of(const GraphBox& box) {
   b.max = box.max + pad;
   return b;
 }
+
+namespace {
 
 // Judged before the file is looked at, so the error does not tell which
 // files exist out there, and with the include rule (map, shadertoy).
@@ -65,7 +63,7 @@ void attach_graph(const Reader& r, const toml::table& t, const fs::path& display
   }
   const GraphNode& root = g.root_node();
   scene.bounds_declared = scene.bounds.kind != BoundsKind::none;
-  if (!scene.bounds_declared) scene.bounds = bounds_of(root.box);
+  if (!scene.bounds_declared) scene.bounds = graph_bounds(root.box);
   Quality& q = scene.quality;
   if (std::find(q.explicit_keys.begin(), q.explicit_keys.end(), "lipschitz") == q.explicit_keys.end()) {
     q.lipschitz = root.lipschitz;
@@ -116,6 +114,13 @@ std::vector<std::string> scene_summary(const Scene& scene) {
                   " operators (" + std::to_string(g.nodes.size() - static_cast<std::size_t>(g.primitives)) +
                   " binary), box " + vec3_text(root.box.min) + " to " + vec3_text(root.box.max) +
                   ", Lipschitz bound " + format_number(root.lipschitz));
+  }
+  if (scene.graph_alone) {
+    const Plane& floor = scene.planes.back();
+    out.push_back("  defaults: camera at " + vec3_text(scene.camera.position) + " looking at " +
+                  vec3_text(scene.camera.target) + ", " + std::to_string(scene.lights.size()) +
+                  " lights, floor at y = " + format_number(-floor.offset) + ", " +
+                  std::to_string(scene.materials.size() - 1) + " materials besides the floor's");
   }
   const Bounds& b = scene.bounds;
   const std::string from = scene.graph && !scene.bounds_declared ? " (the graph's box)" : "";

@@ -19,6 +19,11 @@ namespace ms {
 void attach_graph(const Reader& r, const toml::table& t, const std::filesystem::path& display_path,
                   const std::vector<std::filesystem::path>& roots, Scene& scene);
 
+// The box the tracer marches for a graph with no [bounds]: the graph's,
+// grown so that a hit's tolerance and the normals' offsets near the
+// surface stay inside.
+Bounds graph_bounds(const GraphBox& box);
+
 // Where the graph's box pokes out of the scene's declared [bounds] box: ""
 // when it does not, else "by 0.3 along +x, 0.1 along -y". For the warning
 // that says what would be cut off (a sphere is probed like a map's).

@@ -41,8 +41,7 @@ void add_toml(JsonDoc& doc, const toml::node& n, int parent, std::string_view ke
 
 }  // namespace
 
-SceneGraph load_graph_table(const toml::table& graph, const std::string& display,
-                            const std::vector<Material>& materials) {
+SceneGraph load_graph_table(const toml::table& graph, const std::string& display, std::vector<Material>& materials) {
   JsonDoc doc;
   int last = -1;
   add_toml(doc, graph, -1, {}, last);
@@ -53,6 +52,7 @@ SceneGraph load_graph_table(const toml::table& graph, const std::string& display
   const int root = doc.member(0, "root");
   if (root == -1)
     fail_input("missing 'root'", display, doc.at(0).line, "scene.graph", "[scene.graph.root] is the root node");
+  if (materials.empty()) materials = graph_default_materials(doc, display, "scene.graph");
   return build_graph(doc, root, display, "scene.graph", materials);
 }
 

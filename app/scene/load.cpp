@@ -141,6 +141,9 @@ std::string upper(std::string s) {
 
 void read_materials(const Reader& r, const Schema& schema, const toml::table& root, Scene& scene) {
   const auto tables = r.tables(root, {}, "materials");
+  // A graph's materials default from the names it uses (scene/graph_build.h).
+  const toml::table* st = root["scene"].as_table();
+  if (tables.empty() && st && st->contains("graph")) return;
   if (tables.empty())
     r.fail(root.get("materials") ? Reader::line_of(root, "materials") : 0, "materials", "the scene defines no materials",
            "add at least one [[materials]] table with a name");

@@ -161,6 +161,9 @@ struct Scene {
   // Instead of map_file: a CSG graph ([scene] graph, docs/scene-graph.md).
   std::shared_ptr<const SceneGraph> graph;
   bool bounds_declared = false;    // [bounds] came from the file (else, with a graph, from its box)
+  // A graph file on its own: camera, lights, floor and materials are
+  // defaults (scene/graph_alone.h).
+  bool graph_alone = false;
   ShadertoySettings shadertoy;     // [shadertoy]: media, mouse, fps
   std::string name;
   Camera camera;

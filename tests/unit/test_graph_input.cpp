@@ -105,7 +105,8 @@ TEST(GraphErrors, MegabyteNamesAreCutInTheLine) {
       graph_error(node("{\"op\": \"" + big + "\", \"children\": []}")),           // unknown operator
       error_of([&] {  // a file's top level holds only "root"
         write_file(dir / "g.json", "{\"" + big + "\": 1, \"root\": {}}");
-        ms::load_graph_file(dir / "g.json", {ms::Material{"m"}});
+        std::vector<ms::Material> mats{ms::Material{"m"}};
+        ms::load_graph_file(dir / "g.json", mats);
       }),
       graph_error("{\"root\": {\"" + big + "\": 1, \"" + big + "\": 2}}"),         // duplicate
       graph_error(node("{\"sdf\": \"sdSphere\", \"r\": 1" + std::string(400, '0') + "e999}")),

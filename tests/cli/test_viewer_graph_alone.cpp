@@ -1,0 +1,40 @@
+// The viewer on a graph file alone, under Xvfb: it opens with the default
+// scene render makes of the file (docs/scene-graph.md#a-graph-file-on-its-own),
+// and a save reloads it.
+#include <gtest/gtest.h>
+
+#include "io/image_io.h"
+#include "run.h"
+#include "test_viewer_util.h"
+
+namespace ms::test {
+namespace {
+namespace fs = std::filesystem;
+
+TEST(ViewerGraphAlone, OpensWithRendersDefaultSceneAndReloadsOnSave) {
+  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+  TempDir dir;
+  std::string json = read_file(source_dir() / "tests" / "data" / "graph" / "part.json");
+  write_file(dir / "part.json", json);
+  const fs::path log = dir / "log.txt";
+  const std::string server = std::to_string(100 + (getpid() + 4211) % 20000);
+  BackgroundProcess proc({"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+                          (dir / "part.json").string(), "--size", "160x90", "--paused", "--no-panel", "--log",
+                          log.string(), "--capture-dir", (dir / "cap").string(), "--exit-after", "200"},
+                         dir / "out.txt", dir / "err.txt");
+  ASSERT_TRUE(proc.started());
+  ASSERT_FALSE(wait_for_line(log, "^reload ok 0 ", 120).empty()) << read_file(log) << read_file(dir / "err.txt");
+  ASSERT_FALSE(wait_for_line(log, "^capture 0 ", 10).empty());
+  const RunResult r = run_marchstudio({"render", (dir / "part.json").string(), "--size", "160x90", "-o",
+                                       (dir / "render.png").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_LE(max_abs_diff(read_image(dir / "cap" / "frame_0.png"), read_image(dir / "render.png")), 2.0 / 255.0);
+  // A saved edit reloads the file as a graph again.
+  json.replace(json.find("\"r\": 0.35"), 9, "\"r\": 0.45");
+  save_by_rename(dir / "part.json", json);
+  const std::string line = wait_for_line(log, "^reload (ok|failed) 1 ", 120);
+  EXPECT_EQ(line.rfind("reload ok ", 0), 0u) << line << read_file(log) << read_file(dir / "err.txt");
+}
+
+}  // namespace
+}  // namespace ms::test
