@@ -129,12 +129,13 @@ TEST(GraphHalfSpaces, AnInlineTableOpensAnEndWithInf) {
   const toml::table t = toml::parse(
       "[root]\nop = \"opIntersection\"\nchildren = [{ sdf = \"sdSphere\", r = 1.0 },\n"
       "  { sdf = \"sdSlab\", y = [-inf, 0.5] }, { sdf = \"sdSlab\", x = [-0.25, inf] }]\n");
-  const ms::SceneGraph g = ms::load_graph_table(t, "s.toml", {ms::Material{"m"}});
+  std::vector<ms::Material> materials{ms::Material{"m"}};
+  const ms::SceneGraph g = ms::load_graph_table(t, "s.toml", materials);
   expect_box(g.root_node().box, {-0.25f, -1, -1}, {1, 0.5f, 1});
   // The wrong infinity for its end is not a number.
   const toml::table bad = toml::parse("[root]\nsdf = \"sdSlab\"\ny = [inf, 0.5]\n");
   try {
-    ms::load_graph_table(bad, "s.toml", {ms::Material{"m"}});
+    ms::load_graph_table(bad, "s.toml", materials);
     ADD_FAILURE() << "no error";
   } catch (const ms::Error& e) {
     EXPECT_NE(std::string(e.what()).find("scene.graph/root/y/0: each end of 'y' must be a finite number"),
