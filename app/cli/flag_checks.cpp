@@ -70,27 +70,26 @@ CLI::Validator seconds_value() {
       "SECONDS");
 }
 
-CLI::Validator non_negative() {
-  return CLI::Validator(
-      [](std::string& v) -> std::string {
-        char* end = nullptr;
-        const double x = std::strtod(v.c_str(), &end);
-        if (end == v.c_str() || *end != '\0' || !std::isfinite(x)) return "'" + v + "' is not a number";
-        return x < 0 ? "must be >= 0, got " + v : "";
-      },
-      "NUMBER >= 0");
-}
+namespace {
 
-CLI::Validator positive() {
+// A finite number at or above zero, or strictly above it.
+CLI::Validator finite_from_zero(bool zero_allowed) {
   return CLI::Validator(
-      [](std::string& v) -> std::string {
+      [zero_allowed](std::string& v) -> std::string {
         char* end = nullptr;
         const double x = std::strtod(v.c_str(), &end);
         if (end == v.c_str() || *end != '\0' || !std::isfinite(x)) return "'" + v + "' is not a number";
+        if (zero_allowed) return x < 0 ? "must be >= 0, got " + v : "";
         return x > 0 ? "" : "must be > 0, got " + v;
       },
-      "NUMBER > 0");
+      zero_allowed ? "NUMBER >= 0" : "NUMBER > 0");
 }
+
+}  // namespace
+
+CLI::Validator non_negative() { return finite_from_zero(true); }
+
+CLI::Validator positive() { return finite_from_zero(false); }
 
 CLI::Option* add_hidden_pixels(CLI::App* cmd, const std::string& name, int& value, const std::string& description) {
   return cmd

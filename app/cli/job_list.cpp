@@ -1,7 +1,5 @@
 #include "cli/job_list.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -22,6 +20,7 @@
 #include "pipeline/input.h"
 #include "scene/suggest.h"
 #include "importers/json_brief.h"
+#include "io/input_file.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -304,12 +303,10 @@ const std::vector<std::string>& job_keys() {
 
 JobFile::JobFile(const fs::path& file, const RenderArgs& defaults, DefaultOutput default_output)
     : file_(file), defaults_(defaults), default_output_(std::move(default_output)), buf_(std::size_t{1} << 16) {
-  // Non-blocking, so that a FIFO named here is refused rather than waited on.
-  fd_ = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  struct stat st{};
-  if (fd_ >= 0 && ::fstat(fd_, &st) == 0 && S_ISREG(st.st_mode)) return;
-  if (fd_ >= 0) ::close(fd_);
-  fd_ = -1;
+  // A FIFO named here is refused rather than waited on.
+  std::string why;
+  fd_ = open_regular_file(file, why);
+  if (fd_ >= 0) return;
   std::error_code ec;
   if (fs::is_regular_file(file, ec)) fail_system("cannot read the job file", file.string());  // unreadable
   fail_input("no such job file (or not a regular file)", file.string(), 0, "--jobs");
@@ -377,7 +374,8 @@ std::optional<BatchEntry> JobFile::next() {
 }
 
 int JobFile::count_jobs(const fs::path& file) {
-  const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  std::string why;
+  const int fd = open_regular_file(file, why);
   if (fd < 0) return 0;
   std::vector<char> buf(std::size_t{1} << 16);
   int count = 0;
