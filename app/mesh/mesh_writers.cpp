@@ -22,6 +22,22 @@ using namespace mesh_detail;
 
 namespace mesh_detail {
 
+namespace {
+
+// Every index of `indices` (a "mesh index" or a "mesh normal index") names
+// one of `count` elements (`of`), and a 32-bit index reaches them all.
+void check_indices(const std::vector<std::uint32_t>& indices, std::size_t count, const std::string& what,
+                   const std::string& of, const fs::path& file) {
+  if (count > std::numeric_limits<std::uint32_t>::max())
+    fail_input("mesh has more " + of + " than a 32-bit index reaches", file.string());
+  for (std::uint32_t i : indices)
+    if (i >= count)
+      fail_input("mesh " + what + " " + std::to_string(i) + " is past its " + std::to_string(count) + " " + of,
+                 file.string());
+}
+
+}  // namespace
+
 void check_mesh(const TriMesh& mesh, const fs::path& file) {
   if (mesh.indices.size() % 3 != 0)
     fail_input("mesh indices are not whole triangles (" + std::to_string(mesh.indices.size()) + ")", file.string());
@@ -29,25 +45,13 @@ void check_mesh(const TriMesh& mesh, const fs::path& file) {
     fail_input("mesh has " + std::to_string(mesh.material.size()) + " material ids for " +
                    std::to_string(mesh.positions.size()) + " vertices",
                file.string());
-  if (mesh.positions.size() > std::numeric_limits<std::uint32_t>::max())
-    fail_input("mesh has more vertices than a 32-bit index reaches", file.string());
-  for (std::uint32_t i : mesh.indices)
-    if (i >= mesh.positions.size())
-      fail_input("mesh index " + std::to_string(i) + " is past its " + std::to_string(mesh.positions.size()) +
-                     " vertices",
-                 file.string());
+  check_indices(mesh.indices, mesh.positions.size(), "index", "vertices", file);
   if (mesh.normals.empty() && mesh.normal_index.empty()) return;
   if (mesh.normal_index.size() != mesh.indices.size())
     fail_input("mesh has " + std::to_string(mesh.normal_index.size()) + " normal indices for " +
                    std::to_string(mesh.indices.size()) + " corners",
                file.string());
-  if (mesh.normals.size() > std::numeric_limits<std::uint32_t>::max())
-    fail_input("mesh has more normals than a 32-bit index reaches", file.string());
-  for (std::uint32_t i : mesh.normal_index)
-    if (i >= mesh.normals.size())
-      fail_input("mesh normal index " + std::to_string(i) + " is past its " + std::to_string(mesh.normals.size()) +
-                     " normals",
-                 file.string());
+  check_indices(mesh.normal_index, mesh.normals.size(), "normal index", "normals", file);
 }
 
 SplitVertices split_by_normal(const TriMesh& mesh) {
