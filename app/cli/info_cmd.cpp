@@ -3,12 +3,9 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include "core/error.h"
 #include "io/image_io.h"
-#include "io/input_file.h"
-#include "io/json_doc.h"
 #include "scene/graph_alone.h"
 #include "scene/graph_scene.h"
 #include "scene/load.h"
@@ -23,22 +20,6 @@ CLI::App* add_info_command(CLI::App& app, InfoArgs& a) {
                 "Print only each file's fingerprint (exit 1 when one has none)");
   return cmd;
 }
-
-namespace {
-
-// A graph file, told from an image by its first bytes (no image format
-// starts as JSON does) and from Shadertoy JSON by its content; a FIFO or
-// a missing file is left to the image reader's error.
-bool is_graph_file(const std::string& f) {
-  if (!input_file_problem(f).empty()) return false;
-  char head[64] = {};
-  std::ifstream in(f, std::ios::binary);
-  in.read(head, sizeof head);
-  if (!looks_like_json(std::string_view(head, static_cast<std::size_t>(in.gcount())))) return false;
-  return json_input_kind(read_input_file(f, "input file"), f) == JsonInput::graph;
-}
-
-}  // namespace
 
 int run_info(const InfoArgs& a) {
   int status = 0;

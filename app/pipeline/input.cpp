@@ -33,14 +33,6 @@ void apply_disable(Quality& q, const DisabledEffects& off) {
   if (off.checker_filter) q.checker_filter = false;
 }
 
-// A bare input that holds a scene graph, by its content (a .json name may
-// be Shadertoy's, and a download may be named .glsl); JSON that is neither
-// is refused here, in one line.
-bool is_graph_file(const fs::path& input) {
-  const std::string text = read_input_file(input, "input file");
-  return looks_like_json(text) && json_input_kind(text, input.string()) == JsonInput::graph;
-}
-
 }  // namespace
 
 LoadedInput load_input_scene(const fs::path& input, const DisabledEffects& disable, const AssembleOptions& opts,

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <fstream>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "core/error.h"
 #include "core/format.h"
+#include "io/input_file.h"
 #include "io/json_doc.h"
 #include "scene/graph_build.h"
 #include "scene/graph_scene.h"
@@ -142,6 +144,19 @@ JsonInput json_input_kind(std::string_view text, const std::string& display) {
   fail_input("neither a scene graph nor Shadertoy JSON", display, 1, {},
              "a graph file is {\"root\": NODE} (docs/scene-graph.md); Shadertoy JSON is {\"Shader\": {...}} or an "
              "array of shaders");
+}
+
+bool is_graph_file(const fs::path& file) {
+  if (!input_file_problem(file).empty()) return false;
+  // The first bytes turn an image away before it is read whole; a head of
+  // blanks alone says nothing yet.
+  char head[64] = {};
+  std::ifstream in(file, std::ios::binary);
+  in.read(head, sizeof head);
+  const std::string_view h(head, static_cast<std::size_t>(in.gcount()));
+  if (h.find_first_not_of(" \t\r\n\xEF\xBB\xBF") != std::string_view::npos && !looks_like_json(h)) return false;
+  const std::string text = read_input_file(file, "input file");
+  return looks_like_json(text) && json_input_kind(text, file.string()) == JsonInput::graph;
 }
 
 std::vector<Material> graph_default_materials(const JsonDoc& doc, const std::string& display,

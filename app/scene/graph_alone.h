@@ -19,6 +19,13 @@ enum class JsonInput { graph, shadertoy };
 // Shadertoy's. Anything else throws one line naming both forms (exit 2).
 JsonInput json_input_kind(std::string_view text, const std::string& display);
 
+// Whether `file` holds a scene graph, by its content (a .json name may be
+// Shadertoy's, a download may be named .glsl, and an image never starts
+// as JSON does): its first bytes, then, for JSON, json_input_kind(), which
+// throws for JSON that is neither. False for a file that is missing or not
+// regular, whose reader says why.
+bool is_graph_file(const std::filesystem::path& file);
+
 // The scene around the graph in `file`: the graph as `[scene] graph` reads
 // it, a camera that frames its box, a key and a fill light, a floor just
 // below the box, and default materials (scene_graph_materials()); the
