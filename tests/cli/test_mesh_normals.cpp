@@ -21,20 +21,6 @@
 namespace ms::test {
 namespace {
 
-double degrees(const glm::vec3& a, const glm::vec3& b) {
-  return glm::degrees(std::acos(std::clamp(static_cast<double>(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0)));
-}
-
-// Distinct normals per position.
-std::map<std::tuple<float, float, float>, std::set<std::tuple<float, float, float>>> normals_at(const ReadMesh& r) {
-  std::map<std::tuple<float, float, float>, std::set<std::tuple<float, float, float>>> out;
-  for (std::size_t c = 0; c < r.indices.size(); ++c) {
-    const glm::vec3 p = r.positions[r.indices[c]], n = r.normals[r.normal_index[c]];
-    out[{p.x, p.y, p.z}].emplace(n.x, n.y, n.z);
-  }
-  return out;
-}
-
 ReadMesh export_as(const std::string& scene, const TempDir& dir, const std::string& name) {
   const RunResult r = run_marchstudio({"mesh", scene, "-o", (dir / name).string(), "--resolution", "32"}, dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.err;

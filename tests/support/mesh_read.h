@@ -5,15 +5,20 @@
 //   const ReadMesh m = read_ply(dir / "out.ply");
 //   m.normals[m.normal_index[c]]   // corner c's normal
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec3.hpp>
 
 namespace ms::test {
@@ -98,6 +103,24 @@ inline std::size_t distinct_positions(const ReadMesh& m) {
   std::set<std::tuple<float, float, float>> seen;
   for (const glm::vec3& p : m.positions) seen.emplace(p.x, p.y, p.z);
   return seen.size();
+}
+
+// The angle between two directions, in degrees.
+inline double degrees(const glm::vec3& a, const glm::vec3& b) {
+  const double c = glm::dot(glm::normalize(a), glm::normalize(b));
+  return glm::degrees(std::acos(std::clamp(c, -1.0, 1.0)));
+}
+
+// Per position in the file, its distinct normals (a crease vertex has one
+// per side).
+inline std::map<std::tuple<float, float, float>, std::set<std::tuple<float, float, float>>> normals_at(
+    const ReadMesh& r) {
+  std::map<std::tuple<float, float, float>, std::set<std::tuple<float, float, float>>> out;
+  for (std::size_t c = 0; c < r.indices.size(); ++c) {
+    const glm::vec3 p = r.positions[r.indices[c]], n = r.normals[r.normal_index[c]];
+    out[{p.x, p.y, p.z}].emplace(n.x, n.y, n.z);
+  }
+  return out;
 }
 
 }  // namespace ms::test

@@ -31,6 +31,8 @@
 namespace ms {
 namespace {
 namespace fs = std::filesystem;
+using test::degrees;
+using test::normals_at;
 using test::ReadMesh;
 using test::TempDir;
 
@@ -96,20 +98,6 @@ ReadMesh written(const TriMesh& m, const TempDir& dir, const std::string& name) 
   EXPECT_TRUE(r.ok) << name;
   EXPECT_EQ(r.normal_index.size(), r.indices.size()) << name;
   return r;
-}
-
-double degrees(const glm::vec3& a, const glm::vec3& b) {
-  return glm::degrees(std::acos(std::clamp(static_cast<double>(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0)));
-}
-
-// Per position in the file, its distinct normals.
-std::map<std::tuple<float, float, float>, std::set<std::tuple<float, float, float>>> normals_at(const ReadMesh& r) {
-  std::map<std::tuple<float, float, float>, std::set<std::tuple<float, float, float>>> out;
-  for (std::size_t c = 0; c < r.indices.size(); ++c) {
-    const glm::vec3 p = r.positions[r.indices[c]], n = r.normals[r.normal_index[c]];
-    out[{p.x, p.y, p.z}].emplace(n.x, n.y, n.z);
-  }
-  return out;
 }
 
 const char* const kFormats[] = {"m.obj", "m.ply", "m.glb"};
