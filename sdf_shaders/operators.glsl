@@ -76,3 +76,4 @@ float opSmoothIntersection(float a, float b, float k) {
 
 #include "combinators.glsl"
 #include "domain.glsl"
+#include "modifiers.glsl"

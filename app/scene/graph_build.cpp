@@ -12,6 +12,7 @@
 #include "core/format.h"
 #include "io/input_file.h"
 #include "scene/graph_read.h"
+#include "scene/graph_unary.h"
 #include "scene/graph_vocab.h"
 #include "scene/suggest.h"
 #include "scene/toml_read.h"
@@ -30,15 +31,18 @@ struct Affine {
 constexpr std::string_view kNodeKeys[] = {"sdf", "op", "children", "translate", "rotate", "scale", "matrix",
                                           "material", "name"};
 
-// An operator waiting for its children, folded left as they arrive.
+// An operator waiting for its children, folded left as they arrive, or a
+// modifier waiting for its one child.
 struct Frame {
   int value = -1;
   int fn = -1;
   Affine xf;
   int material = 0;
-  std::vector<float> params;  // world units
+  std::vector<float> params;  // operators: in their frame's units; modifiers: local
   int next_child = -1;
   int acc = -1;               // the fold so far
+  int unary = -1;             // a modifier: graph_unaries()[unary]
+  int dims = 3;               // of the children: 2 under extrude and revolve
 };
 
 class Builder : GraphReader {
@@ -48,18 +52,19 @@ class Builder : GraphReader {
 
   SceneGraph build(int root) {
     std::vector<Frame> stack;
-    visit(root, Affine{}, 0, stack);
+    visit(root, Affine{}, 0, 3, stack);
     while (!stack.empty()) {
       Frame& f = stack.back();
       if (f.next_child != -1) {
         const int child = f.next_child;
         f.next_child = doc_.at(child).next;
-        const Affine xf = f.xf;
-        const int mat = f.material;
-        visit(child, xf, mat, stack);  // may push: `f` is not used after
+        // A modifier's child starts a frame of its own.
+        const Affine xf = f.unary == -1 ? f.xf : Affine{};
+        const int mat = f.material, dims = f.dims;
+        visit(child, xf, mat, dims, stack);  // may push: `f` is not used after
         continue;
       }
-      const int done = f.acc;
+      const int done = f.unary == -1 ? f.acc : modifier(f, f.acc);
       stack.pop_back();
       deliver(done, stack);
     }
@@ -92,26 +97,39 @@ class Builder : GraphReader {
          "intersect it with a bounded shape or subtract it from one; ground planes go in [[planes]]");
   }
 
-  // A node: a leaf is made at once; an operator is pushed to collect its children.
-  void visit(int v, const Affine& parent, int inherited, std::vector<Frame>& stack) {
+  // A node: a leaf is made at once; an operator or modifier is pushed to
+  // collect its children. `dims` is 2 inside a profile.
+  void visit(int v, const Affine& parent, int inherited, int dims, std::vector<Frame>& stack) {
     if (doc_.at(v).kind != JsonKind::object) fail(v, "a node must be an object with 'sdf' or 'op'");
     check_keys(v);
-    const Affine xf = transform(v, parent);
+    const Affine xf = transform(v, parent, dims);
     const int mat = material(v, inherited);
     const int sdf = doc_.member(v, "sdf"), op = doc_.member(v, "op");
     if ((sdf == -1) == (op == -1))
       fail(v, sdf == -1 ? "a node needs 'sdf' (a primitive) or 'op' (a combinator)" : "'sdf' and 'op' exclude each other");
     if (sdf != -1) {
       if (const int c = doc_.member(v, "children"); c != -1) fail(c, "a primitive has no children");
-      deliver(leaf(v, sdf, xf, mat), stack);
+      deliver(leaf(v, sdf, xf, mat, dims), stack);
+      return;
+    }
+    const int children = doc_.member(v, "children");
+    if (const int u = unary_of(op); u != -1) {
+      const GraphUnary& un = graph_unaries()[static_cast<std::size_t>(u)];
+      if (dims == 2 && !un.on_profiles)
+        fail(op, quote(un.name) + " cannot be used on a 2D profile", "use it on the extruded or revolved solid");
+      if (children == -1 || doc_.at(children).kind != JsonKind::array || doc_.at(children).count != 1)
+        fail(children == -1 ? v : children, quote(un.name) + " takes one child: 'children' must be an array of one node");
+      const int child_dims = un.child_dims == 2 ? 2 : dims;
+      stack.push_back({v, u, xf, mat, read_params(v, un.params), doc_.at(children).first, -1, u, child_dims});
+      ++g_.operators;
       return;
     }
     const int fn = name_of(op, graph_operators(), "combinator");
-    const int children = doc_.member(v, "children");
     if (children == -1) fail(v, "an operator needs 'children'", "two or more nodes");
     if (doc_.at(children).kind != JsonKind::array || doc_.at(children).count < 2)
       fail(children, "'children' must be an array of two or more nodes");
     Frame f{v, fn, xf, mat, read_params(v, graph_operators()[static_cast<std::size_t>(fn)].params), doc_.at(children).first, -1};
+    f.dims = dims;
     const auto& defs = graph_operators()[static_cast<std::size_t>(fn)].params;
     for (std::size_t i = 0, k = 0; i < defs.size(); k += static_cast<std::size_t>(defs[i].size), ++i)
       if (defs[i].length)
@@ -124,6 +142,45 @@ class Builder : GraphReader {
         }
     ++g_.operators;
     stack.push_back(std::move(f));
+  }
+
+  // The modifier's index when `op` names one, else -1 (an unknown name is
+  // reported by name_of() with the combinators' and modifiers' names).
+  int unary_of(int op) const {
+    if (doc_.at(op).kind != JsonKind::string) return -1;
+    const std::string_view name = doc_.text(op);
+    if (find_operator(name) != -1) return -1;
+    return find_unary(name);
+  }
+
+  // A modifier over its finished child: its box and bound from the child's,
+  // in its own frame, then in its parent's.
+  int modifier(const Frame& f, int child) {
+    const GraphUnary& un = graph_unaries()[static_cast<std::size_t>(f.unary)];
+    GraphNode n;
+    n.leaf = false;
+    n.unary = true;
+    n.fn = f.unary;
+    n.left = child;
+    std::vector<float> params = f.params;
+    const GraphNode& c = g_.nodes[static_cast<std::size_t>(child)];
+    const std::string why = un.shape(c, params.data(), n);
+    if (!why.empty()) fail(f.value, quote(un.name) + ": " + why);
+    if (n.core.empty()) fail(f.value, quote(un.name) + " leaves nothing: its child is empty");
+    n.lipschitz *= c.lipschitz;
+    n.param = static_cast<int>(g_.params.size());
+    g_.params.insert(g_.params.end(), params.begin(), params.end());
+    n.material = c.material;
+    n.to_local = f.xf.a;
+    n.offset = f.xf.b;
+    n.scale = f.xf.s;
+    n.core = world_box(f.value, n.core, f.xf);
+    n.slack *= f.xf.s;
+    n.box = box_grow(n.core, n.slack);
+    n.line = doc_.at(f.value).line;
+    g_.nodes.push_back(n);
+    value_.push_back(f.value);
+    return static_cast<int>(g_.nodes.size()) - 1;
   }
 
   // A finished subtree: the root, or the next child of the operator on top.
@@ -156,9 +213,15 @@ class Builder : GraphReader {
     return static_cast<int>(g_.nodes.size()) - 1;
   }
 
-  int leaf(int v, int sdf, const Affine& xf, int mat) {
+  int leaf(int v, int sdf, const Affine& xf, int mat, int dims) {
     const int fn = name_of(sdf, graph_primitives(), "primitive");
     const GraphPrimitive& prim = graph_primitives()[static_cast<std::size_t>(fn)];
+    if (prim.dims == 2 && dims == 3)
+      fail(sdf, "the 2D profile " + quote(prim.name) + " must be inside an 'extrude' or 'revolve'",
+           "a profile is a shape of the plane: extrude or revolve it into a solid");
+    if (prim.dims == 3 && dims == 2)
+      fail(sdf, "the solid " + quote(prim.name) + " cannot be part of a 2D profile",
+           "under 'extrude' and 'revolve' only 2D shapes (sd2*) and their combinations");
     GraphNode n;
     n.fn = fn;
     n.param = static_cast<int>(g_.params.size());
@@ -219,7 +282,8 @@ class Builder : GraphReader {
       std::vector<std::string_view> cands(std::begin(kNodeKeys), std::end(kNodeKeys));
       const std::vector<GraphParam>* defs = params_of(v);
       if (defs)
-        for (const GraphParam& p : *defs) cands.push_back(p.name);
+        for (const GraphParam& p : *defs)
+          if (!p.derived) cands.push_back(p.name);
       fail(c, "unknown key " + quote(k), did_you_mean(k, cands));
     }
   }
@@ -227,15 +291,17 @@ class Builder : GraphReader {
   const std::vector<GraphParam>* params_of(int v) const {
     if (const int s = doc_.member(v, "sdf"); s != -1 && doc_.at(s).kind == JsonKind::string)
       if (const int fn = find_primitive(doc_.text(s)); fn != -1) return &graph_primitives()[static_cast<std::size_t>(fn)].params;
-    if (const int o = doc_.member(v, "op"); o != -1 && doc_.at(o).kind == JsonKind::string)
+    if (const int o = doc_.member(v, "op"); o != -1 && doc_.at(o).kind == JsonKind::string) {
       if (const int fn = find_operator(doc_.text(o)); fn != -1) return &graph_operators()[static_cast<std::size_t>(fn)].params;
+      if (const int u = find_unary(doc_.text(o)); u != -1) return &graph_unaries()[static_cast<std::size_t>(u)].params;
+    }
     return nullptr;
   }
   bool is_param(int v, std::string_view k) const {
     const std::vector<GraphParam>* defs = params_of(v);
     if (!defs) return true;  // the unknown function is reported first
     for (const GraphParam& p : *defs)
-      if (p.name == k) return true;
+      if (p.name == k && !p.derived) return true;
     return false;
   }
 
@@ -247,10 +313,14 @@ class Builder : GraphReader {
       if (list[i].name == name) return static_cast<int>(i);
     std::vector<std::string_view> names;
     for (const T& t : list) names.push_back(t.name);
+    if (std::string_view(what) == "combinator")
+      for (const GraphUnary& u : graph_unaries()) names.push_back(u.name);
     fail(v, std::string("unknown ") + what + " " + quote(name), did_you_mean(name, names));
   }
 
-  Affine transform(int v, const Affine& parent) const;
+  Affine transform(int v, const Affine& parent, int dims) const;
+  Affine transform_2d(int v, const Affine& parent) const;
+  Affine compose(int v, const Affine& parent, const glm::mat3& rot, glm::vec3 t, float s, int own) const;
   int material(int v, int inherited) const {
     const int m = doc_.member(v, "material");
     if (m == -1) return inherited;
@@ -283,10 +353,11 @@ glm::mat3 axis_angle(glm::vec3 axis, float degrees) {
 
 // The node's local-to-parent map x -> l x + t, with l a rotation times s;
 // composed under the parent's world-to-local map.
-Affine Builder::transform(int v, const Affine& parent) const {
+Affine Builder::transform(int v, const Affine& parent, int dims) const {
   glm::mat3 rot{1.0f};
   glm::vec3 t{0.0f};
   float s = 1.0f;
+  if (dims == 2) return transform_2d(v, parent);
   if (const int m = doc_.member(v, "matrix"); m != -1) {
     for (const char* other : {"translate", "rotate", "scale"})
       if (doc_.member(v, other) != -1) fail(m, std::string("'matrix' and '") + other + "' exclude each other");
@@ -322,10 +393,39 @@ Affine Builder::transform(int v, const Affine& parent) const {
       t = {x[0], x[1], x[2]};
     }
   }
+  const int own = doc_.member(v, "matrix") != -1 ? doc_.member(v, "matrix") : doc_.member(v, "scale");
+  return compose(v, parent, rot, t, s, own);
+}
+
+// A profile's transforms, in its plane: translate [x, y], rotate by
+// degrees about z, a uniform scale.
+Affine Builder::transform_2d(int v, const Affine& parent) const {
+  if (const int m = doc_.member(v, "matrix"); m != -1)
+    fail(m, "a 2D profile takes 'translate' [x, y], 'rotate' (degrees) and 'scale', not 'matrix'");
+  glm::mat3 rot{1.0f};
+  glm::vec3 t{0.0f};
+  float s = 1.0f;
+  if (const int c = doc_.member(v, "scale"); c != -1) {
+    s = number(c, "'scale'");
+    if (!(s > 0.0f)) fail(c, "'scale' must be > 0", "a uniform scale factor");
+  }
+  if (const int c = doc_.member(v, "rotate"); c != -1) {
+    if (doc_.at(c).kind != JsonKind::number) fail(c, "a 2D profile's 'rotate' is one angle in degrees (about z)");
+    rot = axis_angle({0.0f, 0.0f, 1.0f}, number(c, "'rotate'"));
+  }
+  if (const int c = doc_.member(v, "translate"); c != -1) {
+    const std::vector<float> x = numbers(c, 2, "a 2D profile's 'translate'");
+    t = {x[0], x[1], 0.0f};
+  }
+  return compose(v, parent, rot, t, s, doc_.member(v, "scale"));
+}
+
+// The node's local-to-parent map x -> rot s x + t under the parent's
+// world-to-local map; `own` is the key the scale came from, for messages.
+Affine Builder::compose(int v, const Affine& parent, const glm::mat3& rot, glm::vec3 t, float s, int own) const {
   // The whole chain's scale, and what it does to the translation, must be
   // a float the shader can use: else the box overflows and the graph would
   // look unbounded.
-  const int own = doc_.member(v, "matrix") != -1 ? doc_.member(v, "matrix") : doc_.member(v, "scale");
   const double total = static_cast<double>(parent.s) * s;
   if (total > kMaxCoord || total < 1.0 / kMaxCoord)
     fail(own, "the scales from the root down to this node multiply to " + format_number(total) +

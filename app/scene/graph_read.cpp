@@ -33,7 +33,15 @@ std::vector<float> GraphReader::read_params(int v, const std::vector<GraphParam>
   std::vector<float> out;
   bool ranges = false, bounded = false;
   for (const GraphParam& p : defs) {
+    if (p.derived) {
+      out.insert(out.end(), static_cast<std::size_t>(p.size), 0.0f);
+      continue;
+    }
     const int c = doc_.member(v, p.name);
+    if (c == -1 && p.optional) {
+      out.insert(out.end(), p.fallback, p.fallback + p.size);
+      continue;
+    }
     if (p.range) {
       const std::vector<float> r = range(c, p.name);
       ranges = true;
@@ -45,6 +53,8 @@ std::vector<float> GraphReader::read_params(int v, const std::vector<GraphParam>
     const std::vector<float> xs = numbers(c, p.size, quote(p.name));
     for (float x : xs)
       if (p.nonneg && x < 0.0f) fail(c, quote(p.name) + " must not be negative", "it is a size");
+    for (float x : xs)
+      if (p.fraction && !(x >= 0.0f && x <= 1.0f)) fail(c, quote(p.name) + " must be in [0, 1]", "it is a weight");
     if (p.unit) unit(c, p.name, xs);
     out.insert(out.end(), xs.begin(), xs.end());
   }
@@ -86,11 +96,13 @@ void GraphReader::unit(int c, std::string_view name, const std::vector<float>& x
 }
 
 std::string GraphReader::describe(const std::vector<GraphParam>& defs) {
-  if (defs.empty()) return "it takes none";
-  std::string s = "it takes ";
-  for (std::size_t i = 0; i < defs.size(); ++i)
-    s += (i ? ", " : "") + std::string(defs[i].name) + (defs[i].size > 1 ? " (" + std::to_string(defs[i].size) + " numbers)" : "");
-  return s;
+  std::string s;
+  for (const GraphParam& d : defs) {
+    if (d.derived) continue;
+    s += (s.empty() ? "" : ", ") + std::string(d.name) + (d.size > 1 ? " (" + std::to_string(d.size) + " numbers)" : "") +
+         (d.optional ? " (optional)" : "");
+  }
+  return s.empty() ? "it takes none" : "it takes " + s;
 }
 
 }  // namespace ms

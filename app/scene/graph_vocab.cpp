@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/vec2.hpp>
+
 namespace ms {
 
 namespace {
@@ -23,6 +25,11 @@ GraphBox points(std::initializer_list<glm::vec3> ps, float r) {
     b.max = glm::max(b.max, p + r);
   }
   return b;
+}
+
+GraphBox points2(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
+  return {{std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), 0.0f},
+          {std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), 0.0f}};
 }
 
 GraphParam pos(std::string_view n, int size = 3) { return {n, size, false, true}; }
@@ -95,6 +102,22 @@ const std::vector<GraphPrimitive>& primitives() {
        [](P p) { return sym(p[0] + p[3], p[2], p[1] + p[3]); }},
       {"sdDodecahedron", {len("r")}, 1, [](P p) { const float r = p[0] * kPlatonicR; return sym(r, r, r); }},
       {"sdIcosahedron", {len("r")}, 1, [](P p) { const float r = p[0] * kPlatonicR; return sym(r, r, r); }},
+      // Profiles: shapes of p.xy, solids only through extrude or revolve.
+      {"sd2Circle", {len("r")}, 1, [](P p) { return sym(p[0], p[0], 0); }, 2},
+      {"sd2Box", {len("b", 2)}, 1, [](P p) { return sym(p[0], p[1], 0); }, 2},
+      {"sd2RoundBox", {len("b", 2), len("r")}, 1, [](P p) { return sym(p[0], p[1], 0); }, 2},
+      {"ud2Segment", {pos("a", 2), pos("b", 2)}, 1, [](P p) { return points2({p[0], p[1]}, {p[2], p[3]}, {p[2], p[3]}); }, 2},
+      {"sd2Rhombus", {len("b", 2)}, 1, [](P p) { return sym(p[0], p[1], 0); }, 2},
+      {"sd2Trapezoid", {len("r1"), len("r2"), len("h")}, 1, [](P p) { return sym(std::max(p[0], p[1]), p[2], 0); }, 2},
+      {"sd2EquilateralTriangle", {len("r")}, 1, [](P p) { return sym(p[0], p[0], 0); }, 2},
+      {"sd2Triangle", {pos("a", 2), pos("b", 2), pos("c", 2)}, 1,
+       [](P p) { return points2({p[0], p[1]}, {p[2], p[3]}, {p[4], p[5]}); }, 2},
+      // The hexagon's corners lie at 2 / sqrt 3 of its apothem.
+      {"sd2Hexagon", {len("r")}, 1, [](P p) { return sym(p[0] * 1.1547006f, p[0] * 1.1547006f, 0); }, 2},
+      {"sd2Star", {len("r"), len("ri"), {"n", 1, true, false}}, 1,
+       [](P p) { const float r = std::max(p[0], p[1]); return sym(r, r, 0); }, 2},
+      {"sd2Pie", {any("sc", 2), len("r")}, 1, [](P p) { return sym(p[2], p[2], 0); }, 2},
+      {"sd2Arc", {any("sc", 2), len("ra"), len("rb")}, 1, [](P p) { return sym(p[2] + p[3], p[2] + p[3], 0); }, 2},
   };
   return v;
 }
@@ -163,6 +186,9 @@ const std::vector<GraphOperator>& operators() {
       {"opGroove", {len("ra"), len("rb")}, 1, OpFamily::other, sub, kNever},
       {"opTongue", {len("ra"), len("rb")}, 1, OpFamily::other,
        [](N a, N, P p, GraphNode& o) { inside_box(full(a, p[0]), full(a, p[0]), o); }, kNever},
+      // (1 - t) a + t b is negative only where a or b is, and a weighted
+      // mean of two values above a floor stays above it.
+      {"opBlend", {[] { GraphParam t{"t", 1, true, false}; t.fraction = true; return t; }()}, 1, OpFamily::other, uni, kNever},
   };
   return v;
 }

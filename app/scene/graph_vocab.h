@@ -26,6 +26,10 @@ struct GraphParam {
   // end is stored as -+kOpenBound.
   bool range = false;
   bool unit = false;     // a direction of unit length (within 1e-4), as the bound of L = 1 needs
+  bool optional = false; // may be left out: then `fallback`
+  float fallback[3] = {0.0f, 0.0f, 0.0f};
+  bool derived = false;  // not read: the builder derives it from the child (graph_unary.h)
+  bool fraction = false; // a weight in [0, 1]
 };
 
 // An open end of a range parameter: the library's BIG, finite so that the
@@ -37,6 +41,7 @@ struct GraphPrimitive {
   std::vector<GraphParam> params;
   float lipschitz = 1.0f;
   GraphBox (*box)(const float* params) = nullptr;  // local space
+  int dims = 3;          // 2: a profile (sd2*) of p.xy, for extrude and revolve
 };
 
 // How a combinator's value relates to its children's, for the box and for

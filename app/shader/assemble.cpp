@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "preprocess/glsl_scan.h"
+#include "scene/graph_unary.h"
 #include "scene/graph_vocab.h"
 #include "shader/graph_glsl.h"
 #include "shader/specialize.h"
@@ -169,9 +170,17 @@ GraphParts graph_parts(const Scene& scene, const AssembleOptions& opts) {
 ShaderSource assemble_graph_prune(const Scene& scene, const GraphParts& parts, const AssembleOptions& opts) {
   std::string root = "#version 450 core\n#define MS_LIBRARY_SUBSET 1\n";
   std::set<std::string> used;
-  for (const GraphNode& n : scene.graph->nodes)
-    used.insert(std::string(n.leaf ? graph_primitives()[static_cast<std::size_t>(n.fn)].name
-                                   : graph_operators()[static_cast<std::size_t>(n.fn)].name));
+  for (const GraphNode& n : scene.graph->nodes) {
+    if (!n.unary) {
+      used.insert(std::string(n.leaf ? graph_primitives()[static_cast<std::size_t>(n.fn)].name
+                                     : graph_operators()[static_cast<std::size_t>(n.fn)].name));
+      continue;
+    }
+    const GraphUnary& u = graph_unaries()[static_cast<std::size_t>(n.fn)];
+    for (std::string_view f : {u.begin, u.end})
+      if (!f.empty()) used.insert(std::string(f));
+    if (u.copies) used.insert("opCopyFloor");
+  }
   for (std::string name : used) {
     for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     define(root, "USE_" + name, 1);

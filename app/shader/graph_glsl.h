@@ -5,6 +5,7 @@
 //   const std::string glsl = graph_map_inline(*scene.graph);
 #pragma once
 #include <string>
+#include <vector>
 
 #include "scene/graph.h"
 
@@ -19,6 +20,10 @@ std::string graph_map_inline(const SceneGraph& g);
 // The GLSL that combines two (distance, material) values by operator `fn`
 // with its parameters given as GLSL expressions: shared by the inline map
 // and the interpreter, so both compute the same field.
+// Per node, the modifier whose frame it is in (its nearest modifier
+// ancestor), or -1 for the world's.
+std::vector<int> graph_frames(const SceneGraph& g);
+
 std::string graph_op_expr(int fn, const std::string& a, const std::string& b, const std::string* params);
 
 }  // namespace ms

@@ -75,7 +75,7 @@ GraphEvalPlan plan_graph_eval(const SceneGraph& g, GraphEval eval, bool prune, c
   // their pixels (docs/scene-graph.md), so those graphs run unpruned.
   bool rules = true;
   for (const GraphNode& n : g.nodes)
-    rules = rules && (n.leaf || !graph_operators()[static_cast<std::size_t>(n.fn)].reach.empty());
+    rules = rules && (!n.binary() || !graph_operators()[static_cast<std::size_t>(n.fn)].reach.empty());
   plan.surfaces = g.root_node().box;
   plan.prune = plan.interpret && rules && box.finite() && !box.empty() && plan.surfaces.finite() &&
                2 * g.primitives < kPruneLoopLimit;

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <set>
 
+#include "scene/graph_unary.h"
 #include "scene/graph_vocab.h"
 #include "shader/assemble.h"
 #include "shader/graph_glsl.h"
@@ -24,22 +25,51 @@ std::string buffers_glsl(bool writable) {
          "layout(std430, binding = 6) " + ro + "buffer MsGraphCells { uvec4 msGraphCell[]; };\n" + coarse;
 }
 
+// Parameters read from the float buffer at o, as GLSL arguments.
+std::string buffer_args(const std::vector<GraphParam>& params) {
+  std::string args;
+  int k = 0;
+  for (const GraphParam& d : params) {
+    std::string a = d.size == 1 ? "" : "vec" + std::to_string(d.size) + "(";
+    for (int i = 0; i < d.size; ++i, ++k) a += (i ? ", " : "") + std::string("msGraphF[o + ") + std::to_string(k) + "u]";
+    args += ", " + a + (d.size == 1 ? "" : ")");
+  }
+  return args;
+}
+
+// msGraphBegin, msGraphEnd and msGraphFloor: each modifier's point map,
+// value map and (repetitions) a copy's floor, at its parameters' offset o.
+std::string modifier_dispatch_glsl(const std::set<int>& unaries) {
+  std::string b = "vec3 msGraphBegin(uint fn, uint o, vec3 q, float t, out float n) {\n  n = 1.0;\n  switch (fn) {\n";
+  std::string e = "float msGraphEnd(uint fn, uint o, float d, vec3 q) {\n  switch (fn) {\n";
+  std::string f = "float msGraphFloor(uint fn, uint o, vec3 c) {\n  switch (fn) {\n";
+  for (int fn : unaries) {
+    const GraphUnary& u = graph_unaries()[static_cast<std::size_t>(fn)];
+    const std::string c = "    case " + std::to_string(fn) + "u: ", args = buffer_args(u.params);
+    if (!u.begin.empty()) b += c + "return " + std::string(u.begin) + "(q" + args + (u.copies ? ", t, n" : "") + ");\n";
+    if (!u.end.empty())
+      e += c + "return " + std::string(u.end) + "(d" + (u.end_point ? ", q" : "") + args + ");\n";
+    if (u.copies) {
+      const std::string at = std::to_string(param_floats(u.params) - kCopyFloorFloats);
+      const auto fl = [&](int k) { return "msGraphF[o + " + at + "u + " + std::to_string(k) + "u]"; };
+      f += c + "return opCopyFloor(c, vec3(" + fl(0) + ", " + fl(1) + ", " + fl(2) + "), vec3(" + fl(3) + ", " + fl(4) +
+           ", " + fl(5) + "), " + fl(6) + ");\n";
+    }
+  }
+  return b + "  }\n  return q;\n}\n" + e + "  }\n  return d;\n}\n" + f + "  }\n  return 0.0;\n}\n";
+}
+
 std::string dispatch_glsl(const SceneGraph& g) {
-  std::set<int> prims, ops;
-  for (const GraphNode& n : g.nodes) (n.leaf ? prims : ops).insert(n.fn);
+  std::set<int> prims, ops, unaries;
+  for (const GraphNode& n : g.nodes) (n.leaf ? prims : n.unary ? unaries : ops).insert(n.fn);
   std::string s = "float msGraphPrim(uint fn, uint o, vec3 q) {\n  switch (fn) {\n";
   for (int fn : prims) {
     const GraphPrimitive& p = graph_primitives()[static_cast<std::size_t>(fn)];
-    std::string args;
-    int k = 0;
-    for (const GraphParam& d : p.params) {
-      std::string a = d.size == 1 ? "" : "vec" + std::to_string(d.size) + "(";
-      for (int i = 0; i < d.size; ++i, ++k) a += (i ? ", " : "") + std::string("msGraphF[o + ") + std::to_string(k) + "u]";
-      args += ", " + a + (d.size == 1 ? "" : ")");
-    }
-    s += "    case " + std::to_string(fn) + "u: return " + std::string(p.name) + "(q" + args + ");\n";
+    s += "    case " + std::to_string(fn) + "u: return " + std::string(p.name) + (p.dims == 2 ? "(q.xy" : "(q") +
+         buffer_args(p.params) + ");\n";
   }
   s += "  }\n  return 1e30;\n}\n";
+  if (!unaries.empty()) s += modifier_dispatch_glsl(unaries);
   s += "vec2 msGraphOp(uint fn, uint o, vec2 a, vec2 b) {\n  switch (fn) {\n";
   for (int fn : ops) {
     const GraphOperator& op = graph_operators()[static_cast<std::size_t>(fn)];
@@ -51,14 +81,16 @@ std::string dispatch_glsl(const SceneGraph& g) {
   return s;
 }
 
-const char* const kRun = R"(vec2 msGraphLeaf(uint i, vec3 p) {
+const char* const kRun = R"(vec3 msGraphLocal(uint o, vec3 p) {
+  return vec3(dot(vec3(msGraphF[o], msGraphF[o + 1u], msGraphF[o + 2u]), p),
+              dot(vec3(msGraphF[o + 3u], msGraphF[o + 4u], msGraphF[o + 5u]), p),
+              dot(vec3(msGraphF[o + 6u], msGraphF[o + 7u], msGraphF[o + 8u]), p)) +
+         vec3(msGraphF[o + 9u], msGraphF[o + 10u], msGraphF[o + 11u]);
+}
+vec2 msGraphLeaf(uint i, vec3 p) {
   uvec4 n = msGraphNode[i];
   uint o = n.y;
-  vec3 q = vec3(dot(vec3(msGraphF[o], msGraphF[o + 1u], msGraphF[o + 2u]), p),
-                dot(vec3(msGraphF[o + 3u], msGraphF[o + 4u], msGraphF[o + 5u]), p),
-                dot(vec3(msGraphF[o + 6u], msGraphF[o + 7u], msGraphF[o + 8u]), p)) +
-           vec3(msGraphF[o + 9u], msGraphF[o + 10u], msGraphF[o + 11u]);
-  return vec2(msGraphPrim(n.x, o + 13u, q) * msGraphF[o + 12u], float(n.z));
+  return vec2(msGraphPrim(n.x, o + 13u, msGraphLocal(o, p)) * msGraphF[o + 12u], float(n.z));
 }
 vec2 msGraphNodeOp(uint i, vec2 a, vec2 b) {
   uvec4 n = msGraphNode[i];
@@ -68,6 +100,7 @@ vec2 msGraphNodeOp(uint i, vec2 a, vec2 b) {
 
 std::string defines(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b) {
   std::string s = "#define MS_GRAPH_STACK " + std::to_string(std::max(b.stack, 1)) + "\n";
+  s += "#define MS_GRAPH_FRAMES " + std::to_string(b.frames) + "\n#define MS_INDEX 0x0FFFFFFFu\n";
   s += "#define MS_GRAPH_LEN " + std::to_string(b.program.size()) + "u\n";
   s += "#define MS_GRAPH_L " + glsl_float(g.root_node().lipschitz) + "\n";
   // Only what the graph's structure fixes: where the grid lies is in the
@@ -87,7 +120,10 @@ namespace {
 
 using namespace graph_detail;
 
-constexpr std::uint32_t kLeaf = 0x80000000u, kSwap = 0x40000000u;
+// An instruction: a leaf, or a combinator (its children swapped when the
+// right one ran first), a modifier's begin or its end; the node's index
+// below.
+constexpr std::uint32_t kLeaf = 0x80000000u, kSwap = 0x40000000u, kBegin = 0x20000000u, kEnd = 0x10000000u;
 
 std::uint32_t bits(float f) {
   std::uint32_t u;
@@ -96,28 +132,54 @@ std::uint32_t bits(float f) {
 }
 
 // Postfix with the child needing the deeper stack first (Sethi-Ullman), so
-// a chain nested 100,000 deep needs a stack of 2; returns the depth.
-int emit_program(const SceneGraph& g, std::vector<std::uint32_t>& out) {
-  std::vector<int> need(g.nodes.size(), 1);
+// a chain nested 100,000 deep needs a stack of 2; a modifier's child
+// between its begin and end instructions. Returns the stack depth; fills
+// each modifier's unit (begin to end, in instructions) and the deepest
+// nesting of modifiers.
+int emit_program(const SceneGraph& g, std::vector<std::uint32_t>& out, std::vector<std::uint32_t>& unit, int& frames) {
+  std::vector<int> need(g.nodes.size(), 1), depth(g.nodes.size(), 0);
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const GraphNode& n = g.nodes[i];
     if (n.leaf) continue;
-    const int l = need[static_cast<std::size_t>(n.left)], r = need[static_cast<std::size_t>(n.right)];
-    need[i] = l == r ? l + 1 : std::max(l, r);
+    const std::size_t l = static_cast<std::size_t>(n.left);
+    if (n.unary) {
+      need[i] = need[l];
+      depth[i] = depth[l] + 1;
+      continue;
+    }
+    const std::size_t r = static_cast<std::size_t>(n.right);
+    need[i] = need[l] == need[r] ? need[l] + 1 : std::max(need[l], need[r]);
+    depth[i] = std::max(depth[l], depth[r]);
   }
+  frames = depth[static_cast<std::size_t>(g.root)];
+  unit.assign(g.nodes.size(), 0u);
+  std::vector<std::size_t> begun(g.nodes.size(), 0);
   struct Item { int node; bool expanded; };
   std::vector<Item> stack{{g.root, false}};
   while (!stack.empty()) {
     const Item it = stack.back();
     stack.pop_back();
     const GraphNode& n = g.nodes[static_cast<std::size_t>(it.node)];
+    const std::uint32_t id = static_cast<std::uint32_t>(it.node);
     if (n.leaf) {
-      out.push_back(kLeaf | static_cast<std::uint32_t>(it.node));
+      out.push_back(kLeaf | id);
+      continue;
+    }
+    if (n.unary) {
+      if (it.expanded) {
+        out.push_back(kEnd | id);
+        unit[id] = static_cast<std::uint32_t>(out.size() - begun[id]);
+        continue;
+      }
+      begun[id] = out.size();
+      out.push_back(kBegin | id);
+      stack.push_back({it.node, true});
+      stack.push_back({n.left, false});
       continue;
     }
     const bool right_first = need[static_cast<std::size_t>(n.right)] > need[static_cast<std::size_t>(n.left)];
     if (it.expanded) {
-      out.push_back(static_cast<std::uint32_t>(it.node) | (right_first ? kSwap : 0u));
+      out.push_back(id | (right_first ? kSwap : 0u));
       continue;
     }
     stack.push_back({it.node, true});
@@ -141,7 +203,7 @@ int emit_program(const SceneGraph& g, std::vector<std::uint32_t>& out) {
 int copies(const SceneGraph& g, const GraphEvalPlan& plan, std::size_t program) {
   if (plan.pruned()) return 1;
   std::set<std::pair<bool, int>> kinds;
-  for (const GraphNode& n : g.nodes) kinds.insert({n.leaf, n.fn});
+  for (const GraphNode& n : g.nodes) kinds.insert({n.leaf, n.unary ? -1 - n.fn : n.fn});
   int cap = 8;
   while (cap > 1 && cap * static_cast<int>(kinds.size()) > 16) cap /= 2;
   int u = 1;
@@ -151,26 +213,81 @@ int copies(const SceneGraph& g, const GraphEvalPlan& plan, std::size_t program) 
 
 constexpr const char* kRunStep = R"(    if (k < end) {
       uint ins = msGraphProg[k];
-      bool op = (ins & 0x80000000u) == 0u;
-      if (!op) {
-        st[sp++] = msGraphLeaf(ins & 0x3FFFFFFFu, p);
+      if ((ins & 0x80000000u) != 0u) {
+        st[sp++] = msGraphLeaf(ins & MS_INDEX, p);
         MS_COUNT_PRIMS(1);
         ++k;
         ins = k < end ? msGraphProg[k] : 0x80000000u;
-        op = (ins & 0x80000000u) == 0u;
       }
-      if (op) {
+      if ((ins & 0xB0000000u) == 0u) {
         vec2 b = st[--sp];
         vec2 a = st[--sp];
         if ((ins & 0x40000000u) != 0u) { vec2 t = a; a = b; b = t; }
-        st[sp++] = msGraphNodeOp(ins & 0x3FFFFFFFu, a, b);
+        st[sp++] = msGraphNodeOp(ins & MS_INDEX, a, b);
         ++k;
       }
+#if MS_GRAPH_FRAMES > 0
+      else if ((ins & 0x20000000u) != 0u) {
+        p = msGraphEnter(ins & MS_INDEX, k, p, fr[fp]);
+        ++fp;
+        ++k;
+      } else if ((ins & 0x10000000u) != 0u) {
+        if (msGraphLeave(ins & MS_INDEX, st[sp - 1], p, fr[fp - 1])) {
+          k = fr[fp - 1].start;
+          --sp;
+        } else {
+          --fp;
+          ++k;
+        }
+      }
+#endif
     }
 )";
 
-std::string run_glsl(int n) {
-  std::string s = "vec2 msGraphRun(uint start, uint count, vec3 p) {\n  vec2 st[MS_GRAPH_STACK];\n  int sp = 0;\n";
+// A modifier's frame in the interpreter: the point before it, the nearest
+// copy's value so far, the copy looked at and how many.
+constexpr const char* kFrames = R"(#if MS_GRAPH_FRAMES > 0
+struct MsFrame { vec3 p; vec2 acc; float t, n; uint start; };
+// Begins modifier i at instruction k: its child's point.
+vec3 msGraphEnter(uint i, uint k, vec3 p, out MsFrame f) {
+  uvec4 n = msGraphNode[i];
+  f = MsFrame(p, vec2(1e30, 0.0), 0.0, 1.0, k + 1u);
+  float count;
+  vec3 q = msGraphBegin(n.x, n.y + 13u, msGraphLocal(n.y, p), 0.0, count);
+  f.n = count;
+  return q;
+}
+// Ends modifier i with its child's value v: true with p the next copy's
+// point when a repetition has one to look at (v is then dropped), else v
+// becomes the modifier's value and p the point before it.
+bool msGraphLeave(uint i, inout vec2 v, inout vec3 p, inout MsFrame f) {
+  uvec4 n = msGraphNode[i];
+  vec3 q = msGraphLocal(n.y, f.p);
+  if (f.n > 1.5 || f.t > 0.5) {
+    if (v.x < f.acc.x) f.acc = v;
+    for (float t = f.t + 1.0; t < f.n; t += 1.0) {
+      float count;
+      vec3 c = msGraphBegin(n.x, n.y + 13u, q, t, count);
+      if (msGraphFloor(n.x, n.y + 13u, c) < f.acc.x) {
+        f.t = t;
+        p = c;
+        return true;
+      }
+    }
+    v = f.acc;
+  } else {
+    v.x = msGraphEnd(n.x, n.y + 13u, v.x, q);
+  }
+  v.x *= msGraphF[n.y + 12u];
+  p = f.p;
+  return false;
+}
+#endif
+)";
+
+std::string run_body(int n) {
+  std::string s = std::string(kFrames) + "vec2 msGraphRun(uint start, uint count, vec3 p) {\n  vec2 st[MS_GRAPH_STACK];\n  int sp = 0;\n";
+  s += "#if MS_GRAPH_FRAMES > 0\n  MsFrame fr[MS_GRAPH_FRAMES];\n  int fp = 0;\n#endif\n";
   s += "  uint end = start + count;\n  for (uint k = start; k < end;) {\n";
   for (int j = 0; j < n; ++j) s += kRunStep;
   s += "  }\n  return st[0];\n}\n";
@@ -222,30 +339,39 @@ std::string lookup_glsl() {
 
 }  // namespace
 
+namespace graph_detail {
+std::string run_glsl(int n) { return run_body(n); }
+}  // namespace graph_detail
+
 GraphBuffers graph_buffers(const SceneGraph& g) {
   GraphBuffers b;
-  for (const GraphNode& n : g.nodes) {
+  std::vector<std::uint32_t> unit;
+  b.stack = emit_program(g, b.program, unit, b.frames);
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const GraphNode& n = g.nodes[i];
     const std::uint32_t offset = static_cast<std::uint32_t>(b.floats.size());
-    if (n.leaf) {
+    if (!n.binary()) {
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) b.floats.push_back(n.to_local[c][r]);
       b.floats.insert(b.floats.end(), {n.offset.x, n.offset.y, n.offset.z, n.scale});
     }
-    const auto& defs = n.leaf ? graph_primitives()[static_cast<std::size_t>(n.fn)].params
-                              : graph_operators()[static_cast<std::size_t>(n.fn)].params;
+    const auto& defs = n.leaf    ? graph_primitives()[static_cast<std::size_t>(n.fn)].params
+                       : n.unary ? graph_unaries()[static_cast<std::size_t>(n.fn)].params
+                                 : graph_operators()[static_cast<std::size_t>(n.fn)].params;
     const float* p = g.params.data() + n.param;
     b.floats.insert(b.floats.end(), p, p + param_floats(defs));
-    b.nodes.insert(b.nodes.end(), {static_cast<std::uint32_t>(n.fn), offset, static_cast<std::uint32_t>(n.material),
-                                   bits(n.lipschitz)});
+    // A modifier's third word is its unit's length (the pruning pass keeps
+    // or drops it whole), a leaf's its material.
+    const std::uint32_t third = n.unary ? unit[i] : static_cast<std::uint32_t>(n.material);
+    b.nodes.insert(b.nodes.end(), {static_cast<std::uint32_t>(n.fn), offset, third, bits(n.lipschitz)});
   }
-  b.stack = emit_program(g, b.program);
   return b;
 }
 
 std::string graph_map_interpreter(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b) {
   std::string s = "#include \"aov.glsl\"\n// map() interpreting the scene graph's node buffers: " +
                   std::to_string(g.primitives) + " primitives, " + std::to_string(g.operators) + " operators\n";
-  s += defines(g, plan, b) + buffers_glsl(false) + dispatch_glsl(g) + kRun + run_glsl(copies(g, plan, b.program.size()));
+  s += defines(g, plan, b) + buffers_glsl(false) + dispatch_glsl(g) + kRun + run_body(copies(g, plan, b.program.size()));
   s += plan.prune ? lookup_glsl() : "vec2 map(vec3 p) {\n  return msGraphRun(0u, MS_GRAPH_LEN, p);\n";
   return s + "}\n";
 }

@@ -50,10 +50,11 @@ GraphEvalPlan plan_graph_eval(const SceneGraph& g, GraphEval eval, bool prune, c
                               float cell_size = 0.0f);
 // The node buffers the interpreter reads (binding points in graph_interp.cpp).
 struct GraphBuffers {
-  std::vector<std::uint32_t> nodes;  // 4 per node: fn, float offset, material, Lipschitz bound's bits
-  std::vector<float> floats;         // leaves: to_local rows, offset, scale, then parameters; operators: parameters
+  std::vector<std::uint32_t> nodes;  // 4 per node: fn, float offset, material (a modifier: its unit's length), Lipschitz bound's bits
+  std::vector<float> floats;         // leaves and modifiers: to_local rows, offset, scale, then parameters; operators: parameters
   std::vector<std::uint32_t> program;  // postfix, the deeper child first (Sethi-Ullman): the least stack
   int stack = 0;                     // the stack the program needs
+  int frames = 0;                    // the deepest nesting of modifiers
 };
 GraphBuffers graph_buffers(const SceneGraph& g);
 std::size_t cell_count(const GridLevel& level);            // one level's fine cells

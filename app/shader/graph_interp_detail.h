@@ -22,6 +22,9 @@ std::string buffers_glsl(bool writable);
 std::string dispatch_glsl(const SceneGraph& g);
 // msGraphLeaf and msGraphNodeOp.
 extern const char* const kRun;
+// msGraphRun: the program from `start`, `count` instructions, at p, with n
+// copies of its loop body (graph_interp.cpp says why).
+std::string run_glsl(int n);
 std::string defines(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b);
 
 }  // namespace ms::graph_detail

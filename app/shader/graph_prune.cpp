@@ -17,7 +17,7 @@ using namespace graph_detail;
 std::string prune_rules_glsl(const SceneGraph& g) {
   std::set<int> ops;
   for (const GraphNode& n : g.nodes)
-    if (!n.leaf) ops.insert(n.fn);
+    if (n.binary()) ops.insert(n.fn);
   std::string s = "float msReach(uint fn, uint o, float AHI) {\n  float P0 = msGraphF[o];\n  switch (fn) {\n";
   for (int fn : ops) {
     const GraphOperator& op = graph_operators()[static_cast<std::size_t>(fn)];
@@ -109,13 +109,26 @@ void main() {
   bool overflow = false;
   for (uint k = inStart; k < inStart + inCount; ++k) {
     uint ins = msGraphProg[k];
-    uint i = ins & 0x3FFFFFFFu;
+    uint i = ins & MS_INDEX;
     float L = uintBitsToFloat(msGraphNode[i].w);
     if ((ins & 0x80000000u) != 0u) {
       vec2 v = msGraphLeaf(i, centre);
       st[sp++] = MsEntry(v, v.x - L * r, v.x + L * r, len, 1u);
       if (len < listMax) msPut(len, ins); else overflow = true;
       ++len;
+      continue;
+    }
+    if ((ins & 0x20000000u) != 0u) {
+      // A modifier is kept or dropped whole: its value at the centre,
+      // widened by its bound, stands for its unit of instructions.
+      uint unit = msGraphNode[i].z;
+      vec2 v = msGraphRun(k, unit, centre);
+      st[sp++] = MsEntry(v, v.x - L * r, v.x + L * r, len, unit);
+      for (uint j = 0u; j < unit; ++j) {
+        if (len < listMax) msPut(len, msGraphProg[k + j]); else overflow = true;
+        ++len;
+      }
+      k += unit - 1u;
       continue;
     }
     MsEntry y = st[--sp];
@@ -162,7 +175,7 @@ void main() {
 
 std::string graph_prune_source(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b) {
   return "#define MS_COUNT_PRIMS(n)\n" + defines(g, plan, b) + buffers_glsl(true) + dispatch_glsl(g) + kRun +
-         prune_rules_glsl(g) + kPrune;
+         run_glsl(1) + prune_rules_glsl(g) + kPrune;
 }
 
 }  // namespace ms

@@ -39,6 +39,7 @@ std::string group_of(const std::string& file) {
   if (file.rfind("primitives", 0) == 0) return "primitives";
   if (file == "operators.glsl" || file == "combinators.glsl") return "operators";
   if (file == "domain.glsl") return "domain";
+  if (file == "modifiers.glsl") return "modifiers";
   return "noise";
 }
 
@@ -87,7 +88,7 @@ TEST_P(LibraryClaims, HoldInEveryCase) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Groups, LibraryClaims,
-                         ::testing::Values("primitives", "primitives2d", "operators", "domain", "noise"));
+                         ::testing::Values("primitives", "primitives2d", "operators", "domain", "modifiers", "noise"));
 
 TEST(LibraryClaims, EveryFunctionHasAClaimAndACase) {
   ASSERT_GE(claims().size(), 80u);

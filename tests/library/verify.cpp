@@ -19,7 +19,7 @@ namespace {
 
 const char* const kLibraryFiles[] = {"primitives.glsl", "primitives2d.glsl", "primitives_cones.glsl",
                                      "primitives_poly.glsl", "operators.glsl", "combinators.glsl",
-                                     "domain.glsl", "noise.glsl"};
+                                     "domain.glsl", "modifiers.glsl", "noise.glsl"};
 
 std::string upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));

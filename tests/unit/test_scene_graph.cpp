@@ -197,20 +197,21 @@ TEST(GraphAnalysis, AChainOf1000SmoothUnionsGrowsByOneBlendReach) {
   EXPECT_NEAR(r.box.min.y, -0.5f - r.slack, 1e-3f);
 }
 
-// Every 3D primitive and two-field combinator of sdf_shaders/, with its
-// parameters and its claimed L, is in the vocabulary, and nothing else is.
+// Every 3D and 2D primitive and two-field combinator of sdf_shaders/, with
+// its parameters and its claimed L, is in the vocabulary, and nothing else
+// is.
 TEST(GraphVocabulary, MatchesTheLibrarysSignaturesAndClaims) {
   std::string text;
-  for (const char* f : {"primitives.glsl", "primitives_cones.glsl", "primitives_poly.glsl", "operators.glsl",
-                        "combinators.glsl"})
+  for (const char* f : {"primitives.glsl", "primitives2d.glsl", "primitives_cones.glsl", "primitives_poly.glsl",
+                        "operators.glsl", "combinators.glsl", "modifiers.glsl"})
     text += ms::test::read_file(ms::test::source_dir() / "sdf_shaders" / f);
-  const std::regex sig(R"(\[(?:[a-z ]+); L = ([0-9.]+)\]\n(?:#[^\n]*\n)?float ((?:sd|ud|op)[A-Z]\w*)\(([^)]*)\))");
+  const std::regex sig(R"(\[(?:[a-z ]+); L = ([0-9.]+)\]\n(?:#[^\n]*\n)?float ((?:sd2|ud2|sd|ud|op)[A-Z]\w*)\(([^)]*)\))");
   std::map<std::string, std::pair<std::string, float>> lib;  // name -> (parameters after p or a, b; L)
   for (std::sregex_iterator it(text.begin(), text.end(), sig), end; it != end; ++it) {
     const std::string name = (*it)[2], args = (*it)[3];
-    const bool prim = name.rfind("op", 0) != 0;
-    const std::string head = prim ? "vec3 p" : "float a, float b";
-    if (args.rfind(head, 0) != 0) continue;  // 2D shapes, one-field modifiers
+    const bool prim = name.rfind("op", 0) != 0, flat = name[2] == '2';
+    const std::string head = !prim ? "float a, float b" : flat ? "vec2 p" : "vec3 p";
+    if (args.rfind(head, 0) != 0) continue;  // one-field modifiers (graph_unary.h's, checked apart)
     std::string rest = args.substr(head.size());
     lib[name] = {rest, std::stof((*it)[1])};
   }

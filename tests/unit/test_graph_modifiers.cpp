@@ -1,0 +1,148 @@
+// The graph's one-child modifiers and profiles (docs/scene-graph.md,
+// "Modifiers"): what each accepts and refuses, the boxes and bounds it
+// derives from its child's, and the GLSL both evaluators get.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <regex>
+#include <string>
+
+#include "files.h"
+#include "graph_of.h"
+#include "scene/graph_unary.h"
+#include "shader/graph_glsl.h"
+#include "shader/graph_interp.h"
+
+namespace ms::test {
+namespace {
+
+std::string sphere(float r) { return R"({"sdf": "sdSphere", "r": )" + std::to_string(r) + "}"; }
+std::string wrap(const std::string& node) { return R"({"root": )" + node + "}"; }
+
+TEST(GraphModifiers, ARepetitionsBoxHoldsEveryCopy) {
+  const SceneGraph g = graph_of(wrap(R"({"op": "repeat", "spacing": [1, 0, 0.5], "count": [2, 0, 1], "children": [)" +
+                                     sphere(0.3f) + "]}"));
+  const GraphNode& r = g.root_node();
+  EXPECT_TRUE(r.unary);
+  EXPECT_NEAR(r.box.min.x, -2.3f, 1e-3f);
+  EXPECT_NEAR(r.box.max.x, 2.3f, 1e-3f);
+  EXPECT_NEAR(r.box.max.y, 0.3f, 1e-3f);
+  EXPECT_NEAR(r.box.max.z, 0.8f, 1e-3f);
+  EXPECT_FLOAT_EQ(r.lipschitz, 1.0f);
+}
+
+TEST(GraphModifiers, TwistsBoundGrowsWithItsRateAndTheChildsRadius) {
+  const SceneGraph g = graph_of(wrap(R"({"op": "twist", "k": 2, "children": [{"sdf": "sdBox", "b": [0.3, 1, 0.4]}]})"));
+  const float a = 2.0f * 0.5f;  // the box's corners lie 0.5 from the y axis
+  EXPECT_NEAR(g.root_node().lipschitz, 0.5f * (a + std::sqrt(a * a + 4.0f)), 1e-4f);
+  EXPECT_NEAR(g.root_node().box.max.x, 0.5f, 1e-3f);  // a cylinder of radius 0.5 about y
+  EXPECT_NEAR(g.root_node().box.max.y, 1.0f, 1e-3f);
+}
+
+TEST(GraphModifiers, AModifiersTransformMovesItsWholeFrame) {
+  const SceneGraph g = graph_of(wrap(R"({"op": "round", "r": 0.1, "translate": [2, 0, 0], "scale": 2, "children": [)" +
+                                     sphere(0.5f) + "]}"));
+  // (0.5 + 0.1) * 2 about x = 2.
+  EXPECT_NEAR(g.root_node().box.max.x, 3.2f, 1e-3f);
+  EXPECT_NEAR(g.root_node().box.min.x, 0.8f, 1e-3f);
+}
+
+TEST(GraphModifiers, ProfilesBecomeSolidsThroughExtrudeAndRevolve) {
+  const SceneGraph e = graph_of(wrap(R"({"op": "extrude", "h": 0.4, "children": [{"sdf": "sd2Box", "b": [1, 0.5], "rotate": 90}]})"));
+  EXPECT_NEAR(e.root_node().box.max.x, 0.5f, 1e-3f);  // turned a quarter about z
+  EXPECT_NEAR(e.root_node().box.max.z, 0.2f, 1e-3f);
+  const SceneGraph r = graph_of(wrap(R"({"op": "revolve", "offset": 1, "children": [{"sdf": "sd2Circle", "r": 0.25}]})"));
+  EXPECT_NEAR(r.root_node().box.max.x, 1.25f, 1e-3f);
+  EXPECT_NEAR(r.root_node().box.max.y, 0.25f, 1e-3f);
+}
+
+TEST(GraphModifiers, MistakesAreOneLineAtTheirPointer) {
+  EXPECT_NE(graph_error(wrap(R"({"sdf": "sd2Circle", "r": 1})")).find("must be inside an 'extrude' or 'revolve'"),
+            std::string::npos);
+  EXPECT_NE(graph_error(wrap(R"({"op": "extrude", "h": 1, "children": [)" + sphere(1) + "]}")).find("/root/children/0/sdf"),
+            std::string::npos);
+  EXPECT_NE(graph_error(wrap(R"({"op": "twist", "k": 1, "children": [)" + sphere(1) + "," + sphere(2) + "]}"))
+                .find("takes one child"),
+            std::string::npos);
+  EXPECT_NE(graph_error(wrap(R"({"op": "twisst", "k": 1, "children": [)" + sphere(1) + "]}")).find("did you mean 'twist'"),
+            std::string::npos);
+  EXPECT_NE(graph_error(wrap(R"({"op": "onoin", "t": 1, "children": [)" + sphere(1) + "]}")).find("did you mean 'onion'"),
+            std::string::npos);
+  EXPECT_NE(graph_error(wrap(R"({"op": "repeat", "spacing": [1, 0, 0], "count": [1.5, 0, 0], "children": [)" +
+                             sphere(0.2f) + "]}"))
+                .find("whole numbers"),
+            std::string::npos);
+  // A derived parameter is not a key a file may set.
+  EXPECT_NE(graph_error(wrap(R"({"op": "twist", "k": 1, "l": 1, "children": [)" + sphere(1) + "]}")).find("unknown key 'l'"),
+            std::string::npos);
+  EXPECT_NE(graph_error(wrap(R"({"op": "opBlend", "t": 1.5, "children": [)" + sphere(1) + "," + sphere(2) + "]}"))
+                .find("must be in [0, 1]"),
+            std::string::npos);
+  // Infinite repetition is unbounded unless something cuts it.
+  EXPECT_NE(graph_error(wrap(R"({"op": "repeat", "spacing": [1, 0, 0], "children": [)" + sphere(0.2f) + "]}"))
+                .find("unbounded"),
+            std::string::npos);
+}
+
+TEST(GraphModifiers, TheLibrarysOneFieldOperatorsAreAccepted) {
+  for (const char* op : {"opRound\", \"r", "opOnion\", \"t", "dilate\", \"r", "erode\", \"r", "onion\", \"t"})
+    EXPECT_NO_THROW(graph_of(wrap(std::string(R"({"op": ")") + op + R"(": 0.1, "children": [)" + sphere(1) + "]}")))
+        << op;
+  EXPECT_NO_THROW(graph_of(wrap(R"({"op": "opExtrude", "h": 0.2, "children": [{"sdf": "sd2Hexagon", "r": 1}]})")));
+}
+
+TEST(GraphModifiers, EachModifierIsAFrameOfItsOwnInBothEvaluators) {
+  const SceneGraph g = graph_of(wrap(R"({"op": "opUnion", "children": [)" + sphere(0.5f) +
+                                     R"(, {"op": "twist", "k": 1, "children": [{"op": "round", "r": 0.1, "children": [)" +
+                                     sphere(0.2f) + "]}]}]}"));
+  const std::vector<int> frames = graph_frames(g);
+  ASSERT_EQ(frames.size(), 5u);
+  EXPECT_EQ(frames[0], -1);  // the first sphere, in the world
+  EXPECT_EQ(frames[1], 2);   // the inner sphere, in the round's frame
+  EXPECT_EQ(frames[2], 3);   // the round, in the twist's
+  const std::string glsl = graph_map_inline(g);
+  EXPECT_NE(glsl.find("vec2 msFrame2(vec3 p)"), std::string::npos);
+  EXPECT_NE(glsl.find("vec2 msFrame3(vec3 p)"), std::string::npos);
+  EXPECT_LT(glsl.find("msFrame2(vec3"), glsl.find("msFrame3(vec3"));  // inner first
+  const GraphBuffers b = graph_buffers(g);
+  EXPECT_EQ(b.frames, 2);
+  // begin twist, begin round, sphere, end round, end twist: units of 5 and 3.
+  EXPECT_EQ(b.nodes[4 * 3 + 2], 5u);
+  EXPECT_EQ(b.nodes[4 * 2 + 2], 3u);
+}
+
+}  // namespace
+}  // namespace ms::test
+
+namespace ms::test {
+namespace {
+
+// Each modifier's begin and end functions are in the library, taking the
+// point (and the child's value) then exactly the vocabulary's parameters.
+TEST(GraphModifiers, MatchTheLibrarysSignatures) {
+  std::string text;
+  for (const char* f : {"modifiers.glsl", "domain.glsl", "combinators.glsl"})
+    text += read_file(source_dir() / "sdf_shaders" / f);
+  const std::regex sig(R"((?:vec3|float) ((?:dom|op)[A-Z]\w*)\(([^)]*)\))");
+  std::map<std::string, std::string> lib;
+  for (std::sregex_iterator it(text.begin(), text.end(), sig), end; it != end; ++it)
+    lib[(*it)[1]] = std::regex_replace(std::string((*it)[2]), std::regex(R"(\s+)"), " ");
+  for (const GraphUnary& u : graph_unaries()) {
+    std::string params;
+    for (const GraphParam& p : u.params)
+      params += std::string(", ") + (p.size == 1 ? "float " : "vec" + std::to_string(p.size) + " ") + std::string(p.name);
+    if (!u.begin.empty()) {
+      ASSERT_TRUE(lib.count(std::string(u.begin))) << u.begin;
+      EXPECT_EQ(lib[std::string(u.begin)], "vec3 p" + params + (u.copies ? ", float t, out float n" : "")) << u.name;
+    }
+    if (!u.end.empty()) {
+      ASSERT_TRUE(lib.count(std::string(u.end))) << u.end;
+      EXPECT_EQ(lib[std::string(u.end)], std::string("float d") + (u.end_point ? ", vec3 p" : "") + params) << u.name;
+    }
+    EXPECT_FALSE(u.begin.empty() && u.end.empty()) << u.name;
+  }
+}
+
+}  // namespace
+}  // namespace ms::test
