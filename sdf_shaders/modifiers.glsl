@@ -16,13 +16,15 @@
 #endif
 
 #if !defined(MS_LIBRARY_SUBSET) || defined(USE_OPBOXFLOOR)
-// max(d, l * the distance from p to the box lo..hi): for a shape inside
-// the box, no more than l times its distance, so an l-Lipschitz d stays
-// l-Lipschitz with the same zero set; and outside the box the value grows
-// at least as the distance to it does, which a clamped warp's alone does
-// not. [bound; L = l]
+// Outside the box lo..hi, max(d, l * the distance from p to the box); d
+// inside it. For a shape inside the box (d >= 0 on the box's sides) that
+// is no more than l times its distance, so an l-Lipschitz d stays
+// l-Lipschitz with the same zero set and inside, and outside the value
+// grows at least as the distance to the box does, which a clamped warp's
+// alone does not. [bound; L = l]
 float opBoxFloor(float d, vec3 p, vec3 lo, vec3 hi, float l) {
-  return max(d, l * length(max(max(lo - p, p - hi), vec3(0.0))));
+  float e = length(max(max(lo - p, p - hi), vec3(0.0)));
+  return e > 0.0 ? max(d, l * e) : d;
 }
 #endif
 

@@ -110,9 +110,12 @@ std::vector<std::string> scene_summary(const Scene& scene) {
   if (scene.graph) {
     const SceneGraph& g = *scene.graph;
     const GraphNode& root = g.root_node();
+    std::size_t modifiers = 0;
+    for (const GraphNode& n : g.nodes) modifiers += n.unary;
+    const std::size_t binary = g.nodes.size() - static_cast<std::size_t>(g.primitives) - modifiers;
     out.push_back("  graph: " + std::to_string(g.primitives) + " primitives, " + std::to_string(g.operators) +
-                  " operators (" + std::to_string(g.nodes.size() - static_cast<std::size_t>(g.primitives)) +
-                  " binary), box " + vec3_text(root.box.min) + " to " + vec3_text(root.box.max) +
+                  " operators (" + std::to_string(binary) + " binary, " + std::to_string(modifiers) +
+                  " modifiers), box " + vec3_text(root.box.min) + " to " + vec3_text(root.box.max) +
                   ", Lipschitz bound " + format_number(root.lipschitz));
   }
   if (scene.graph_alone) {
