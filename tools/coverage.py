@@ -134,6 +134,9 @@ def render(binary):
             sys.exit('coverage: marchstudio render failed (exit %d); no picture replaced' % p.returncode)
         for name, _ in rows:
             os.replace(os.path.join(work, slug(name) + '.png'), os.path.join(PICTURES, slug(name) + '.png'))
+        for f in os.listdir(PICTURES):  # a row gone or renamed leaves no picture behind
+            if f.endswith('.png') and f[:-4] not in {slug(n) for n, _ in rows}:
+                os.remove(os.path.join(PICTURES, f))
     finally:
         shutil.rmtree(work, ignore_errors=True)
 

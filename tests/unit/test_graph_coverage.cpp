@@ -113,7 +113,7 @@ TEST(GraphCoverage, LeftOutRowsSayWhyAndShowNoPicture) {
   EXPECT_GT(left_out, 0);
 }
 
-TEST(GraphCoverage, EveryPictureTheTableNamesExists) {
+TEST(GraphCoverage, EveryPictureTheTableNamesExistsAndNoOther) {
   const fs::path docs = fs::path(MARCH_SOURCE_DIR) / "docs";
   std::set<std::string> seen;
   for (const CoverageRow& r : coverage_rows()) {
@@ -127,6 +127,10 @@ TEST(GraphCoverage, EveryPictureTheTableNamesExists) {
     EXPECT_TRUE(seen.insert(path).second) << path << " is named twice";
     EXPECT_TRUE(fs::is_regular_file(docs / path)) << "docs/scene-graph.md:" << r.line << ": " << path;
   }
+  // And no picture is left behind by a row that is gone or renamed.
+  for (const auto& e : fs::directory_iterator(docs / "images" / "coverage"))
+    EXPECT_TRUE(seen.count("images/coverage/" + e.path().filename().string()))
+        << "docs/images/coverage/" << e.path().filename().string() << " is not in the table";
 }
 
 }  // namespace
