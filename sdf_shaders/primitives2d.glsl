@@ -6,6 +6,11 @@
 #pragma once
 #include "common.glsl"
 
+// The regular polygon is built on the star.
+#if defined(USE_SD2REGULARPOLYGON) && !defined(USE_SD2STAR)
+#define USE_SD2STAR 1
+#endif
+
 #if !defined(MS_LIBRARY_SUBSET) || defined(USE_SD2CIRCLE)
 // Disc of radius r. [exact; L = 1]
 float sd2Circle(vec2 p, float r) {
@@ -110,6 +115,15 @@ float sd2Star(vec2 p, float r, float ri, float n) {
   vec2 tip = vec2(r, 0.0), e = ri * vec2(cos(w), sin(w)) - tip;
   float d = sqrt(msSegment2(p, tip, tip + e));
   return msCross2(e, p - tip) > 0.0 ? -d : d;
+}
+#endif
+
+#if !defined(MS_LIBRARY_SUBSET) || defined(USE_SD2REGULARPOLYGON)
+// Regular polygon with n sides (n >= 3) and circumradius r, one vertex on
+// +x: a star whose inner vertices are the sides' midpoints, r cos(pi / n)
+// from the centre. [exact; L = 1]
+float sd2RegularPolygon(vec2 p, float r, float n) {
+  return sd2Star(p, r, r * cos(PI / n), n);
 }
 #endif
 

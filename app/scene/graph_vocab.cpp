@@ -116,6 +116,7 @@ const std::vector<GraphPrimitive>& primitives() {
       {"sd2Hexagon", {len("r")}, 1, [](P p) { return sym(p[0] * 1.1547006f, p[0] * 1.1547006f, 0); }, 2},
       {"sd2Star", {len("r"), len("ri"), {"n", 1, true, false}}, 1,
        [](P p) { const float r = std::max(p[0], p[1]); return sym(r, r, 0); }, 2},
+      {"sd2RegularPolygon", {len("r"), {"n", 1, true, false}}, 1, [](P p) { return sym(p[0], p[0], 0); }, 2},
       {"sd2Pie", {any("sc", 2), len("r")}, 1, [](P p) { return sym(p[2], p[2], 0); }, 2},
       {"sd2Arc", {any("sc", 2), len("ra"), len("rb")}, 1, [](P p) { return sym(p[2] + p[3], p[2] + p[3], 0); }, 2},
   };
