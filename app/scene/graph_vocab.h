@@ -45,7 +45,7 @@ enum class OpFamily {
   union_,         // min-like: the surface is the children's, grown by reach
   intersection,   // max-like: inside both
   subtraction,    // max(a, -b)-like: inside a
-  other,          // pipe, engrave, groove, tongue: a reshaped along b's surface, a's material
+  other,          // pipe, engrave, groove, tongue: a's material; b pruned by its |b|, if at all
 };
 
 struct GraphOperator {
