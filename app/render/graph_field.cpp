@@ -89,7 +89,7 @@ void GraphField::run_pass(const Program& prune) {
 }
 
 std::string GraphField::summary() const {
-  if (!plan_.prune) return {};  // no grid (a combinator without a rule, or too many nodes)
+  if (!plan_.prune) return {};  // no grid (inline, too many nodes, or no finite box)
   const glm::ivec3 d = plan_.levels[0].dims;
   const std::string grid = "grid " + std::to_string(d.x) + "x" + std::to_string(d.y) + "x" + std::to_string(d.z) +
                            " and " + std::to_string(kGridLevels - 1) + " outer levels";

@@ -149,14 +149,37 @@ void inside_box(const GraphBox& a, const GraphBox& b, GraphNode& out) {
 }
 GraphBox full(N n, float extra = 0.0f) { return box_grow(n.core, n.slack + extra); }
 
-// Reaches (graph_vocab.h): the quadratic smin is min(a, b) once
-// |a - b| >= k; the rounded corner once b >= max(a, r); the chamfer line
-// a + b = r lies above b = a once b - a >= r - (2 - sqrt 2) a. Columns and
-// stairs are never pruned: their seams reach further.
+// Reaches (graph_vocab.h), each derived from sdf_shaders/combinators.glsl
+// so that op(a, b) returns the kept child's own float (min and max pick an
+// argument) wherever the rule drops the other: pruning changes no bit.
+// - the quadratic smin is min(a, b) once |a - b| >= k; the rounded corner
+//   once b >= max(a, r); the chamfer line a + b = r lies above b = a once
+//   b - a >= r - (2 - sqrt 2) a, the worst a being the cell's highest.
+// - columns: each column is a disc of radius r / (sqrt 2 n) centred on the
+//   chamfer line, so its field is at least the chamfer's moved out by that
+//   radius, (a + b - r (1 + 1/n)) / sqrt 2: the chamfer's rule with
+//   r (1 + 1/n). It is met with equality where a column's centre lies
+//   straight across the line, and holds for whichever column the GLSL picks.
+// - stairs: each step's quarter plane a < x_i, b < y_i has a field of at
+//   least b - y_i, and the highest corner is y = r - r / (2n): so b - a >=
+//   r - r / (2n) leaves a (with equality below the first step's x), and a
+//   and b swapped likewise; it holds for whichever three steps are looked at.
+// - pipe: length(a, b) - r is neither child anywhere: no rule.
+// - engrave, groove and tongue are a wherever b is far enough from its
+//   surface, the least |b| being: max(a, (a + r - |b|) / sqrt 2) == a iff
+//   |b| >= r - (sqrt 2 - 1) a, worst at the lowest a; max(a, min(a + ra,
+//   rb - |b|)) == a iff |b| >= rb - a, the lowest a; min(a, max(a - ra,
+//   |b| - rb)) == a iff |b| >= rb + a, the highest a. Exact conditions: b
+//   is kept only where some a of the interval needs it.
 constexpr std::string_view kReachMin = "0.0";
 constexpr std::string_view kReachK = "P0";
 constexpr std::string_view kReachRound = "max(0.0, P0 - AHI)";
 constexpr std::string_view kReachChamfer = "max(0.0, P0 - 0.58578644 * AHI)";
+constexpr std::string_view kReachColumns = "max(0.0, P0 * (1.0 + 1.0 / P1) - 0.58578644 * AHI)";
+constexpr std::string_view kReachStairs = "P0 - 0.5 * P0 / P1";
+constexpr std::string_view kReachEngrave = "P0 - 0.41421356 * ALO";
+constexpr std::string_view kReachGroove = "P1 - ALO";
+constexpr std::string_view kReachTongue = "P1 + AHI";
 constexpr std::string_view kNever = "";
 
 const std::vector<GraphOperator>& operators() {
@@ -178,17 +201,18 @@ const std::vector<GraphOperator>& operators() {
       {"opUnionRound", {len("r")}, kSqrt2, OpFamily::union_, by_r, kReachRound},
       {"opIntersectionRound", {len("r")}, kSqrt2, OpFamily::intersection, inter, kReachRound},
       {"opSubtractionRound", {len("r")}, kSqrt2, OpFamily::subtraction, sub, kReachRound},
-      {"opUnionColumns", {len("r"), {"n", 1, true, false}}, kSqrt2, OpFamily::union_, by_r, kNever},
-      {"opUnionStairs", {len("r"), {"n", 1, true, false}}, kSqrt2, OpFamily::union_, by_r, kNever},
+      {"opUnionColumns", {len("r"), {"n", 1, true, false}}, kSqrt2, OpFamily::union_, by_r, kReachColumns},
+      {"opUnionStairs", {len("r"), {"n", 1, true, false}}, kSqrt2, OpFamily::union_, by_r, kReachStairs},
       // Where |a| <= r and |b| <= r: near both surfaces.
       {"opPipe", {len("r")}, kSqrt2, OpFamily::other,
        [](N a, N b, P p, GraphNode& o) { inside_box(full(a, p[0]), full(b, p[0]), o); }, kNever},
-      {"opEngrave", {len("r")}, kSqrt2, OpFamily::other, sub, kNever},
-      {"opGroove", {len("ra"), len("rb")}, 1, OpFamily::other, sub, kNever},
+      {"opEngrave", {len("r")}, kSqrt2, OpFamily::other, sub, kReachEngrave},
+      {"opGroove", {len("ra"), len("rb")}, 1, OpFamily::other, sub, kReachGroove},
       {"opTongue", {len("ra"), len("rb")}, 1, OpFamily::other,
-       [](N a, N, P p, GraphNode& o) { inside_box(full(a, p[0]), full(a, p[0]), o); }, kNever},
+       [](N a, N, P p, GraphNode& o) { inside_box(full(a, p[0]), full(a, p[0]), o); }, kReachTongue},
       // (1 - t) a + t b is negative only where a or b is, and a weighted
-      // mean of two values above a floor stays above it.
+      // mean of two values above a floor stays above it. Never equal to
+      // one child (for 0 < t < 1), so it keeps both, as the pipe does.
       {"opBlend", {[] { GraphParam t{"t", 1, true, false}; t.fraction = true; return t; }()}, 1, OpFamily::other, uni, kNever},
   };
   return v;

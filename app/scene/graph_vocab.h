@@ -50,7 +50,7 @@ enum class OpFamily {
   union_,         // min-like: the surface is the children's, grown by reach
   intersection,   // max-like: inside both
   subtraction,    // max(a, -b)-like: inside a
-  other,          // pipe, engrave, groove, tongue: never pruned
+  other,          // pipe, engrave, groove, tongue: a's material; b pruned by its |b|, if at all
 };
 
 struct GraphOperator {
@@ -61,10 +61,12 @@ struct GraphOperator {
   // The node's core box and slack (graph.h) from its children's and the
   // (world-unit) parameters.
   void (*box)(const GraphNode& a, const GraphNode& b, const float* params, GraphNode& out) = nullptr;
-  // Pruning (a GLSL expression of AHI and the parameters P0, P1): the least
-  // lo(b) - hi(a) for which op(a, b) == a on a whole cell, given hi(a) of
-  // its interval; for intersections and subtractions, of the negated
-  // fields. Empty: a child is never pruned.
+  // Pruning, a GLSL expression of a's interval on a cell (ALO, AHI) and the
+  // parameters P0, P1, for which op(a, b) == a on the whole cell: for the
+  // min-like families, a least lo(b) - hi(a) (for intersections and
+  // subtractions, of the negated fields; the same with a and b swapped
+  // drops a); for `other`, a least |b| on the cell. Empty: this node keeps
+  // both children (its subtrees are still pruned).
   std::string_view reach;
 };
 

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstring>
 
-#include "scene/graph_vocab.h"
 #include "shader/graph_interp_detail.h"
 
 namespace ms {
@@ -69,15 +68,8 @@ std::size_t program_capacity(const GraphEvalPlan& plan, const GraphBuffers& b) {
 GraphEvalPlan plan_graph_eval(const SceneGraph& g, GraphEval eval, bool prune, const GraphBox& box, float cell_size) {
   GraphEvalPlan plan;
   plan.interpret = eval == GraphEval::interpreter || (eval == GraphEval::auto_ && g.primitives >= kInterpretFrom);
-  // Only graphs whose every combinator has a pruning rule: with columns,
-  // stairs, pipe, engrave, groove or tongue anywhere, random graphs gave
-  // pruned images that differed from the whole graph's in about 1% of
-  // their pixels (docs/scene-graph.md), so those graphs run unpruned.
-  bool rules = true;
-  for (const GraphNode& n : g.nodes)
-    rules = rules && (!n.binary() || !graph_operators()[static_cast<std::size_t>(n.fn)].reach.empty());
   plan.surfaces = g.root_node().box;
-  plan.prune = plan.interpret && rules && box.finite() && !box.empty() && plan.surfaces.finite() &&
+  plan.prune = plan.interpret && box.finite() && !box.empty() && plan.surfaces.finite() &&
                2 * g.primitives < kPruneLoopLimit;
   // --no-prune keeps the grid, each cell holding the whole program: the
   // same shader, so the reference differs from the pruned field only by

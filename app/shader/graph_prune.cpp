@@ -13,18 +13,23 @@ using namespace graph_detail;
 
 // Which child of operator fn may go on a cell where the children's fields
 // lie in ia and ib (lo, hi): 1 drops b, 2 drops a, 0 keeps both. For an
-// intersection the fields are negated, for a subtraction only a.
+// intersection the fields are negated, for a subtraction only a. An
+// operator without a rule keeps both here, and only here.
 std::string prune_rules_glsl(const SceneGraph& g) {
   std::set<int> ops;
   for (const GraphNode& n : g.nodes)
     if (n.binary()) ops.insert(n.fn);
-  std::string s = "float msReach(uint fn, uint o, float AHI) {\n  float P0 = msGraphF[o];\n  switch (fn) {\n";
+  std::string s =
+      "float msReach(uint fn, uint o, vec2 ia) {\n  float P0 = msGraphF[o], ALO = ia.x, AHI = ia.y;\n  switch (fn) {\n";
   for (int fn : ops) {
     const GraphOperator& op = graph_operators()[static_cast<std::size_t>(fn)];
-    if (!op.reach.empty()) s += "    case " + std::to_string(fn) + "u: return " + std::string(op.reach) + ";\n";
+    if (op.reach.empty()) continue;
+    // P1 only where the operator has one: the last node's floats end the buffer.
+    const std::string p1 = op.params.size() > 1 ? "float P1 = msGraphF[o + 1u]; " : "";
+    s += "    case " + std::to_string(fn) + "u: { " + p1 + "return " + std::string(op.reach) + "; }\n";
   }
   s += "  }\n  return -1.0;\n}\n";
-  s += "int msDrop(uint fn, uint o, vec2 ia, vec2 ib);\n";
+  s += "int msDrop(uint fn, uint o, vec2 ia, vec2 ib);\nint msCut(uint fn, uint o, vec2 ia, vec2 ib);\n";
   s += "int msGraphPrune(uint fn, uint o, vec2 ia, vec2 ib) {\n  switch (fn) {\n";
   for (int fn : ops) {
     const GraphOperator& op = graph_operators()[static_cast<std::size_t>(fn)];
@@ -33,6 +38,7 @@ std::string prune_rules_glsl(const SceneGraph& g) {
     if (op.family == OpFamily::union_) s += c + "return msDrop(fn, o, ia, ib);\n";
     else if (op.family == OpFamily::intersection) s += c + "return msDrop(fn, o, -ia.yx, -ib.yx);\n";
     else if (op.family == OpFamily::subtraction) s += c + "return msDrop(fn, o, -ia.yx, ib) == 1 ? 1 : 0;\n";
+    else s += c + "return msCut(fn, o, ia, ib);\n";
   }
   s += "  }\n  return 0;\n}\n";
   return s;
@@ -46,10 +52,14 @@ std::string prune_rules_glsl(const SceneGraph& g) {
 // private memory and copies it to the pool, taking its share atomically,
 // so the lists take what they need rather than the longest one's room.
 constexpr const char* kPrune = R"(int msDrop(uint fn, uint o, vec2 ia, vec2 ib) {
-  float rb = msReach(fn, o, ia.y), ra = msReach(fn, o, ib.y);
+  float rb = msReach(fn, o, ia), ra = msReach(fn, o, ib);
   if (rb >= 0.0 && ib.x >= ia.y + rb) return 1;
   if (ra >= 0.0 && ia.x >= ib.y + ra) return 2;
   return 0;
+}
+// Engrave, groove, tongue: b goes where its least |b| on the cell reaches.
+int msCut(uint fn, uint o, vec2 ia, vec2 ib) {
+  return max(max(ib.x, -ib.y), 0.0) >= msReach(fn, o, ia) ? 1 : 0;
 }
 struct MsEntry { vec2 v; float lo, hi; uint start, count; };
 layout(local_size_x = 64) in;

@@ -277,9 +277,8 @@ TEST(GraphScene, AnInlineGraphNamesItsKeyAndExcludesMap) {
 
 // The viewer's shader for a graph scene (AssembleOptions::bounds_uniforms)
 // reads the bounds the graph's box gives from uniforms: a translate that
-// moves the box leaves the interpreted shader's text as it was. With
-// opUnionColumns the graph has no pruning grid, whose geometry is the
-// interpreter's to keep out of the text.
+// moves the box leaves the interpreted shader's text as it was, the
+// pruning grid's geometry included (it lives in the cell buffer).
 TEST(GraphScene, BoundsAsUniformsKeepTheShaderAcrossAMove) {
   TempDir dir;
   const auto graph = [](const std::string& x) {
