@@ -13,18 +13,6 @@
 namespace ms {
 
 namespace graph_detail {
-std::string buffers_glsl(bool writable) {
-  // The coarse cells, after the count of the fine lists' pool taken so far.
-  const std::string coarse =
-      writable ? "layout(std430, binding = 7) buffer MsGraphCoarse { uint msPoolUsed; uint msPad[3]; uvec4 msGraphCoarse[]; };\n"
-               : "";
-  const char* ro = writable ? "" : "readonly ";
-  return std::string("layout(std430, binding = 3) readonly buffer MsGraphNodes { uvec4 msGraphNode[]; };\n") +
-         "layout(std430, binding = 4) readonly buffer MsGraphFloats { float msGraphF[]; };\n" +
-         "layout(std430, binding = 5) " + ro + "buffer MsGraphProgram { uint msGraphProg[]; };\n" +
-         "layout(std430, binding = 6) " + ro + "buffer MsGraphCells { uvec4 msGraphCell[]; };\n" + coarse;
-}
-
 // Parameters read from the float buffer at o, as GLSL arguments.
 std::string buffer_args(const std::vector<GraphParam>& params) {
   std::string args;
@@ -81,25 +69,9 @@ std::string dispatch_glsl(const SceneGraph& g) {
   return s;
 }
 
-const char* const kRun = R"(vec3 msGraphLocal(uint o, vec3 p) {
-  return vec3(dot(vec3(msGraphF[o], msGraphF[o + 1u], msGraphF[o + 2u]), p),
-              dot(vec3(msGraphF[o + 3u], msGraphF[o + 4u], msGraphF[o + 5u]), p),
-              dot(vec3(msGraphF[o + 6u], msGraphF[o + 7u], msGraphF[o + 8u]), p)) +
-         vec3(msGraphF[o + 9u], msGraphF[o + 10u], msGraphF[o + 11u]);
-}
-vec2 msGraphLeaf(uint i, vec3 p) {
-  uvec4 n = msGraphNode[i];
-  uint o = n.y;
-  return vec2(msGraphPrim(n.x, o + 13u, msGraphLocal(o, p)) * msGraphF[o + 12u], float(n.z));
-}
-vec2 msGraphNodeOp(uint i, vec2 a, vec2 b) {
-  uvec4 n = msGraphNode[i];
-  return msGraphOp(n.x, n.y, a, b);
-}
-)";
 
-std::string defines(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b) {
-  std::string s = "#define MS_GRAPH_STACK " + std::to_string(std::max(b.stack, 1)) + "\n";
+std::string defines(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b, int copies) {
+  std::string s = "#define MS_GRAPH_COPIES " + std::to_string(copies) + "\n#define MS_GRAPH_STACK " + std::to_string(std::max(b.stack, 1)) + "\n";
   s += "#define MS_GRAPH_FRAMES " + std::to_string(b.frames) + "\n#define MS_INDEX 0x0FFFFFFFu\n";
   s += "#define MS_GRAPH_LEN " + std::to_string(b.program.size()) + "u\n";
   s += "#define MS_GRAPH_L " + glsl_float(g.root_node().lipschitz) + "\n";
@@ -211,137 +183,7 @@ int copies(const SceneGraph& g, const GraphEvalPlan& plan, std::size_t program) 
   return u;
 }
 
-constexpr const char* kRunStep = R"(    if (k < end) {
-      uint ins = msGraphProg[k];
-      if ((ins & 0x80000000u) != 0u) {
-        st[sp++] = msGraphLeaf(ins & MS_INDEX, p);
-        MS_COUNT_PRIMS(1);
-        ++k;
-        ins = k < end ? msGraphProg[k] : 0x80000000u;
-      }
-      if ((ins & 0xB0000000u) == 0u) {
-        vec2 b = st[--sp];
-        vec2 a = st[--sp];
-        if ((ins & 0x40000000u) != 0u) { vec2 t = a; a = b; b = t; }
-        st[sp++] = msGraphNodeOp(ins & MS_INDEX, a, b);
-        ++k;
-      }
-#if MS_GRAPH_FRAMES > 0
-      else if ((ins & 0x20000000u) != 0u) {
-        p = msGraphEnter(ins & MS_INDEX, k, p, fr[fp]);
-        ++fp;
-        ++k;
-      } else if ((ins & 0x10000000u) != 0u) {
-        if (msGraphLeave(ins & MS_INDEX, st[sp - 1], p, fr[fp - 1])) {
-          k = fr[fp - 1].start;
-          --sp;
-        } else {
-          --fp;
-          ++k;
-        }
-      }
-#endif
-    }
-)";
-
-// A modifier's frame in the interpreter: the point before it, the nearest
-// copy's value so far, the copy looked at and how many.
-constexpr const char* kFrames = R"(#if MS_GRAPH_FRAMES > 0
-struct MsFrame { vec3 p; vec2 acc; float t, n; uint start; };
-// Begins modifier i at instruction k: its child's point.
-vec3 msGraphEnter(uint i, uint k, vec3 p, out MsFrame f) {
-  uvec4 n = msGraphNode[i];
-  f = MsFrame(p, vec2(1e30, 0.0), 0.0, 1.0, k + 1u);
-  float count;
-  vec3 q = msGraphBegin(n.x, n.y + 13u, msGraphLocal(n.y, p), 0.0, count);
-  f.n = count;
-  return q;
-}
-// Ends modifier i with its child's value v: true with p the next copy's
-// point when a repetition has one to look at (v is then dropped), else v
-// becomes the modifier's value and p the point before it.
-bool msGraphLeave(uint i, inout vec2 v, inout vec3 p, inout MsFrame f) {
-  uvec4 n = msGraphNode[i];
-  vec3 q = msGraphLocal(n.y, f.p);
-  if (f.n > 1.5 || f.t > 0.5) {
-    if (v.x < f.acc.x) f.acc = v;
-    for (float t = f.t + 1.0; t < f.n; t += 1.0) {
-      float count;
-      vec3 c = msGraphBegin(n.x, n.y + 13u, q, t, count);
-      if (msGraphFloor(n.x, n.y + 13u, c) < f.acc.x) {
-        f.t = t;
-        p = c;
-        return true;
-      }
-    }
-    v = f.acc;
-  } else {
-    v.x = msGraphEnd(n.x, n.y + 13u, v.x, q);
-  }
-  v.x *= msGraphF[n.y + 12u];
-  p = f.p;
-  return false;
-}
-#endif
-)";
-
-std::string run_body(int n) {
-  std::string s = std::string(kFrames) + "vec2 msGraphRun(uint start, uint count, vec3 p) {\n  vec2 st[MS_GRAPH_STACK];\n  int sp = 0;\n";
-  s += "#if MS_GRAPH_FRAMES > 0\n  MsFrame fr[MS_GRAPH_FRAMES];\n  int fp = 0;\n#endif\n";
-  s += "  uint end = start + count;\n  for (uint k = start; k < end;) {\n";
-  for (int j = 0; j < n; ++j) s += kRunStep;
-  s += "  }\n  return st[0];\n}\n";
-  return s;
-}
-
-// The finest grid level holding p gives the list; a level's cells inside
-// the next finer level are empty (never looked up, but a rounding error
-// on that level's edge may land there, so an empty cell falls through).
-// A far cell (outer levels only) gives the lower bound its centre's value
-// and the Lipschitz bound make, or the whole program where that bound is
-// under half the cell's half diagonal. Past the last level the field is taken to be at least the
-// distance to the graph's box, as the shadows' reach already takes it
-// (bounds.glsl shadowBoundsPad).
-std::string lookup_glsl() {
-  const std::string lo = std::to_string(1 + 3 * kGridLevels), hi = std::to_string(2 + 3 * kGridLevels);
-  std::string s = "float msGraphBoxDistance(vec3 p) {\n  vec3 lo = uintBitsToFloat(msGraphCell[" + lo +
-                  "].xyz), hi = uintBitsToFloat(msGraphCell[" + hi + "].xyz);\n" +
-                  "  return length(max(max(lo - p, p - hi), vec3(0.0)));\n}\n";
-  // One msGraphRun() at the end: every call site of it is compiled again
-  // at every place map() is inlined.
-  s += "vec2 map(vec3 p) {\n  uint start = 0u, count = 0u;\n";
-  for (int j = 0; j < kGridLevels; ++j) {
-    const std::string a = std::to_string(1 + 3 * j), b = std::to_string(2 + 3 * j), d = std::to_string(3 + 3 * j);
-    s += "  if (count == 0u) {\n    uvec4 a = msGraphCell[" + a + "], b = msGraphCell[" + b + "], d = msGraphCell[" + d +
-         "];\n";
-    s += R"(    vec3 g = (p - uintBitsToFloat(a.xyz)) / uintBitsToFloat(b.xyz);
-    if (all(greaterThanEqual(g, vec3(0.0))) && all(lessThan(g, vec3(d.xyz)))) {
-      uvec3 c = min(uvec3(g), d.xyz - 1u);
-      uvec4 cell = msGraphCell[MS_GRID_HEADER + a.w + c.x + d.x * (c.y + d.y * c.z)];
-      start = cell.x;
-      count = cell.y;
-      if (cell.w >= 2u) {  // far: 2 the value at its coarse cell's centre, 3 at its own
-        uint split = cell.w == 2u ? uint(MS_GRID_SPLIT) : 1u;
-        vec3 size = uintBitsToFloat(b.xyz) * float(split);
-        vec3 centre = uintBitsToFloat(a.xyz) + (vec3(c / split) + 0.5) * size;
-        float lb = max(uintBitsToFloat(cell.x) - MS_GRAPH_L * length(p - centre), msGraphBoxDistance(p));
-        // A bound near 0 would read as a hit (a shadow ray's HIT_EPSILON).
-        if (lb > 0.25 * length(size)) return vec2(lb, 0.0);
-        start = 0u;
-        count = MS_GRAPH_LEN;
-      }
-    }
-  }
-)";
-  }
-  return s + "  if (count == 0u) return vec2(msGraphBoxDistance(p), 0.0);\n  return msGraphRun(start, count, p);\n";
-}
-
 }  // namespace
-
-namespace graph_detail {
-std::string run_glsl(int n) { return run_body(n); }
-}  // namespace graph_detail
 
 GraphBuffers graph_buffers(const SceneGraph& g) {
   GraphBuffers b;
@@ -371,9 +213,8 @@ GraphBuffers graph_buffers(const SceneGraph& g) {
 std::string graph_map_interpreter(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b) {
   std::string s = "#include \"aov.glsl\"\n// map() interpreting the scene graph's node buffers: " +
                   std::to_string(g.primitives) + " primitives, " + std::to_string(g.operators) + " operators\n";
-  s += defines(g, plan, b) + buffers_glsl(false) + dispatch_glsl(g) + kRun + run_body(copies(g, plan, b.program.size()));
-  s += plan.prune ? lookup_glsl() : "vec2 map(vec3 p) {\n  return msGraphRun(0u, MS_GRAPH_LEN, p);\n";
-  return s + "}\n";
+  return s + defines(g, plan, b, copies(g, plan, b.program.size())) + "#include \"graph_buffers.glsl\"\n" +
+         dispatch_glsl(g) + "#include \"graph_interp.glsl\"\n";
 }
 
 }  // namespace ms

@@ -16,15 +16,9 @@ inline constexpr std::size_t kCoarseList = 2048;
 // level, two for the graph's box (grid_header()).
 inline constexpr int kHeader = 3 + 3 * kGridLevels;
 
-// Binding points 3-6 (and 7, the coarse cells, when writable).
-std::string buffers_glsl(bool writable);
 // msGraphPrim and msGraphOp: a case for each function the graph uses.
 std::string dispatch_glsl(const SceneGraph& g);
-// msGraphLeaf and msGraphNodeOp.
-extern const char* const kRun;
-// msGraphRun: the program from `start`, `count` instructions, at p, with n
-// copies of its loop body (graph_interp.cpp says why).
-std::string run_glsl(int n);
-std::string defines(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b);
+// The defines sdf_shaders/graph_interp.glsl reads; `copies` of its loop body.
+std::string defines(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b, int copies);
 
 }  // namespace ms::graph_detail
