@@ -15,11 +15,8 @@ FramePrograms::FramePrograms(const Context& ctx, ProgramCache& cache, const Prep
   post_ = cache.get(fullscreen_vertex_source(), p.post_src);
   bloom_ = make_bloom_stage(p.in, p.display, p.opts, cache);  // pipeline/bloom_setup.h; null without bloom
   drawer_ = std::make_unique<SceneDrawer>(ctx, *graph_, Dispatch::fragment);
-  if (p.graph && p.graph->plan.interpret) {
-    if (p.graph->plan.pruned()) prune_ = std::make_unique<Program>(Program::Compute{}, p.prune_src);
-    field_ = std::make_unique<GraphField>(p.graph->buffers, p.graph->plan, prune_.get(),
-                                          p.keep_pruned ? p.prune_src.text : std::string());
-  }
+  if (p.opts.graph && p.opts.graph->plan.interpret)
+    field_ = std::make_unique<GraphField>(*p.opts.graph, nullptr, p.keep_pruned);
 }
 
 void FramePrograms::bind_field() const {

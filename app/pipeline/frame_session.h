@@ -76,7 +76,6 @@ class FramePrograms {
   std::shared_ptr<const Program> post_;
   std::unique_ptr<BloomStage> bloom_;
   std::unique_ptr<SceneDrawer> drawer_;
-  std::unique_ptr<Program> prune_;
   std::unique_ptr<GraphField> field_;
   void bind_field() const;  // before each draw: another job's buffers may be bound
 };

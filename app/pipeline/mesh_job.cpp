@@ -212,21 +212,14 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   r.voxel = grid.voxel;
   AssembleOptions opts = job.frame.assemble_options();
   opts.field_sampler = true;
+  prepare_graph_shape(scene, opts);  // once: the sampler's map() and the GraphField take it from here
   const ShaderSource src = assemble_scene(scene, opts);
-  std::unique_ptr<GraphParts> parts;
-  ShaderSource prune_src;
-  if (scene.graph) {
-    parts = std::make_unique<GraphParts>(graph_parts(scene, opts));
-    if (parts->plan.pruned()) prune_src = assemble_graph_prune(scene, *parts, opts);
-  }
 
   session.context(job.frame.backend);
   const Program prog(Program::Compute{}, src);
-  std::unique_ptr<Program> prune;
   std::unique_ptr<GraphField> field;
-  if (parts) {
-    if (parts->plan.pruned()) prune = std::make_unique<Program>(Program::Compute{}, prune_src);
-    field = std::make_unique<GraphField>(parts->buffers, parts->plan, prune.get(), prune_src.text);
+  if (opts.graph && opts.graph->plan.interpret) {
+    field = std::make_unique<GraphField>(*opts.graph, nullptr, true);
     field->bind();
     if (job.frame.verbose && !field->summary().empty()) std::fprintf(stderr, "  %s\n", field->summary().c_str());
   }

@@ -33,11 +33,8 @@ PreparedFrame prepare(const FrameJob& job, bool display) {
   p.fp.spp = job.spp > 0 ? job.spp : scene.render.spp;
   p.fp.aovs = job.aovs();
   p.fp.tile_size = job.tile_size;
+  prepare_graph_shape(p.in.scene, p.opts);  // once: every pass and the GraphField take it from here
   p.post_src = assemble_still(p.in, p.opts, p.fp.spp, job.aovs(), display, p.fp.fused_post);
-  if (p.in.scene.graph) {
-    p.graph = std::make_shared<const GraphParts>(graph_parts(p.in.scene, p.opts));
-    if (p.graph->plan.pruned()) p.prune_src = assemble_graph_prune(p.in.scene, *p.graph, p.opts);
-  }
   return p;
 }
 
