@@ -26,6 +26,7 @@
 #include "render/program.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
+#include "scene/graph_animation.h"
 #include "scene/graph_alone.h"
 
 namespace ms {
@@ -203,7 +204,10 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   };
   MeshReport r;
   LoadedInput in;
-  const Scene& scene = checked_input(job, in, r).scene;
+  checked_input(job, in, r);
+  const float time = job.frame.time ? *job.frame.time : in.scene.render.time;
+  pose_graph_at(in.scene, time);  // an animated graph's nodes at this time: its box, and the mesh's, move with them
+  const Scene& scene = in.scene;
   MeshBox box;
   const FieldClip clip = clip_for(job, scene, box);
   check_voxel(job, box);
@@ -224,7 +228,6 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
     if (job.frame.verbose && !field->summary().empty()) std::fprintf(stderr, "  %s\n", field->summary().c_str());
   }
   r.setup_s = since(start);
-  const float time = job.frame.time ? *job.frame.time : scene.render.time;
   // Every uniform a frame at this time would set (a map() may read the
   // materials or lights, not only uTime); uFrame as a still's at 24 fps.
   set_scene_uniforms(prog, animated(scene, time), 1, 1, time, static_cast<int>(std::lround(time * kSceneFps)));

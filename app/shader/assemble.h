@@ -54,7 +54,7 @@ struct AssembleOptions {
   bool field_sampler = false;
   // A graph scene's prepared shape (prepare_graph_shape()): every assemble_*
   // of the scene reads its map() from it; none derives it again.
-  std::shared_ptr<const GraphParts> graph;
+  std::shared_ptr<const GraphParts> graph = nullptr;  // (an initializer, as above)
 };
 
 // A graph scene's prepared shape: how its map() is evaluated, the
