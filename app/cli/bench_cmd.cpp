@@ -87,6 +87,7 @@ int run_bench_command(const BenchArgs& a) {
   // Shadertoy shader has no step counters: its passes are timed only).
   AssembleOptions count_opts = job.assemble_options();
   count_opts.defines = aov_defines();
+  count_opts.graph = p.opts.graph;  // the shape prepare() made
   const std::optional<ShaderSource> counting =
       in.shadertoy ? std::nullopt : std::optional<ShaderSource>(assemble_scene(in.scene, count_opts));
 

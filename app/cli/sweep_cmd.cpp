@@ -129,7 +129,10 @@ int run_sweep_command(const SweepArgs& a) {
   s.ref_spp = a.ref_spp;
   s.grid = a.grid;
   if (a.time_by) s.clock = *a.time_by;
-  const LoadedInput in = load_input(a.input, {}, opts, {}, a.overrides.set);
+  LoadedInput loaded = load_input_scene(a.input, {}, opts, {}, a.overrides.set);
+  prepare_graph_shape(loaded.scene, opts);  // once: the rows of its cell size take it from here
+  assemble_input(loaded, opts);
+  const LoadedInput& in = loaded;
   if (in.shadertoy)
     fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
                "wrap the map in a scene .toml");
@@ -140,9 +143,9 @@ int run_sweep_command(const SweepArgs& a) {
   check_compute_input(s.dispatch, in);
 
   std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.preset);
-  if (in.scene.graph) {  // the pruning grid's cells: half and twice the planned size
-    const GraphParts parts = graph_parts(in.scene, opts);
-    const glm::vec3 cell = parts.plan.pruned() ? parts.plan.levels[0].cell : glm::vec3(0.0f);
+  if (opts.graph) {  // the pruning grid's cells: half and twice the planned size
+    const GraphEvalPlan& plan = opts.graph->plan;
+    const glm::vec3 cell = plan.pruned() ? plan.levels[0].cell : glm::vec3(0.0f);
     for (SweepConfig& c : cell_size_rows(in.scene.quality, std::max({cell.x, cell.y, cell.z}), a.preset))
       configs.push_back(std::move(c));
   }
@@ -179,6 +182,7 @@ int run_sweep_command(const SweepArgs& a) {
     probe.in = in;
     probe.in.scene.bloom.enabled = false;  // the rows draw without bloom
     probe.opts = opts;
+    probe.opts.graph = nullptr;  // as before: the probe times the pass without building a pruned grid
     probe.post_src = assemble_post(in.scene.render.tonemap, true, opts);
     StillFrame f;
     f.in.scene = &posed;

@@ -112,6 +112,7 @@ PreparedCase prepare_case(const Suite& suite, const SuiteCase& c, const fs::path
     pc.fps = still_fps(job, in);  // as render's still
     if (c.cost) {
       AssembleOptions count_opts = job.assemble_options();
+      count_opts.graph = p.opts.graph;  // the shape prepare() made
       for (const auto& d : aov_defines()) count_opts.defines.push_back(d);
       pc.counting = assemble_scene(in.scene, count_opts);
       if (c.cost->mean_primitive_evals) {

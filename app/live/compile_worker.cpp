@@ -165,9 +165,9 @@ void CompileWorker::run() {
 
 void CompileWorker::build_field(const CompileJob& job, CompileResult& r) {
   try {
-    if (job.graph) {
-      if (job.prune) r.prune = std::make_shared<const Program>(Program::Compute{}, *job.prune);
-      r.field = std::make_shared<GraphField>(job.graph->buffers, job.graph->plan, r.prune.get());
+    if (job.graph && job.graph->plan.interpret) {
+      r.field = std::make_shared<GraphField>(*job.graph);
+      r.prune = r.field->prune();
     }
   } catch (const Error&) {
     r.error = std::current_exception();

@@ -60,11 +60,10 @@ struct CompileJob {
   // programs, warmed up once.
   std::optional<ShaderSource> compute;
   ComputeGroup compute_group;
-  // An interpreted graph: its parts, from which the worker builds the field
-  // (with `prune`, the pruning pass, compiled here), or else `field`, the
-  // current one, which its warm-up binds (a rebuild of the same graph).
+  // A graph read anew: its prepared shape, from which the worker builds the
+  // field when interpreted (its pruning pass compiled here), or else
+  // `field`, the current one, which its warm-up binds (a rebuild of the same graph).
   std::shared_ptr<const GraphParts> graph;
-  std::optional<ShaderSource> prune;
   std::shared_ptr<const GraphField> field;
 };
 

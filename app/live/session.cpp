@@ -61,6 +61,7 @@ Session::PreparedReload Session::prepare(bool from_disk) {
       if (!preset_.empty()) scene_.quality = with_preset(fresh.quality, preset_);
     }
     AssembleOptions opts = opts_.assemble;
+    prepare_graph(opts, p);  // before anything is assembled: every pass reads the one shape
     const bool specialized = !shadertoy() && opts.specialize != Specialization::generic;
     // Remembered before anything can fail: a failed build must not make
     // every frame retry the same features (features_changed()).
@@ -88,7 +89,6 @@ Session::PreparedReload Session::prepare(bool from_disk) {
     p.post_src = assemble_post(scene_.render.tonemap, !shadertoy() && view == 0, opts_.assemble, shadertoy(), bloom);
     if (bloom) p.bloom_src = {assemble_bloom(false, opts_.assemble), assemble_bloom(true, opts_.assemble)};
     p.view = view;
-    prepare_graph(opts, p);
     r.cached = cache_.contains(fullscreen_vertex_source(), p.passes.back().source);
     r.ok = true;
   } catch (const Error& e) {
@@ -148,10 +148,13 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
     post_ = std::move(post);
     bloom_ = std::move(bloom_stage);
     field_ = std::move(field);
-    if (!p.keep_field) field_graph_ = p.graph_of;
+    if (!p.keep_field) {
+      shape_graph_ = p.graph_of;
+      shape_ = p.graph;
+    }
     if (p.prune) {
       prune_ = p.prune;
-      prune_text_ = p.prune_src.text;
+      prune_text_ = p.graph->prune_src.text;
     }
     warnings_ = std::move(warnings);
     std::vector<SceneParam> params = parse_scene_params(p.passes.back().source.text);
@@ -171,39 +174,36 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
   return r;
 }
 
-// A graph read anew gets a new field; a rebuild of the same graph (a
-// toggle, a debug view, a panel value) keeps the one it has.
-void Session::prepare_graph(const AssembleOptions& opts, PreparedReload& p) const {
+// A graph read anew gets a new shape and field; a rebuild of the same graph
+// (a toggle, a debug view, a panel value) keeps the ones it has.
+void Session::prepare_graph(AssembleOptions& opts, PreparedReload& p) const {
   if (!scene_.graph) return;
-  if (field_ && field_graph_ == scene_.graph) {
+  if (shape_ && shape_graph_ == scene_.graph) {
     p.keep_field = true;
+    opts.graph = shape_;
     return;
   }
-  GraphParts parts = graph_parts(scene_, opts);
-  if (!parts.plan.interpret) return;
+  prepare_graph_shape(scene_, opts);
   p.graph_of = scene_.graph;
-  if (parts.plan.pruned()) p.prune_src = assemble_graph_prune(scene_, parts, opts);
-  p.graph = std::make_shared<const GraphParts>(std::move(parts));
+  p.graph = opts.graph;
 }
 
 // The field the adopted programs read: the worker's, one built here (its
 // pruning pass compiled only when its text is new), the current one, or none.
 std::shared_ptr<GraphField> Session::adopt_field(PreparedReload& p, ReloadResult& r) {
   if (p.keep_field) return field_;
-  if (!p.graph) return nullptr;
+  if (!p.graph || !p.graph->plan.interpret) return nullptr;
   r.graph = true;
   std::shared_ptr<GraphField> field = std::move(p.field);
   if (field && p.prune) ++r.compiled;  // the worker's
   if (!field) {
-    if (!p.prune && !p.prune_src.text.empty()) {
-      if (prune_ && p.prune_src.text == prune_text_) {
-        p.prune = prune_;
-      } else {
-        p.prune = std::make_shared<const Program>(Program::Compute{}, p.prune_src);
-        ++r.compiled;
-      }
+    const std::string& text = p.graph->prune_src.text;
+    if (!p.prune && !text.empty()) {
+      if (prune_ && text == prune_text_) p.prune = prune_;
+      else ++r.compiled;  // GraphField compiles it
     }
-    field = std::make_shared<GraphField>(p.graph->buffers, p.graph->plan, p.prune.get());
+    field = std::make_shared<GraphField>(*p.graph, p.prune);
+    p.prune = field->prune();
   }
   if (p.graph->plan.pruned()) r.prune_ms = field->build_ms();
   return field;

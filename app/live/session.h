@@ -86,13 +86,13 @@ class Session {
     int view = 0;
     bool fused = false;  // the one-pass frame (fuse_frame())
     std::vector<ShaderSource> compiling;  // what to_compile() listed: adopt()'s `compiled` match these
-    // An interpreted graph read anew (a rebuild of the same one keeps the
-    // field): its parts and pruning pass (empty text without a grid), and
-    // the field the worker built from them, if it did (live/compile_worker.h);
-    // else adopt() builds it, compiling the pruning pass when it is new.
+    // A graph read anew (a rebuild of the same one keeps its shape and
+    // field): its prepared shape, the one the passes were assembled from,
+    // and, interpreted, the field the worker built from it, if it did
+    // (live/compile_worker.h); else adopt() builds it, compiling the
+    // pruning pass when it is new.
     std::shared_ptr<const SceneGraph> graph_of;
     std::shared_ptr<const GraphParts> graph;
-    ShaderSource prune_src;
     std::shared_ptr<const Program> prune;
     std::shared_ptr<GraphField> field;
     bool keep_field = false;
@@ -180,7 +180,7 @@ class Session {
 
  private:
   void fail(const Error& e, ReloadResult& r);
-  void prepare_graph(const AssembleOptions& opts, PreparedReload& p) const;
+  void prepare_graph(AssembleOptions& opts, PreparedReload& p) const;
   std::shared_ptr<GraphField> adopt_field(PreparedReload& p, ReloadResult& r);
   SessionOptions opts_;
   Scene scene_, file_scene_;
@@ -191,7 +191,8 @@ class Session {
   std::shared_ptr<const Program> post_;
   std::unique_ptr<BloomStage> bloom_;  // with post_: its post pass was assembled with BLOOM 1
   std::shared_ptr<GraphField> field_;
-  std::shared_ptr<const SceneGraph> field_graph_;  // what field_ was built from
+  std::shared_ptr<const SceneGraph> shape_graph_;  // what shape_ (and field_) were made from
+  std::shared_ptr<const GraphParts> shape_;
   std::shared_ptr<const Program> prune_;  // the last pruning pass, kept by its text: a move reuses it
   std::string prune_text_;
   std::vector<std::string> warnings_;

@@ -34,9 +34,8 @@ void Viewer::build(Compiling c, bool wait) {
     const ReloadResult r = session_.adopt(std::move(c.plan), {}, nullptr, 0.0);
     return finish_build(c, r, 0.0);
   }
-  CompileJob job{++jobs_, std::move(sources), passes, !c.plan.fused, std::nullopt, {}, c.plan.graph, std::nullopt,
+  CompileJob job{++jobs_, std::move(sources), passes, !c.plan.fused, std::nullopt, {}, c.plan.graph,
                  c.plan.keep_field ? session_.field() : nullptr};
-  if (!c.plan.prune_src.text.empty()) job.prune = c.plan.prune_src;
   // Traced with compute: the worker compiles that program too (docs/viewer.md#compute).
   // A pass compute refuses goes without: the UI thread's update() says why.
   if (c.plan.result.ok && !c.plan.passes.empty()) {

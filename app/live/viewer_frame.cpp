@@ -20,6 +20,7 @@
 #include "render/still.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
+#include "scene/graph_animation.h"
 #include "scene/writeback.h"
 
 namespace ms::live {
@@ -111,6 +112,13 @@ Scene FrameDrawer::posed(float time) const {
   } catch (const Error&) {
     // The keys make the scene unrenderable at this time (say, the camera
     // on its target): show it unanimated rather than nothing.
+  }
+  // Graph tracks do not play here yet: the field holds the file's pose, and
+  // the bounds must stay those of the graph it draws.
+  if (animates_graph(scene)) {
+    view.graph = scene.graph;
+    view.bounds = scene.bounds;
+    view.quality.lipschitz = scene.quality.lipschitz;
   }
   // The camera follows its animation until the user moves it (R resumes).
   const bool untouched = s_.camera.position == s_.scene_camera.position &&

@@ -15,11 +15,18 @@ FramePrograms::FramePrograms(const Context& ctx, ProgramCache& cache, const Prep
   post_ = cache.get(fullscreen_vertex_source(), p.post_src);
   bloom_ = make_bloom_stage(p.in, p.display, p.opts, cache);  // pipeline/bloom_setup.h; null without bloom
   drawer_ = std::make_unique<SceneDrawer>(ctx, *graph_, Dispatch::fragment);
-  if (p.graph && p.graph->plan.interpret) {
-    if (p.graph->plan.pruned()) prune_ = std::make_unique<Program>(Program::Compute{}, p.prune_src);
-    field_ = std::make_unique<GraphField>(p.graph->buffers, p.graph->plan, prune_.get(),
-                                          p.keep_pruned ? p.prune_src.text : std::string());
+  if (p.opts.graph && p.opts.graph->plan.interpret) {
+    field_ = std::make_unique<GraphField>(*p.opts.graph, nullptr, p.keep_pruned);
+    prune_text_ = p.opts.graph->prune_src.text;
   }
+}
+
+int FramePrograms::reshape(const GraphParts& shape) {
+  if (!field_) fail_system("internal: a graph reshaped without its field");
+  const bool same = shape.prune_src.text == prune_text_;
+  field_ = std::make_unique<GraphField>(shape, same ? field_->prune() : nullptr, false);
+  prune_text_ = shape.prune_src.text;
+  return same || !field_->prune() ? 0 : 1;
 }
 
 void FramePrograms::bind_field() const {

@@ -67,6 +67,11 @@ class FramePrograms {
   PassGraph& graph() { return *graph_; }
   // A graph scene's node buffers and pruned grid; null for a map() scene or inline code.
   const GraphField* field() const { return field_.get(); }
+  // A graph whose nodes move (scene/graph_animation.h): the field made
+  // anew from this frame's shape, its buffers uploaded and pruned with the
+  // pruning program it has when the text is the same. Returns the programs
+  // compiled (0 but for a new pruning text).
+  int reshape(const GraphParts& shape);
 
  private:
   FrameParams with_bloom(FrameParams fp) const;  // fp.bloom: this job's stage
@@ -76,8 +81,8 @@ class FramePrograms {
   std::shared_ptr<const Program> post_;
   std::unique_ptr<BloomStage> bloom_;
   std::unique_ptr<SceneDrawer> drawer_;
-  std::unique_ptr<Program> prune_;
   std::unique_ptr<GraphField> field_;
+  std::string prune_text_;  // field_'s pruning pass, for reshape()
   void bind_field() const;  // before each draw: another job's buffers may be bound
 };
 

@@ -153,7 +153,9 @@ std::vector<std::string> unbound_warnings(const PassGraph& graph) {
 LoadedInput load_input(const fs::path& input, const DisabledEffects& disable, const AssembleOptions& opts,
                        const std::string& preset, const SceneOverrides& overrides) {
   LoadedInput in = load_input_scene(input, disable, opts, preset, overrides);
-  assemble_input(in, opts);
+  AssembleOptions o = opts;
+  prepare_graph_shape(in.scene, o);
+  assemble_input(in, o);
   return in;
 }
 

@@ -26,6 +26,7 @@
 #include "render/program.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
+#include "scene/graph_animation.h"
 #include "scene/graph_alone.h"
 
 namespace ms {
@@ -203,7 +204,10 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   };
   MeshReport r;
   LoadedInput in;
-  const Scene& scene = checked_input(job, in, r).scene;
+  checked_input(job, in, r);
+  const float time = job.frame.time ? *job.frame.time : in.scene.render.time;
+  pose_graph_at(in.scene, time);  // an animated graph's nodes at this time: its box, and the mesh's, move with them
+  const Scene& scene = in.scene;
   MeshBox box;
   const FieldClip clip = clip_for(job, scene, box);
   check_voxel(job, box);
@@ -212,26 +216,18 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   r.voxel = grid.voxel;
   AssembleOptions opts = job.frame.assemble_options();
   opts.field_sampler = true;
+  prepare_graph_shape(scene, opts);  // once: the sampler's map() and the GraphField take it from here
   const ShaderSource src = assemble_scene(scene, opts);
-  std::unique_ptr<GraphParts> parts;
-  ShaderSource prune_src;
-  if (scene.graph) {
-    parts = std::make_unique<GraphParts>(graph_parts(scene, opts));
-    if (parts->plan.pruned()) prune_src = assemble_graph_prune(scene, *parts, opts);
-  }
 
   session.context(job.frame.backend);
   const Program prog(Program::Compute{}, src);
-  std::unique_ptr<Program> prune;
   std::unique_ptr<GraphField> field;
-  if (parts) {
-    if (parts->plan.pruned()) prune = std::make_unique<Program>(Program::Compute{}, prune_src);
-    field = std::make_unique<GraphField>(parts->buffers, parts->plan, prune.get(), prune_src.text);
+  if (opts.graph && opts.graph->plan.interpret) {
+    field = std::make_unique<GraphField>(*opts.graph, nullptr, true);
     field->bind();
     if (job.frame.verbose && !field->summary().empty()) std::fprintf(stderr, "  %s\n", field->summary().c_str());
   }
   r.setup_s = since(start);
-  const float time = job.frame.time ? *job.frame.time : scene.render.time;
   // Every uniform a frame at this time would set (a map() may read the
   // materials or lights, not only uTime); uFrame as a still's at 24 fps.
   set_scene_uniforms(prog, animated(scene, time), 1, 1, time, static_cast<int>(std::lround(time * kSceneFps)));

@@ -112,14 +112,14 @@ std::string mesh_job_fingerprint(const MeshJob& job) {
   if (!in.shadertoy) {
     AssembleOptions opts = fj.assemble_options();
     opts.field_sampler = true;
+    prepare_graph_shape(in.scene, opts);
     h.add(assemble_scene(in.scene, opts).text);
-    if (in.scene.graph) {
-      const GraphParts parts = graph_parts(in.scene, opts);
-      const GraphBuffers& b = parts.buffers;
+    if (opts.graph) {
+      const GraphBuffers& b = opts.graph->buffers;
       h.add_bytes(b.nodes.data(), b.nodes.size() * sizeof b.nodes[0]);
       h.add_bytes(b.floats.data(), b.floats.size() * sizeof b.floats[0]);
       h.add_bytes(b.program.data(), b.program.size() * sizeof b.program[0]);
-      h.add(parts.plan.pruned());
+      h.add(opts.graph->plan.pruned());
     }
   }
   h.add(job.resolution).add(job.voxel).add(job.bounds.has_value()).add(job.planes).add(job.band);

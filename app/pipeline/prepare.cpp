@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "render/aov.h"
+#include "scene/graph_animation.h"
 
 namespace ms {
 
@@ -16,6 +17,22 @@ AssembleOptions FrameJob::assemble_options() const {
   opts.cell_size = cell_size;
   return opts;
 }
+
+namespace {
+
+// A graph whose nodes move: interpreted, so that their values are buffers
+// and a frame's new values compile nothing, with its bounds (its box, which
+// moves) read from uniforms; posed at the still's time.
+void animate_graph_options(const FrameJob& job, PreparedFrame& p) {
+  if (job.graph_eval == GraphEval::inline_)
+    fail_input("--graph-eval inline cannot animate graph nodes: it compiles their values in", job.input.string(), 0,
+               "--graph-eval", "leave it auto (an animated graph is interpreted) or give interpreter");
+  p.opts.graph_eval = GraphEval::interpreter;
+  p.opts.bounds_uniforms = true;
+  pose_graph_at(p.in.scene, job.time ? *job.time : p.in.scene.render.time);
+}
+
+}  // namespace
 
 PreparedFrame prepare(const FrameJob& job, bool display) {
   PreparedFrame p;
@@ -33,11 +50,9 @@ PreparedFrame prepare(const FrameJob& job, bool display) {
   p.fp.spp = job.spp > 0 ? job.spp : scene.render.spp;
   p.fp.aovs = job.aovs();
   p.fp.tile_size = job.tile_size;
+  if (animates_graph(p.in.scene)) animate_graph_options(job, p);
+  prepare_graph_shape(p.in.scene, p.opts);  // once: every pass and the GraphField take it from here
   p.post_src = assemble_still(p.in, p.opts, p.fp.spp, job.aovs(), display, p.fp.fused_post);
-  if (p.in.scene.graph) {
-    p.graph = std::make_shared<const GraphParts>(graph_parts(p.in.scene, p.opts));
-    if (p.graph->plan.pruned()) p.prune_src = assemble_graph_prune(p.in.scene, *p.graph, p.opts);
-  }
   return p;
 }
 

@@ -21,10 +21,8 @@ struct PreparedFrame {
   FrameParams fp;        // size, samples, AOVs, fused post and tile size; exposure and bloom per frame
   ShaderSource post_src;
   bool display = true;   // stored as 8-bit display values (PNG, JPEG, TIFF), not float (EXR)
-  // A graph scene: how map() is evaluated, the interpreter's buffers and
-  // the pruning pass's source (render/graph_field.h builds the grid).
-  std::shared_ptr<const GraphParts> graph;
-  ShaderSource prune_src;
+  // A graph scene's shape, prepared once, is opts.graph: every pass above
+  // was assembled from it, and FramePrograms makes the GraphField from it.
   // A long pruning pass's grid may be read from, and kept in, the disk
   // cache (render/graph_field_cache.h); bench turns it off to time the pass.
   bool keep_pruned = true;

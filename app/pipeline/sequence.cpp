@@ -28,6 +28,7 @@
 #include "render/tiles.h"
 #include "render/uniforms.h"
 #include "scene/animation.h"
+#include "scene/graph_animation.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -224,6 +225,17 @@ Image draw_frame(const SequenceJob& job, SequencePlan& plan, FrameSession& sessi
   return img;
 }
 
+// A graph whose nodes move: this frame's shape into the session's field,
+// prepared once for the frame; no shader compiles (the values are buffers).
+void reshape_graph(FrameSession& session, const Scene& posed, const AssembleOptions& opts, int frame, bool verbose) {
+  const long before = session.cache().misses();
+  const GraphParts shape = graph_parts(posed, opts);
+  const int compiled = session.job().reshape(shape);
+  if (verbose)
+    std::fprintf(stderr, "marchstudio: frame %d: graph posed, %ld programs compiled, pruning %.1f ms\n", frame,
+                 session.cache().misses() - before + compiled, session.job().field()->build_ms());
+}
+
 // The frames to render, drawn and handed to the writers in order.
 LoopTimes draw_frames(const SequenceJob& job, SequencePlan& plan, Progress& progress, const StopSignals& signals,
                       Watchdog* watchdog, const Deadline& loading) {
@@ -267,6 +279,7 @@ LoopTimes draw_frames(const SequenceJob& job, SequencePlan& plan, Progress& prog
     if ((t.stop_signal = signals.signal()) != 0) break;
     const float time = plan.time(f);
     const Scene posed = animated(in.scene, time);
+    if (animates_graph(in.scene)) reshape_graph(session, posed, plan.p.opts, f, fj.verbose);
     if (!in.shadertoy) {  // [bounds] at this frame's pose: warned once; --strict stops here (pipeline/bounds_report.h)
       try {
         session.bounds().check(fj.input.string(), posed, plan.p.opts, [&](const Program& prog) {

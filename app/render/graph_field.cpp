@@ -24,9 +24,12 @@ void upload(GLuint buf, const std::vector<T>& data, std::size_t extra_bytes = 0)
 
 }  // namespace
 
-GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const Program* prune,
-                       const std::string& prune_source)
-    : plan_(plan), program_(b.program.size()) {
+GraphField::GraphField(const GraphParts& parts, std::shared_ptr<const Program> prune, bool disk_cache)
+    : plan_(parts.plan), program_(parts.buffers.program.size()), prune_(std::move(prune)) {
+  const GraphBuffers& b = parts.buffers;
+  const GraphEvalPlan& plan = parts.plan;
+  if (plan.pruned() && !prune_) prune_ = std::make_shared<const Program>(Program::Compute{}, parts.prune_src);
+  if (!plan.pruned()) prune_.reset();
   glGenBuffers(5, buffers_);
   const std::size_t cells = plan.prune ? cell_count(plan) : 0, coarse = plan.prune ? coarse_cell_count(plan) : 0;
   upload(buffers_[0], b.nodes);
@@ -40,16 +43,16 @@ GraphField::GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const P
   // The pool's count, three words of padding, then the coarse cells.
   upload(buffers_[4], std::vector<std::uint32_t>((coarse + 1) * 4, 0u));
   bind();
-  if (!plan.pruned() || !prune) return;
+  if (!plan.pruned()) return;
   const auto start = std::chrono::steady_clock::now();
-  const PrunedCache cache(b, plan, prune_source);
+  const PrunedCache cache(b, plan, disk_cache ? parts.prune_src.text : std::string());
   const GLuint kept[3] = {buffers_[2], buffers_[3], buffers_[4]};
   const PrunedSizes sizes{{program_capacity(plan, b) * sizeof(std::uint32_t), head.size() * sizeof(std::uint32_t),
                            (coarse + 1) * 4 * sizeof(std::uint32_t)},
                           pool_base(plan, b) * sizeof(std::uint32_t)};
   std::string refused;
   from_cache_ = cache.load(kept, sizes, &refused);
-  if (!from_cache_) run_pass(*prune);
+  if (!from_cache_) run_pass(*prune_);
   std::vector<std::uint32_t> out(cells * 4);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[3]);
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(first * sizeof(std::uint32_t)),

@@ -3,28 +3,32 @@
 // the nodes that can change the field there, exactly. Built on the GPU
 // when the graph is loaded, coarse cells first, its time measured.
 //
-//   GraphField field(parts.buffers, parts.plan, &prune_program);
+//   GraphField field(*opts.graph);   // the prepared shape (shader/assemble.h); prunes it
 //   field.bind();              // before each draw: binding points 3-7, as map() reads them
 //   field.build_ms();          // the pruning pass's time (or the cache's read)
 //   field.mean_list();         // instructions a cell keeps, on average
 #pragma once
+#include <memory>
 #include <string>
 
 #include "gl/gl.h"
 
 #include "render/program.h"
+#include "shader/assemble.h"
 #include "shader/graph_interp.h"
 
 namespace ms {
 
 class GraphField {
  public:
-  // `prune` is the compiled assemble_graph_prune() when plan.prune, else null.
-  // `prune_source`, its text: a pass that took long is kept on disk under
-  // a key of everything it was made from, and read back next time
-  // (render/graph_field_cache.h); empty: always run the pass.
-  GraphField(const GraphBuffers& b, const GraphEvalPlan& plan, const Program* prune,
-             const std::string& prune_source = {});
+  // The one way a graph's field is made: from its prepared shape. `prune`,
+  // its pruning pass already compiled (the viewer keeps one across
+  // reloads); null: compiled here when the plan prunes. `disk_cache`: a
+  // pass that took long is kept on disk under a key of everything it was
+  // made from, and read back next time (render/graph_field_cache.h);
+  // false: always run the pass.
+  explicit GraphField(const GraphParts& parts, std::shared_ptr<const Program> prune = nullptr,
+                      bool disk_cache = false);
   ~GraphField();
   GraphField(const GraphField&) = delete;
   GraphField& operator=(const GraphField&) = delete;
@@ -35,6 +39,8 @@ class GraphField {
   // "grid 16x23x22, pruning 412.3 ms, mean list 23.4 instructions (of 1999), 3 cells kept their coarse list",
   // then why a cache entry that was there was not used, if one was not; "" without a grid.
   std::string summary() const;
+  // The pruning pass's program; null when the plan does not prune.
+  const std::shared_ptr<const Program>& prune() const { return prune_; }
 
  private:
   void run_pass(const Program& prune);
@@ -48,6 +54,7 @@ class GraphField {
   std::string cache_note_;  // "; the cache's entry ... not used ...", or empty
   GraphEvalPlan plan_;
   std::size_t program_ = 0;
+  std::shared_ptr<const Program> prune_;
 };
 
 }  // namespace ms

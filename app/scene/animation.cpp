@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "scene/graph_animation.h"
 #include "scene/schema.h"
 #include "scene/suggest.h"
 
@@ -80,7 +81,8 @@ Slot find_slot(const std::string& target, Scene& scene) {
   Slot s;
   if (target.size() > kMaxTarget || !std::regex_match(target, m, indexed)) {
     s.error = "unknown animation target " + quote(target);
-    s.hint = "expected camera.<key>, lights[<i>].<key>, materials[<i>].<key>, sky.<key> or render.exposure";
+    s.hint = "expected camera.<key>, lights[<i>].<key>, materials[<i>].<key>, sky.<key>, render.exposure or "
+             "graph.<node name>.<key>";
     return s;
   }
   const bool light = m[1] == "lights";
@@ -197,7 +199,16 @@ AnimationTrack read_animation_track(const Reader& r, const toml::table& t, const
   std::string target;
   if (!r.read(t, path, "target", target))
     r.fail(track.line, tkey, "missing required key " + quote(tkey), "e.g. target = \"camera.position\"");
-  const Slot slot = find_slot(target, scene);
+  Slot slot;
+  if (is_graph_target(target)) {  // a graph node's value (scene/graph_animation.h)
+    const GraphSlot g = find_graph_slot(target, scene);
+    slot.error = g.error;
+    slot.hint = g.hint;
+    slot.canonical = target;
+    track.graph_values = g.values;
+  } else {
+    slot = find_slot(target, scene);
+  }
   const int tline = Reader::line_of(t, "target");
   if (!slot.error.empty()) r.fail(tline, tkey, slot.error, slot.hint);
   for (std::size_t i = 0; i < scene.animation.size(); ++i)
@@ -205,7 +216,7 @@ AnimationTrack read_animation_track(const Reader& r, const toml::table& t, const
       r.fail(tline, tkey, quote(slot.canonical) + " is already animated by animation[" + std::to_string(i) + "]",
              "one [[animation]] table per value; put all its keys there");
   track.target = slot.canonical;
-  track.arity = slot.arity();
+  track.arity = track.graph_values.empty() ? slot.arity() : static_cast<int>(track.graph_values.size());
   r.read_enum(t, path, "interpolation", kInterpolations, track.interpolation);
   read_keys(r, t, path, slot, track);
   return track;
@@ -232,7 +243,9 @@ std::array<double, 3> evaluate(const AnimationTrack& tr, double time) {
 Scene animated(const Scene& scene, double time) {
   Scene out = scene;
   if (scene.animation.empty()) return out;
+  pose_graph_at(out, time);  // the graph rebuilt with its nodes' values at `time`
   for (const AnimationTrack& tr : scene.animation) {
+    if (!tr.graph_values.empty()) continue;
     const Slot slot = find_slot(tr.target, out);
     if (!slot.error.empty()) fail_input(slot.error, scene.file.string(), tr.line, "animation");
     const std::array<double, 3> v = evaluate(tr, time);

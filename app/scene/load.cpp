@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "scene/animation.h"
 #include "scene/load_geometry.h"
+#include "scene/graph_animation.h"
 #include "scene/graph_scene.h"
 #include "scene/load_post.h"
 #include "scene/overrides.h"
@@ -320,16 +321,23 @@ Scene read_scene(const Reader& r, const toml::table& root, const fs::path& displ
   read_planes(r, check, root, scene);
   read_bounds(r, check, root, scene.bounds);
   read_post(r, root, scene.bloom);  // scene/load_post.h
-  // After lights and materials: a track's target must name one that exists.
+  // After lights and materials: a track's target must name one that exists;
+  // a graph node's (scene/graph_animation.h) once the graph is read.
   const auto tracks = r.tables(root, {}, "animation");
-  for (std::size_t i = 0; i < tracks.size(); ++i) {
-    const std::string path = "animation[" + std::to_string(i) + "]";
-    schema.check(r, *tracks[i], "animation", path);
-    scene.animation.push_back(read_animation_track(r, *tracks[i], path, scene));
-  }
+  scene.animation.resize(tracks.size());
+  const auto read_tracks = [&](bool graph) {
+    for (std::size_t i = 0; i < tracks.size(); ++i) {
+      if (is_graph_target((*tracks[i])["target"].value_or(std::string())) != graph) continue;
+      const std::string path = "animation[" + std::to_string(i) + "]";
+      schema.check(r, *tracks[i], "animation", path);
+      scene.animation[i] = read_animation_track(r, *tracks[i], path, scene);
+    }
+  };
+  read_tracks(false);
 
   // Last, so a broken scene file is reported before a missing map file.
   resolve_sources(r, st, display_path, roots, scene);
+  read_tracks(true);
   return scene;
 }
 

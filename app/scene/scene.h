@@ -145,7 +145,12 @@ struct AnimationTrack {
   std::vector<double> times;   // seconds, strictly increasing, at least one
   std::vector<double> values;  // times.size() * arity; double so key values stay exact
   int line = 0;                // of the [[animation]] table, for errors at render time
+  // A graph node's value (target "graph.NAME.KEY"): the numbers it sets in
+  // Scene::graph_doc (scene/graph_animation.h); empty for every other target.
+  std::vector<int> graph_values;
 };
+
+struct GraphDoc;
 
 // At most this many [[lights]] and [[materials]] (scene/load.cpp refuses
 // more): the shaders' uniform arrays and the host's name tables are sized by them.
@@ -176,6 +181,9 @@ struct Scene {
   Sky sky;
   Bloom bloom;                     // [post.bloom]
   std::vector<AnimationTrack> animation;  // applied by animated(scene, time)
+  // The graph file's parsed JSON, read when a track animates a node: each
+  // frame's graph is built anew from it (scene/graph_animation.h).
+  std::shared_ptr<const GraphDoc> graph_doc;
   // How the scene was read, for -v: "--set camera.fov replaces ..." for
   // each [[animation]] track a --set dropped (scene/overrides.h).
   std::vector<std::string> notes;

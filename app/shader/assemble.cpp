@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 #include <system_error>
 
 #include "core/error.h"
@@ -82,7 +83,9 @@ std::string map_include_path(const Scene& scene, const std::vector<fs::path>& ro
 // The scene's map(): the map file's #include, or the graph's generated code.
 std::string map_code(const Scene& scene, const std::vector<fs::path>& roots, const AssembleOptions& opts) {
   if (scene.graph) {
-    const GraphParts parts = graph_parts(scene, opts);
+    // A programming error, not bad input: the pipeline prepares the shape first.
+    if (!opts.graph) throw std::logic_error("a graph scene assembled before prepare_graph_shape()");
+    const GraphParts& parts = *opts.graph;
     return parts.plan.interpret ? graph_map_interpreter(*scene.graph, parts.plan, parts.buffers)
                                 : graph_map_inline(*scene.graph);
   }
@@ -155,18 +158,8 @@ void define_tracer_geometry(std::string& root, const Scene& scene, bool uniforms
   }
 }
 
-}  // namespace
-
-GraphParts graph_parts(const Scene& scene, const AssembleOptions& opts) {
-  GraphParts parts;
-  if (!scene.graph) return parts;
-  const GraphBox box = scene.bounds.kind == BoundsKind::box ? GraphBox{scene.bounds.min, scene.bounds.max}
-                                                            : scene.graph->root_node().box;
-  parts.plan = plan_graph_eval(*scene.graph, opts.graph_eval, opts.prune, box, opts.cell_size);
-  if (parts.plan.interpret) parts.buffers = graph_buffers(*scene.graph);
-  return parts;
-}
-
+// The pruning pass's compute shader: the library functions the graph uses,
+// then its generated source.
 ShaderSource assemble_graph_prune(const Scene& scene, const GraphParts& parts, const AssembleOptions& opts) {
   std::string root = "#version 450 core\n#define MS_LIBRARY_SUBSET 1\n";
   std::set<std::string> used;
@@ -188,6 +181,29 @@ ShaderSource assemble_graph_prune(const Scene& scene, const GraphParts& parts, c
   root += "#include \"common.glsl\"\n#include \"primitives.glsl\"\n#include \"operators.glsl\"\n";
   root += graph_prune_source(*scene.graph, parts.plan, parts.buffers);
   return preprocess(root, "graph pruning pass (generated)", opts.shader_dir, library_options(opts));
+}
+
+}  // namespace
+
+AssembleStats& assemble_stats() {
+  static AssembleStats stats;
+  return stats;
+}
+
+GraphParts graph_parts(const Scene& scene, const AssembleOptions& opts) {
+  GraphParts parts;
+  if (!scene.graph) return parts;
+  ++assemble_stats().graph_parts;
+  const GraphBox box = scene.bounds.kind == BoundsKind::box ? GraphBox{scene.bounds.min, scene.bounds.max}
+                                                            : scene.graph->root_node().box;
+  parts.plan = plan_graph_eval(*scene.graph, opts.graph_eval, opts.prune, box, opts.cell_size);
+  if (parts.plan.interpret) parts.buffers = graph_buffers(*scene.graph);
+  if (parts.plan.pruned()) parts.prune_src = assemble_graph_prune(scene, parts, opts);
+  return parts;
+}
+
+void prepare_graph_shape(const Scene& scene, AssembleOptions& opts) {
+  opts.graph = scene.graph ? std::make_shared<const GraphParts>(graph_parts(scene, opts)) : nullptr;
 }
 
 std::vector<fs::path> include_roots(const fs::path& scene_file, const AssembleOptions& opts) {

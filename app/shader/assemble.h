@@ -2,7 +2,9 @@
 // contract (#defines from the Scene, then the sdf_shaders/ includes) and runs
 // it through preprocess(). No GL here.
 #pragma once
+#include <atomic>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +17,8 @@
 #include "shader/specialize.h"
 
 namespace ms {
+
+struct GraphParts;
 
 struct AssembleOptions {
   std::filesystem::path shader_dir;  // the sdf_shaders/ directory
@@ -48,17 +52,32 @@ struct AssembleOptions {
   // The mesh exporter's compute pass (sdf_shaders/field_sample.glsl) in
   // place of main.frag: the same defines, library and map(), no image.
   bool field_sampler = false;
+  // A graph scene's prepared shape (prepare_graph_shape()): every assemble_*
+  // of the scene reads its map() from it; none derives it again.
+  std::shared_ptr<const GraphParts> graph = nullptr;  // (an initializer, as above)
 };
 
-// How a graph scene's map() is evaluated, and the interpreter's buffers
-// (empty when inline). The grid covers the scene's [bounds] box.
+// A graph scene's prepared shape: how its map() is evaluated, the
+// interpreter's buffers (empty when inline) and the pruning pass's compute
+// shader (render/graph_field.h; empty unless pruned). The grid covers the
+// scene's [bounds] box.
 struct GraphParts {
   GraphEvalPlan plan;
   GraphBuffers buffers;
+  ShaderSource prune_src;
 };
+// Derives the shape from the scene's graph and opts' graph_eval, prune and
+// cell_size. Callers go through prepare_graph_shape(), once per graph.
 GraphParts graph_parts(const Scene& scene, const AssembleOptions& opts);
-// The pruning pass's compute shader (render/graph_field.h).
-ShaderSource assemble_graph_prune(const Scene& scene, const GraphParts& parts, const AssembleOptions& opts);
+// Sets opts.graph to the scene's shape (null without a graph).
+void prepare_graph_shape(const Scene& scene, AssembleOptions& opts);
+
+// How many shapes graph_parts() has derived in this process: what tests
+// count to prove a graph is prepared once per frame, not a timing.
+struct AssembleStats {
+  std::atomic<long> graph_parts{0};
+};
+AssembleStats& assemble_stats();
 
 // The directories includes of a scene whose file is `scene_file` may read:
 // its directory, opts.shader_dir and opts.allow_include.

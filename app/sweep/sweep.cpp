@@ -51,9 +51,10 @@ class RowRenderer {
   }
   // The timed frames are drawn as render draws them: in one pass at spp 1.
   bool fused() const { return s_.spp == 1; }
-  AssembleOptions opts_for(const SweepConfig& c, bool aovs, bool fused = false) const {
+  AssembleOptions opts_for(const SweepConfig& c, bool aovs, bool fused = false) {
     AssembleOptions o = opts_;
     o.cell_size = c.cell_size;
+    o.graph = shape_for(c);
     o.defines.insert(o.defines.end(), c.tunables.begin(), c.tunables.end());
     if (aovs)
       for (const auto& d : aov_defines()) o.defines.push_back(d);
@@ -75,21 +76,28 @@ class RowRenderer {
     return fp;
   }
 
+  // A graph scene's shape for the row's cell size: the one the command
+  // prepared, or one prepared the first time a row of another size asks.
+  std::shared_ptr<const GraphParts> shape_for(const SweepConfig& c) {
+    if (!scene_.graph) return nullptr;
+    if (c.cell_size == opts_.cell_size && opts_.graph) return opts_.graph;
+    Field& f = fields_[c.cell_size];
+    if (!f.shape) {
+      AssembleOptions o = opts_;
+      o.cell_size = c.cell_size;
+      prepare_graph_shape(scene_, o);
+      f.shape = o.graph;
+    }
+    return f.shape;
+  }
+
   // A graph scene's node buffers and pruned grid for the row's cell size,
   // built the first time a row asks, bound before each of its draws.
   void bind_field(const SweepConfig& c) {
     if (!scene_.graph) return;
+    const std::shared_ptr<const GraphParts> shape = shape_for(c);
     Field& f = fields_[c.cell_size];
-    if (!f.built) {
-      f.built = true;
-      const Scene sc = scene_for(c);
-      const AssembleOptions o = opts_for(c, false);
-      const GraphParts parts = graph_parts(sc, o);
-      if (!parts.plan.interpret) return;  // inline: nothing to bind
-      if (parts.plan.pruned())
-        f.prune = std::make_unique<Program>(Program::Compute{}, assemble_graph_prune(sc, parts, o));
-      f.field = std::make_unique<GraphField>(parts.buffers, parts.plan, f.prune.get());
-    }
+    if (!f.field && shape->plan.interpret) f.field = std::make_unique<GraphField>(*shape);
     if (f.field) f.field->bind();
   }
 
@@ -164,9 +172,8 @@ class RowRenderer {
   Program post_;
   GpuTimer timer_;
   struct Field {
-    bool built = false;
-    std::unique_ptr<Program> prune;
-    std::unique_ptr<GraphField> field;  // null for a graph written inline
+    std::shared_ptr<const GraphParts> shape;  // null for the command's own cell size
+    std::unique_ptr<GraphField> field;        // null for a graph written inline
   };
   std::map<float, Field> fields_;
 };

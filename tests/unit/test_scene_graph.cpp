@@ -296,6 +296,7 @@ TEST(GraphScene, BoundsAsUniformsKeepTheShaderAcrossAMove) {
       write_file(dir / "g.json", graph(x == 0 ? "3" : "4.5"));
       const ms::Scene scene = ms::load_scene(dir / "s.toml");
       opts.bounds_uniforms = u == 1;
+      ms::prepare_graph_shape(scene, opts);
       text[u][x] = ms::assemble_scene(scene, opts).text;
     }
   EXPECT_NE(text[0][0], text[0][1]) << "folded, the box is in the text";

@@ -96,9 +96,17 @@ size_t count(const std::string& text, const std::string& what) {
   return n;
 }
 
+// options() with a graph scene's shape prepared, as the pipeline prepares it.
+AssembleOptions options_for(const Scene& s, Specialization mode,
+                            std::vector<std::pair<std::string, std::string>> defines = {}) {
+  AssembleOptions o = options(mode, std::move(defines));
+  prepare_graph_shape(s, o);
+  return o;
+}
+
 std::string active(const fs::path& scene, Specialization mode) {
   const Scene s = load_scene(scene);
-  return preprocessed(assemble_scene(s, options(mode)).text, scene.stem().string());
+  return preprocessed(assemble_scene(s, options_for(s, mode)).text, scene.stem().string());
 }
 
 TEST(Specialize, GenericAddsNothing) {
@@ -266,7 +274,7 @@ TEST(SpecializeSource, EachSceneKeepsOnlyTheLibraryFunctionsItUses) {
   for (const fs::path& scene : all_scenes()) {
     const Scene s = load_scene(scene);
     std::set<std::string> want;
-    std::vector<std::string> todo = scene_features(s, options(Specialization::folded)).library;
+    std::vector<std::string> todo = scene_features(s, options_for(s, Specialization::folded)).library;
     while (!todo.empty()) {
       const std::string n = todo.back();
       todo.pop_back();
@@ -303,7 +311,7 @@ TEST(SpecializeSource, EveryVariantOfEverySceneCompiles) {
   for (const fs::path& scene : all_scenes()) {
     const Scene s = load_scene(scene);
     for (const auto& [mode, extra] : variants) {
-      const ShaderSource src = assemble_scene(s, options(mode, extra));
+      const ShaderSource src = assemble_scene(s, options_for(s, mode, extra));
       const test::GlslangResult r = test::run_glslang(src.text, "spec");
       EXPECT_EQ(r.status, 0) << scene << " " << specialization_name(mode) << " with " << extra.size()
                              << " extra defines:\n" << r.output.substr(0, 2000);
