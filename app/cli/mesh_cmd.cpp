@@ -12,6 +12,7 @@
 
 #include "cli/common_flags.h"
 #include "cli/flag_checks.h"
+#include "cli/frame_flags.h"
 #include "cli/input_flags.h"
 #include "core/clock.h"
 #include "core/error.h"
