@@ -17,7 +17,7 @@ load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 status=0
 env -u CCACHE_DIR -u CCACHE_BASEDIR CI=true bash .ci/run >ci.log 2>&1 || status=$?
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
-steps=$(grep -oE '^\[[0-9]+/[0-9]+\]' ci.log | head -1 | sed -E 's/.*\/([0-9]+)\]/\1/' || true)
+steps=$(grep -oE '^\[[0-9]+/[0-9]+\] (Building|Linking)' ci.log | head -1 | sed -E 's/^.[0-9]+.([0-9]+).*/\1/' || true)
 tests=$(grep -oE 'tests failed out of [0-9]+' ci.log | head -1 | grep -oE '[0-9]+$' || true)
 echo "Fresh clone of $commit on $(date -u +%F), $(nproc) cores, load average $load_before before and"
 echo "$load_after after; .ci/run exit $status; $steps build steps, $tests tests (log: $dir/ci.log)"
