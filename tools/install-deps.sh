@@ -31,6 +31,7 @@ TEST=(
   libtinygltf-dev                   # mesh/: .glb export (glTF 2.0 binary), read back by the unit tests
   python3-openvdb                   # tests read the .vdb back with pyopenvdb (skipped without)
   python3-numpy python3-skimage     # tools/: the mesh baseline script (marching cubes)
+  ccache                            # .ci/run compiles through it when present (a rerun in one workspace)
 )
 case "${1:-}" in
   "") PACKAGES=("${BUILD[@]}" "${TEST[@]}") ;;

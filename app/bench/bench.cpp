@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "bench/clock.h"
+#include "core/clock.h"
 #include "core/error.h"
 #include "pipeline/nonfinite.h"
 #include "render/frame.h"
@@ -17,7 +17,6 @@
 namespace ms {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 
 std::vector<double> channel(const Image& img, const std::string& name) {

@@ -10,6 +10,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "core/clock.h"
 #include "cli/job_list.h"
 #include "cli/render_cmd.h"
 #include "cli/sequence_cmd.h"
@@ -129,7 +130,7 @@ int run_batch(const RenderArgs& a) {
   Outputs outputs;
   int total = 0, failed = 0, worst = 0, meshes = 0;
   const auto render = [&](const BatchEntry& e) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Clock::time_point t0 = Clock::now();
     int code = 0;
     try {
       if (e.error) throw *e.error;
@@ -160,7 +161,7 @@ int run_batch(const RenderArgs& a) {
       ++failed;
       worst = std::max(worst, code);
     }
-    progress.rendered(total++, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    progress.rendered(total++, seconds_since(t0));
   };
   progress.start();
   for (const BatchEntry& e : inputs) render(e);

@@ -12,7 +12,9 @@
 
 #include "cli/common_flags.h"
 #include "cli/flag_checks.h"
+#include "cli/frame_flags.h"
 #include "cli/input_flags.h"
+#include "core/clock.h"
 #include "core/error.h"
 #include "core/format.h"
 #include "pipeline/mesh_job.h"
@@ -106,9 +108,9 @@ namespace {
 // ETA from the fraction done; elsewhere nothing (the summary line says it).
 MeshProgress progress_for(bool tty) {
   if (!tty) return {};
-  const auto start = std::chrono::steady_clock::now();
+  const Clock::time_point start = Clock::now();
   return [start](const char* stage, double fraction) {
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double t = seconds_since(start);
     const double eta = fraction > 0.02 ? t * (1.0 - fraction) / fraction : -1.0;
     std::fprintf(stderr, "\r\033[Kmesh: %-9s %3d%%  %s elapsed, ETA %s", stage, static_cast<int>(fraction * 100.0),
                  format_duration(t).c_str(), eta < 0 ? "-" : format_duration(eta).c_str());

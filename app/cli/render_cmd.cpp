@@ -9,6 +9,7 @@
 #include "cli/batch.h"
 #include "cli/common_flags.h"
 #include "cli/flag_checks.h"
+#include "cli/frame_flags.h"
 #include "cli/glslviewer_flags.h"
 #include "cli/input_flags.h"
 #include "cli/render_job.h"

@@ -20,6 +20,7 @@
 #include "cli/dispatch_flag.h"
 #include "cli/exit_codes.h"
 #include "cli/input_flags.h"
+#include "core/clock.h"
 #include "core/error.h"
 #include "core/utf8.h"
 #include "io/atomic_file.h"
@@ -139,7 +140,7 @@ class Terminal {
   explicit Terminal(bool json) : out_(json ? stderr : stdout), tty_(::isatty(2) != 0) {}
   void start(const SuiteCase& c, int index, int total) {
     if (!tty_) return;
-    const double eta = index > 0 ? elapsed() / index * (total - index) : -1;
+    const double eta = index > 0 ? elapsed_.seconds() / index * (total - index) : -1;
     std::fprintf(stderr, "\r[%d/%d] %s ... ETA %s\x1b[K", index + 1, total, c.name.c_str(),
                  format_duration(eta).c_str());
     std::fflush(stderr);
@@ -160,10 +161,9 @@ class Terminal {
   }
 
  private:
-  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
   std::FILE* out_;
   bool tty_;
-  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+  Stopwatch elapsed_;
 };
 
 int run(const TestArgs& a, ExitCodes codes) {

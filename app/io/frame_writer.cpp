@@ -1,15 +1,10 @@
 #include "io/frame_writer.h"
 
 #include <algorithm>
-#include <chrono>
+
+#include "core/clock.h"
 
 namespace ms {
-
-namespace {
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-}  // namespace
 
 FrameWriter::FrameWriter(std::size_t capacity, DoneFn done, WriteFn write, int threads)
     : capacity_(capacity < 1 ? 1 : capacity),
@@ -40,7 +35,7 @@ void FrameWriter::rethrow_locked() {
 }
 
 double FrameWriter::push(WriteJob job) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Clock::time_point t0 = Clock::now();
   std::unique_lock<std::mutex> lock(mutex_);
   changed_.wait(lock, [&] { return queue_.size() < capacity_ || error_; });
   rethrow_locked();
@@ -79,7 +74,7 @@ void FrameWriter::run() {
     lock.unlock();
     changed_.notify_all();  // a slot is free
 
-    const auto t0 = std::chrono::steady_clock::now();
+    const Clock::time_point t0 = Clock::now();
     std::exception_ptr err;
     try {
       write_(job);

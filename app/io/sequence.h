@@ -10,33 +10,29 @@
 
 namespace ms {
 
-// Frames first..last, both included, first >= 0.
+// The largest frame number: eight digits keep frame arithmetic far from
+// int overflow, and at 60 fps that is over two weeks of animation.
+inline constexpr int kMaxFrame = 99'999'999;
+
+// Frames first..last, both included, 0 <= first <= last <= kMaxFrame.
+// (--frames' text is cli/frame_flags.h's; a suite file's is suite/'s.)
 struct FrameRange {
   int first = 0;
   int last = 0;
   int count() const { return last - first + 1; }
 };
 
-// "A..B" (or "A" for one frame). Throws bad_input (key --frames) for
-// malformed text, negative numbers, B < A or numbers over 99,999,999.
-FrameRange parse_frame_range(const std::string& text);
-
-// One of `count` independent processes; `index` counts from 0.
+// One of `count` independent processes; `index` counts from 0 (--shard I/N).
 struct Shard {
   int index = 0;
   int count = 1;
 };
-
-// "I/N" with 0 <= I < N. Throws bad_input (key --shard).
-Shard parse_shard(const std::string& text);
 
 // stride: frames first+I, first+I+N, ... (every shard sees the whole time
 // range, so a partial run already shows the entire animation coarsely);
 // chunk: the I-th of N contiguous runs, sizes differing by at most one (a
 // shard's frames stay together, for tools that want one contiguous clip).
 enum class ShardMode { stride, chunk };
-
-ShardMode parse_shard_mode(const std::string& text);  // "stride" | "chunk"; bad_input (--shard-mode)
 
 // The frames shard `s` renders, ascending. Over all s.index in [0, s.count)
 // the lists partition the range: every frame exactly once. Empty when a

@@ -1,23 +1,15 @@
 #include "live/compile_worker.h"
 
-#include <chrono>
-
 #include "gl/gl.h"  // glad before GLFW
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "render/frame.h"
 #include "shader/assemble.h"
 
 namespace ms::live {
-namespace {
-
-double ms_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
-}
-
-}  // namespace
 
 CompileWorker::CompileWorker(GLFWwindow* share, const Context& ctx) : ctx_(ctx) {
   window_ = create_shared_hidden_window(share);
@@ -89,7 +81,7 @@ void CompileWorker::run() {
       CompileResult r;
       r.id = job.id;
       bool given_up = false;
-      const auto t0 = std::chrono::steady_clock::now();
+      const Clock::time_point t0 = Clock::now();
       try {
         for (const ShaderSource& s : job.sources) {
           if (newer_waiting()) {
@@ -104,7 +96,7 @@ void CompileWorker::run() {
       }
       if (!given_up && !r.error) build_field(job, r);
       r.gl_ms = ms_since(t0);
-      const auto t_warm = std::chrono::steady_clock::now();
+      const Clock::time_point t_warm = Clock::now();
       const std::shared_ptr<const Program> post =
           static_cast<int>(r.programs.size()) > job.passes ? r.programs[job.passes] : nullptr;
       if (!given_up && !r.error && post) {
@@ -185,7 +177,7 @@ void CompileWorker::bind_field(const CompileJob& job, const CompileResult& r) {
 }
 
 void CompileWorker::compile_compute(const CompileJob& job, const Program& post, CompileResult& r) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Clock::time_point t0 = Clock::now();
   try {
     r.compute = std::make_shared<const Program>(Program::Compute{}, *job.compute);
   } catch (const Error& e) {
@@ -193,7 +185,7 @@ void CompileWorker::compile_compute(const CompileJob& job, const Program& post, 
     return;
   }
   r.gl_ms += ms_since(t0);
-  const auto t_warm = std::chrono::steady_clock::now();
+  const Clock::time_point t_warm = Clock::now();
   // The viewer's first frame after a build: one sample, stored (fused) or
   // then the post pass. llvmpipe JITs the compute shader at this dispatch.
   if (!compute_renderer_) compute_renderer_ = std::make_unique<ComputeFrameRenderer>(ctx_);

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <optional>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "live/watcher.h"
 
@@ -79,7 +80,7 @@ int watch_and_render(const WatchRenderOptions& o) {
   Watcher watcher;
   std::vector<fs::path> files;
   for (int n = 1;; ++n) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch t0;
     std::optional<Error> failure;
     try {
       o.render();
@@ -87,7 +88,7 @@ int watch_and_render(const WatchRenderOptions& o) {
       failure = e;
     }
     const bool ok = !failure;
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double ms = t0.ms();
     bool files_ok = true;
     files = files_or(o, files, files_ok);
     if (failure) {

@@ -13,6 +13,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "core/format.h"
 #include "gl/context.h"
@@ -40,10 +41,6 @@
 
 namespace ms::live {
 namespace fs = std::filesystem;
-
-double seconds_now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 std::string fmt(const char* f, double v) { return printf_number(f, v); }
 
@@ -111,7 +108,7 @@ void Viewer::after_frame() {
     const ReloadResult& r = pending_.result;
     const std::string latency = " frames=" + std::to_string(frames_ - pending_.frame_at_event) +
                                 " iterations=" + std::to_string(iterations_ - pending_.iteration_at_event + 1) +
-                                " ms=" + fmt("%.1f", (seconds_now() - pending_.t_event) * 1e3) +
+                                " ms=" + fmt("%.1f", (clock_seconds() - pending_.t_event) * 1e3) +
                                 " compile_ms=" + fmt("%.1f", r.compile_ms) + " assemble_ms=" +
                                 fmt("%.1f", r.assemble_ms) + " gl_ms=" + fmt("%.1f", r.gl_ms) +
                                 " first_draw_ms=" + fmt("%.1f", pending_.first_draw_ms) +
@@ -261,16 +258,16 @@ int Viewer::run() {
   s_.debug_view = session_.debug_view = std::clamp(o_.debug_view, 0, kDebugViews - 1);
   session_.set_preset(o_.preset);
   session_.set_accumulate(s_.accumulate);  // the first build is already the one-pass frame where it can be
-  reload(true, seconds_now(), 0, 1, true);  // the initial build is number 0 (frame_0.png)
+  reload(true, clock_seconds(), 0, 1, true);  // the initial build is number 0 (frame_0.png)
   s_.shadertoy = session_.shadertoy();
   s_.start_time = o_.time.value_or(session_.scene().render.time);
   s_.time = s_.start_time;
 
-  const double t_start = seconds_now();
+  const double t_start = clock_seconds();
   double t_last = t_start, t_stats = t_start, t_swap = t_start;
   while (!glfwWindowShouldClose(window_)) {
     ++iterations_;
-    const double t0 = seconds_now();
+    const double t0 = clock_seconds();
     glfwPollEvents();
     s_.now = t0;
     poll_files();
@@ -296,7 +293,7 @@ int Viewer::run() {
 
     const bool window_shot = s_.want_window_shot || (!compiling_.active && settled_ + 1 == o_.shot_frame);
     s_.want_window_shot = false;
-    const double t_draw = seconds_now();
+    const double t_draw = clock_seconds();
     const bool settled = !compiling_.active;  // this frame counts for --drag and --shot-frame
     const bool scripted_drag = drag_.apply(session_.scene(), session_.params(), settled_);
     const bool drawn = drawer.draw(frames_, dt, [&] {
@@ -306,13 +303,13 @@ int Viewer::run() {
     });
     if (drawn && pending_.active) {  // where a reload's time goes: the first draw, JIT included
       glFinish();
-      pending_.first_draw_ms = (seconds_now() - t_draw) * 1e3;
+      pending_.first_draw_ms = (clock_seconds() - t_draw) * 1e3;
     }
     if (drawn && window_shot) drawer.window_shot(next_free_path(o_.shot_dir, o_.input.stem().string() + "_window"), log_);
     keyboard_frame_done(s_.keys);  // "pressed this frame" lasted its frame
-    const double t_cpu = seconds_now();
+    const double t_cpu = clock_seconds();
     glfwSwapBuffers(window_);
-    const double t1 = seconds_now();
+    const double t1 = clock_seconds();
     if (drawn) {
       ++frames_;
       s_.cpu_ms.add(t1, (t_cpu - t0) * 1e3);

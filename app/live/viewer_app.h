@@ -25,7 +25,6 @@ struct GLFWwindow;
 
 namespace ms::live {
 
-double seconds_now();                      // steady clock, seconds
 std::string fmt(const char* f, double v);  // printf of one number, for log lines
 
 // A reload in flight: seen at `t_event`, logged once its first frame is drawn.

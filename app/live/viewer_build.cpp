@@ -4,6 +4,7 @@
 
 #include "live/viewer_app.h"
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "render/compute_frame.h"
 
@@ -134,7 +135,7 @@ void Viewer::poll_files() {
   session_.set_accumulate(s_.accumulate);  // O, or accumulation turned off: the one-pass frame or not
   std::vector<fs::path> changed = watcher_.poll();
   if (!changed.empty()) {
-    const double t_event = seconds_now();
+    const double t_event = clock_seconds();
     watcher_.settle(changed, o_.debounce_ms, 100);
     bool from_disk = false;  // the TOML or its graph's JSON: read the scene again
     for (const fs::path& f : session_.scene_files())
@@ -142,7 +143,7 @@ void Viewer::poll_files() {
     reload(from_disk, t_event, frames_, iterations_);
   } else if (s_.want_disk_reload) {
     s_.want_disk_reload = false;
-    reload(true, seconds_now(), frames_, iterations_);
+    reload(true, clock_seconds(), frames_, iterations_);
   } else if (compiling_.active) {
     return;  // a toggle's rebuild waits for the reload in flight (it would be adopted over)
   } else if (s_.want_reassemble || s_.debug_view != session_.debug_view || session_.features_changed()) {
@@ -168,7 +169,7 @@ void Viewer::rebuild_values(std::vector<std::string> live) {
 
 // The same files with new defines or live values, compiled like a reload.
 void Viewer::start_rebuild(BuildKind kind) {
-  const double now = seconds_now();
+  const double now = clock_seconds();
   build(Compiling{true, kind, -1, now, frames_, iterations_, frames_, settled_, session_.prepare(false), {}},
         false);
 }

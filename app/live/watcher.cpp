@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstring>
 
+#include "core/clock.h"
 #include "core/error.h"
 
 namespace ms::live {
@@ -26,10 +27,7 @@ fs::path absolute_normal(const fs::path& p) {
   return (ec ? p : a).lexically_normal();
 }
 
-long long now_ms() {
-  using namespace std::chrono;
-  return duration_cast<milliseconds>(steady_clock::now().time_since_epoch()).count();
-}
+long long now_ms() { return static_cast<long long>(clock_seconds() * 1e3); }
 
 bool wait_readable(int fd, int timeout_ms) {
   pollfd p{fd, POLLIN, 0};

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <vector>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "io/cache_dir.h"
 #include "pipeline/dispatch_plan.h"
@@ -74,10 +75,10 @@ double median_frame_ms(SceneDrawer& drawer, PassGraph& graph, const Program& pos
   glFinish();
   std::vector<double> ms;
   for (int i = 0; i < kProbeFrames; ++i) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch t;
     drawer.draw(graph, post, f.in, f.params);
     glFinish();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    ms.push_back(t.ms());
   }
   std::sort(ms.begin(), ms.end());
   return ms[ms.size() / 2];

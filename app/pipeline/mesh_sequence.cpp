@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "core/hash.h"
 #include "core/version.h"
@@ -24,10 +25,6 @@ namespace ms {
 namespace fs = std::filesystem;
 
 namespace {
-
-double since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 // The files frame f is made of (mesh_files(): an OBJ's .mtl too), which a
 // complete frame needs every one of.
@@ -130,7 +127,7 @@ std::string mesh_job_fingerprint(const MeshJob& job) {
 }
 
 MeshSequenceReport mesh_sequence(const MeshSequenceJob& job, FrameSession& session, bool tty) {
-  const auto start = std::chrono::steady_clock::now();
+  const Clock::time_point start = Clock::now();
   const fs::path first = job.pattern.path(job.range.first);
   if (!mesh_format_for(first))
     fail_input("cannot tell the mesh format of '" + job.pattern.text() + "'", {}, 0, "-o",
@@ -150,9 +147,9 @@ MeshSequenceReport mesh_sequence(const MeshSequenceJob& job, FrameSession& sessi
   r.skipped = static_cast<int>(scan.skipped.size());
   progress.start();
   for (int f : scan.todo) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Clock::time_point t0 = Clock::now();
     const MeshReport m = mesh_frame(job, session, f, job_fp);
-    progress.rendered(f, since(t0));
+    progress.rendered(f, seconds_since(t0));
     ++r.meshed;
     for (const std::string& path : m.written) std::printf("%s\n", path.c_str());
     std::fflush(stdout);
@@ -161,7 +158,7 @@ MeshSequenceReport mesh_sequence(const MeshSequenceJob& job, FrameSession& sessi
       progress.line("warning: " + m.output + ": the mesh check found " + m.check.summary());
   }
   progress.finish();
-  r.seconds = since(start);
+  r.seconds = seconds_since(start);
   char summary[160];
   std::snprintf(summary, sizeof summary, "mesh sequence: %d of %d frames meshed, %d skipped, %.2f s", r.meshed,
                 job.range.count(), r.skipped, r.seconds);

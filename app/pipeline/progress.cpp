@@ -30,7 +30,7 @@ Progress::Progress(int total, bool tty, std::FILE* out, std::string unit, std::s
 
 void Progress::start() {
   std::lock_guard<std::mutex> lock(mutex_);
-  start_ = std::chrono::steady_clock::now();
+  start_ = Clock::now();
 }
 
 void Progress::skipped(int frame, const std::string& path) {
@@ -54,7 +54,7 @@ void Progress::rendered(int frame, double seconds) {
     return;
   }
   if (unit_ != "frames") return;
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double elapsed = seconds_since(start_);
   const double fps = elapsed > 0 ? done_ / elapsed : 0.0;
   std::fprintf(out_, "marchstudio: frame %d %s in %s (%d/%d, %.2f frames/s, ETA %s)\n", frame, verb_.c_str(),
                format_frame_time(seconds).c_str(), done_, total_, fps,
@@ -64,7 +64,7 @@ void Progress::rendered(int frame, double seconds) {
 
 void Progress::draw_locked(int frame) {
   constexpr int kWidth = 30;
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double elapsed = seconds_since(start_);
   const double fps = elapsed > 0 ? done_ / elapsed : 0.0;
   const int filled = total_ > 0 ? done_ * kWidth / total_ : kWidth;
   std::string bar(static_cast<std::size_t>(filled), '#');

@@ -4,10 +4,11 @@
 // event, which is also what tests read. Thread-safe: frames are reported
 // from the render loop and writes from the writer thread.
 #pragma once
-#include <chrono>
 #include <cstdio>
 #include <mutex>
 #include <string>
+
+#include "core/clock.h"
 
 namespace ms {
 
@@ -50,7 +51,7 @@ class Progress {
   std::mutex mutex_;
   int done_ = 0;
   bool bar_shown_ = false;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  Clock::time_point start_ = Clock::now();
 };
 
 }  // namespace ms

@@ -9,6 +9,7 @@
 #include <optional>
 #include <thread>
 
+#include "core/clock.h"
 #include "core/deadline.h"
 #include "core/error.h"
 #include "core/signal_scope.h"
@@ -61,10 +62,6 @@ class StopSignals {
 int writer_threads() {
   const unsigned cores = std::thread::hardware_concurrency();
   return std::clamp(static_cast<int>(cores / 4), 1, 4);
-}
-
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // Everything decided before the context: the prepared frame, what this
@@ -272,7 +269,7 @@ LoopTimes draw_frames(const SequenceJob& job, SequencePlan& plan, Progress& prog
   const StatefulPlan& sp = plan.sp;
   fs::path previous_state = sp.resume_from >= 0 ? checkpoint_path(job.pattern.path(sp.resume_from), sp.key) : fs::path{};
   progress.start();
-  const auto loop_start = std::chrono::steady_clock::now();
+  const Clock::time_point loop_start = Clock::now();
   loading.check("loading and compiling");
   const NonfiniteGuard guard_base{fj.input.string(), fj.strict, {}, "it is not written"};
   for (int f : todo) {
@@ -290,14 +287,14 @@ LoopTimes draw_frames(const SequenceJob& job, SequencePlan& plan, Progress& prog
         throw;
       }
     }
-    const auto t0 = std::chrono::steady_clock::now();
+    const Clock::time_point t0 = Clock::now();
     long long nonfinite = 0;  // the NaN/Inf guard (pipeline/nonfinite.h)
     Image img = draw_frame(job, plan, session, f, posed, watchdog, writer, nonfinite);
     if (nonfinite > 0 && fj.strict) writer.finish();  // the frames before it are good: written, so a rerun resumes after them
     NonfiniteGuard guard = guard_base;
     guard.where = "frame " + std::to_string(f);
     guard_nonfinite(guard, nonfinite, static_cast<long long>(fp.width) * fp.height);
-    const double took = since(t0);
+    const double took = seconds_since(t0);
     t.render += took;
     progress.rendered(f, took);
     if (job.no_write) continue;
@@ -314,7 +311,7 @@ LoopTimes draw_frames(const SequenceJob& job, SequencePlan& plan, Progress& prog
   }
   if (watchdog) watchdog->disarm();
   writer.finish();
-  t.loop = since(loop_start);
+  t.loop = seconds_since(loop_start);
   t.writer_busy = writer.busy_seconds();
   return t;
 }

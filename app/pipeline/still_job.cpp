@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <optional>
 
+#include "core/clock.h"
 #include "core/deadline.h"
 #include "core/error.h"
 #include "io/direct_codec.h"
@@ -29,17 +30,6 @@ namespace ms {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Seconds since the last lap, for --verbose phase timings.
-struct Stopwatch {
-  std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last).count();
-    last = now;
-    return s;
-  }
-};
 
 // The time, frame rate and frame number a still draws at. The frame a
 // sequence at this fps draws at `time`, as Shadertoy at 1 s has drawn 60:

@@ -4,6 +4,7 @@
 
 #include <chrono>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/image_stream.h"
@@ -62,7 +63,7 @@ void render_tiled_file(const TiledFile& job, FrameSession& session, const StillF
     Progress& p;
     ~EndBar() { p.finish(); }
   } end_bar{progress};
-  auto last = std::chrono::steady_clock::now();
+  Stopwatch tile;
   long long nonfinite = 0;
   render_still_tiled(
       [&](const StillFrame& piece) { return session.draw(piece); }, session.graph(), still, tiling,
@@ -73,9 +74,7 @@ void render_tiled_file(const TiledFile& job, FrameSession& session, const StillF
         out.write_rows(band.top, s.color);
       },
       [&](int done, int) {
-        const auto now = std::chrono::steady_clock::now();
-        progress.rendered(done, std::chrono::duration<double>(now - last).count());
-        last = now;
+        progress.rendered(done, tile.lap());
       });
   progress.finish();
   if (job.watchdog) job.watchdog->disarm();  // the rename must not be cut short

@@ -8,6 +8,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "render/audio_texture.h"
 #include "render/cubemap.h"
@@ -264,7 +265,7 @@ ShadertoyInputs shadertoy_inputs(const FrameInputs& in, float res[4][3], const s
 // timed between two of these is that pass alone, on any driver.
 double finished_ms() {
   glFinish();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  return clock_seconds() * 1e3;
 }
 
 void unbind_samplers() {

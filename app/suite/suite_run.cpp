@@ -8,7 +8,7 @@
 #include <memory>
 #include <optional>
 
-#include "bench/clock.h"
+#include "core/clock.h"
 #include "bench/stats.h"
 #include "core/format.h"
 #include "suite/suite_gl.h"
@@ -67,7 +67,6 @@ StillFrame still_of(const PreparedCase& pc, const Scene& posed, const FrameSpec&
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 // Median frame time of `frames` draws after `warmup`, on `cpu` or wall time.
 double time_frames(FramePrograms& job, const StillFrame& sf, int warmup, int frames, bool cpu, std::vector<double>& all) {
@@ -279,12 +278,12 @@ SuiteResult run_suite(const Suite& suite, const std::vector<PreparedCase>& cases
           r = error_result(*pc.spec, {Exit::system, {}, 0, {}, "out of memory", {}, {}});
         }
       }
-      r.seconds = std::chrono::duration<double>(Clock::now() - c0).count();
+      r.seconds = seconds_since(c0);
       out.cases[i] = std::move(r);
       if (opts.on_done) opts.on_done(out.cases[i], ++done, total);
     }
   }
-  out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  out.seconds = seconds_since(t0);
   return out;
 }
 

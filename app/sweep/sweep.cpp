@@ -9,7 +9,7 @@
 #include <memory>
 #include <utility>
 
-#include "bench/clock.h"
+#include "core/clock.h"
 #include "io/compare.h"
 #include "sweep/sweep_exact.h"
 #include "core/error.h"

@@ -51,13 +51,12 @@ TEST(BoundsCheck, WhatAPlaneHidesDoesNotCount) {
 // The viewer checks after every reload: growing the ball past the bounds on
 // disk logs the warning, shrinking it back logs "bounds ok".
 TEST(BoundsCheck, TheViewerWarnsAfterAReload) {
-  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+  if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
   TempDir dir;
   write_file(dir / "ball.toml", read_file(data("ball.toml")));
   write_file(dir / "ball.glsl", read_file(data("ball.glsl")));
-  const std::string server = std::to_string(100 + getpid() % 20000);
   const fs::path log = dir / "log.txt";
-  BackgroundProcess proc({"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+  BackgroundProcess proc({"env", x_display(), MARCH_BIN, "view",
                           (dir / "ball.toml").string(), "--size", "64x36", "--paused", "--no-panel", "--log",
                           log.string(), "--exit-after", "40"},
                          dir / "out.txt", dir / "err.txt");
@@ -78,7 +77,7 @@ int amber_pixels(const fs::path& dir, const std::string& glsl) {
   write_file(dir / "ball.toml", read_file(data("ball.toml")));
   write_file(dir / "ball.glsl", read_file(data(glsl)));
   const fs::path shots = dir / ("shots_" + glsl);
-  BackgroundProcess proc({"xvfb-run", "-a", "-n", std::to_string(200 + getpid() % 20000), "-s", "-screen 0 640x480x24",
+  BackgroundProcess proc({"env", x_display(),
                           MARCH_BIN, "view", (dir / "ball.toml").string(), "--size", "640x360", "--paused", "--no-panel",
                           "--shot-frame", "8", "--shot-dir", shots.string(), "--max-frames", "10", "--exit-after", "60"},
                          dir / "out.txt", dir / "err.txt");
@@ -97,7 +96,7 @@ int amber_pixels(const fs::path& dir, const std::string& glsl) {
 }
 
 TEST(BoundsCheck, TheViewerShowsItOnScreen) {
-  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+  if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
   TempDir dir;
   EXPECT_GT(amber_pixels(dir.path(), "ball_big.glsl"), 3000) << "no warning box on screen";
   EXPECT_EQ(amber_pixels(dir.path(), "ball.glsl"), 0) << "a warning box where the bounds hold";

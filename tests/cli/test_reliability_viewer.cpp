@@ -31,16 +31,15 @@ std::string map_glsl(const std::string& mat, const std::string& radius = "1.0", 
 class ViewerAttack : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
     toml = kBallScene;
     write_file(dir / "seed.toml", toml);
     write_file(dir / "seed.glsl", map_glsl("MAT_FLOOR"));
   }
 
   void start() {
-    const std::string server = std::to_string(100 + (getpid() + 7919) % 20000);
     proc = std::make_unique<BackgroundProcess>(
-        std::vector<std::string>{"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+        std::vector<std::string>{"env", x_display(), MARCH_BIN, "view",
                                  (dir / "seed.toml").string(), "--size", "160x90", "--paused", "--no-panel", "--log",
                                  log().string(), "--capture-dir", (dir / "cap").string(), "--exit-after", "90"},
         dir / "out.txt", dir / "err.txt");

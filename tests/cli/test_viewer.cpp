@@ -35,7 +35,7 @@ constexpr int kMaxLatencyFrames = 3;
 class Viewer : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
     // map = "seed.glsl", next to it. Without [bounds]: the tests grow the
     // ball, which a tight bounding volume would clip.
     write_file(dir / "seed.toml", toml);
@@ -43,10 +43,7 @@ class Viewer : public ::testing::Test {
   }
 
   void start(std::vector<std::string> extra = {}) {
-    // -a from a per-process start number: parallel ctest runs do not race
-    // for the same display.
-    const std::string server = std::to_string(100 + getpid() % 20000);
-    std::vector<std::string> argv = {"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+    std::vector<std::string> argv = {"env", x_display(), MARCH_BIN, "view",
                                      (dir / "seed.toml").string(), "--size", "160x90", "--paused", "--no-panel",
                                      "--log", log().string(), "--capture-dir", (dir / "cap").string(),
                                      "--exit-after", "55"};

@@ -19,12 +19,11 @@ namespace fs = std::filesystem;
 class AsyncReload : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
     write_file(dir / "seed.toml", kBallScene);
     write_file(dir / "seed.glsl", ball_map("1.0"));
-    const std::string server = std::to_string(100 + (getpid() + 4111) % 20000);
     proc = std::make_unique<BackgroundProcess>(
-        std::vector<std::string>{"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+        std::vector<std::string>{"env", x_display(), MARCH_BIN, "view",
                                  (dir / "seed.toml").string(), "--size", "160x90", "--paused", "--no-panel", "--log",
                                  log().string(), "--capture-dir", (dir / "cap").string(), "--exit-after", "120"},
         dir / "out.txt", dir / "err.txt");
@@ -104,13 +103,12 @@ TEST_F(AsyncReload, ABrokenShaderKeepsTheLastGoodFrame) {
 // compiles, and the shot after the drag is render of the final value.
 // --drag and --shot-frame count settled frames, so this is deterministic.
 TEST(AsyncRebuild, ADraggedValueCompilesOnTheWorker) {
-  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+  if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
   TempDir dir;
   write_file(dir / "seed.toml", kBallScene);
   write_file(dir / "seed.glsl", ball_map("1.0", 20));
   const fs::path log = dir / "log.txt";
-  const std::string server = std::to_string(100 + (getpid() + 5123) % 20000);
-  BackgroundProcess proc({"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+  BackgroundProcess proc({"env", x_display(), MARCH_BIN, "view",
                           (dir / "seed.toml").string(), "--size", "160x90", "--paused", "--no-panel", "--log",
                           log.string(), "--shot-dir", (dir / "shots").string(), "--shot-frame", "20", "--drag",
                           "materials[1].color=0.1,0.3,0.9@3..8", "--exit-after", "150"},

@@ -47,8 +47,7 @@ std::string run_view(const TempDir& dir, const std::string& radius, int frames) 
   write_file(dir / "still.toml", kScene);
   write_file(dir / "still.glsl", map_glsl(radius));
   const fs::path log = dir / "log.txt";
-  const std::vector<std::string> argv = {"xvfb-run", "-a", "-n", std::to_string(500 + getpid() % 20000), "-s",
-                                         "-screen 0 640x480x24", MARCH_BIN, "view", (dir / "still.toml").string(),
+  const std::vector<std::string> argv = {"env", x_display(), MARCH_BIN, "view", (dir / "still.toml").string(),
                                          "--size", "160x90", "--no-panel", "--accumulate", "8", "--log",
                                          log.string(), "--capture-dir", (dir / "cap").string(), "--max-frames",
                                          std::to_string(frames), "--exit-after", "90"};
@@ -59,7 +58,7 @@ std::string run_view(const TempDir& dir, const std::string& radius, int frames) 
 }
 
 TEST(ViewerConverge, AStillSceneConvergesWhileTimeRuns) {
-  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+  if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
   TempDir dir;
   const std::string log = run_view(dir, "1.0", 40);
   EXPECT_NE(log.find("\nconverged 8\n"), std::string::npos) << "time ran and the still scene never converged\n" << log;
@@ -69,7 +68,7 @@ TEST(ViewerConverge, AStillSceneConvergesWhileTimeRuns) {
 // The same scene with a radius that follows uTime: every frame is another
 // image, so it never gets past one sample (the test can tell them apart).
 TEST(ViewerConverge, AMapThatReadsTimeStartsAgainEveryFrame) {
-  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+  if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
   TempDir dir;
   const std::string log = run_view(dir, "(0.8 + 0.2 * sin(uTime * 3.0))", 40);
   EXPECT_NE(log.find("reload ok 0 "), std::string::npos) << log;

@@ -27,16 +27,15 @@ std::string heavy_map() { return ball_map("1.3", kHeavyLines); }
 class DispatchViewer : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
     write_file(dir / "seed.toml", kBallScene);
     write_file(dir / "seed.glsl", kBallMap);
     write_file(dir / "d.glsl", kDerivative);
   }
   // The viewer on `input` (a file in dir), its cache (auto's choice) in dir.
   void start(const std::string& input, std::vector<std::string> extra) {
-    const std::string server = std::to_string(100 + (getpid() + 9173) % 20000);
-    std::vector<std::string> argv = {"env", "XDG_CACHE_HOME=" + (dir / "cache").string(), "xvfb-run", "-a", "-n",
-                                     server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view", (dir / input).string(),
+    std::vector<std::string> argv = {"env", "XDG_CACHE_HOME=" + (dir / "cache").string(), x_display(), MARCH_BIN,
+                                     "view", (dir / input).string(),
                                      "--size", "160x90", "--paused", "--time", "0", "--no-panel", "--log",
                                      log().string(), "--capture-dir", (dir / "cap").string(), "--exit-after", "90"};
     argv.insert(argv.end(), extra.begin(), extra.end());
@@ -122,8 +121,7 @@ TEST_F(DispatchViewer, ABufferGraphsImagePassReadsTheBufferWithCompute) {
   for (int i = 0; i < 2; ++i) {
     const std::string d = i == 0 ? "fragment" : "compute";
     const fs::path l = dir / (d + ".log");
-    const std::string server = std::to_string(100 + (getpid() + 5171 + i) % 20000);
-    BackgroundProcess p({"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+    BackgroundProcess p({"env", x_display(), MARCH_BIN, "view",
                          (dir / "s.toml").string(), "--size", "32x24", "--no-panel", "--log", l.string(),
                          "--shot-dir", (dir / d).string(), "--shot-frame", "40", "--max-frames", "45",
                          "--dispatch", d},

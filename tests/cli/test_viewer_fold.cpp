@@ -21,13 +21,12 @@ const std::string kScene = std::string(kBallScene) + "specular = 0.6\n";
 class FoldedViewer : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
     write_file(dir / "seed.toml", kScene);
     write_file(dir / "seed.glsl", kBallMap);
   }
   void start(std::vector<std::string> extra) {
-    const std::string server = std::to_string(100 + (getpid() + 7321) % 20000);
-    std::vector<std::string> argv = {"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+    std::vector<std::string> argv = {"env", x_display(), MARCH_BIN, "view",
                                      (dir / "seed.toml").string(), "--size", "160x90", "--paused", "--no-panel",
                                      "--log", log().string(), "--capture-dir", (dir / "cap").string(),
                                      "--shot-dir", (dir / "shots").string(), "--exit-after", "90"};

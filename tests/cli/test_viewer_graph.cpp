@@ -19,14 +19,13 @@ class ViewerGraph : public ::testing::Test {
  protected:
   // The viewer on a copy of tests/data/graph/<name>.toml and .json.
   void start(const std::string& name, const std::vector<std::string>& flags) {
-    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
     name_ = name;
     const fs::path data = fs::path(MARCH_TEST_DATA) / "graph";
     write_file(dir / (name + ".toml"), read_file(data / (name + ".toml")));
     json_ = read_file(data / (name + ".json"));
     write_file(dir / (name + ".json"), json_);
-    const std::string server = std::to_string(100 + (getpid() + 7331) % 20000);
-    std::vector<std::string> argv = {"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+    std::vector<std::string> argv = {"env", x_display(), MARCH_BIN, "view",
                                      (dir / (name + ".toml")).string(), "--size", "160x90", "--paused", "--no-panel",
                                      "--log", log().string(), "--capture-dir", (dir / "cap").string(),
                                      "--exit-after", "200"};

@@ -45,7 +45,7 @@ const char* kVideoJson =
 Image view_at(const fs::path& dir, const std::string& time, const std::string& tag, const std::string& json = "v.json",
               const std::string& size = "8x6") {
   const fs::path cap = dir / ("cap_" + tag), log = dir / ("log_" + tag + ".txt");
-  BackgroundProcess p({"xvfb-run", "-a", "-n", std::to_string(400 + getpid() % 20000), "-s", "-screen 0 640x480x24",
+  BackgroundProcess p({"env", x_display(),
                        MARCH_BIN, "view", (dir / json).string(), "--size", size, "--paused", "--no-panel", "--time",
                        time, "--log", log.string(), "--capture-dir", cap.string(), "--max-frames", "3",
                        "--exit-after", "60"},
@@ -55,7 +55,7 @@ Image view_at(const fs::path& dir, const std::string& time, const std::string& t
 }
 
 TEST(ViewerMedia, AVideoShowsTheFrameOfTheViewersTime) {
-  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH";
+  if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH";
   if (find_on_path("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not on PATH";
   TempDir dir;
   make_clip(dir.path());
@@ -80,7 +80,7 @@ const char* kMusicJson =
     "\"outputs\": []}]}}";
 
 TEST(ViewerMedia, MusicIsRendersAnalyserAtTheViewersTime) {
-  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH";
+  if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH";
   if (find_on_path("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not on PATH";
   TempDir dir;
   const std::string cmd = "cd '" + dir.path().string() +
@@ -102,7 +102,7 @@ TEST(ViewerMedia, MusicIsRendersAnalyserAtTheViewersTime) {
 // the clip as time runs; with none, or a device that is not there, it says
 // why it is silent and goes on rendering.
 TEST(ViewerMedia, MusicPlaysWhereADeviceOpensAndIsSilentWhereNot) {
-  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH";
+  if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH";
   if (find_on_path("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not on PATH";
   TempDir dir;
   const std::string cmd = "cd '" + dir.path().string() +
@@ -112,7 +112,7 @@ TEST(ViewerMedia, MusicPlaysWhereADeviceOpensAndIsSilentWhereNot) {
   write_file(dir / "m.json", kMusicJson);
   auto run_with = [&](const std::string& device) {
     const fs::path log = dir / ("log_" + device + ".txt");
-    BackgroundProcess p({"xvfb-run", "-a", "-n", std::to_string(500 + getpid() % 20000), "-s", "-screen 0 640x480x24",
+    BackgroundProcess p({"env", x_display(),
                          MARCH_BIN, "view", (dir / "m.json").string(), "--size", "64x8", "--no-panel",
                          "--audio-device", device, "--log", log.string(), "--exit-after", "1.5"},
                         dir / "out.txt", dir / "err.txt");

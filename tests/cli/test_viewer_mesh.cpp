@@ -75,15 +75,14 @@ std::vector<std::string> nonempty_lines(const std::string& text) {
 class ViewerMesh : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH (Debian: apt install xvfb)";
+    if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH (Debian: apt install xvfb)";
     write_file(dir / "ball.toml", kRadiusScene);
     write_file(dir / "ball.glsl", kRadiusMap);
     fs::create_directories(dir / "cwd");
   }
   // The viewer on `scene` until it quits by itself; its exit code.
   int view(const fs::path& scene, std::vector<std::string> extra) {
-    const std::string server = std::to_string(100 + (getpid() + 9157) % 20000);
-    std::vector<std::string> argv = {"xvfb-run", "-a", "-n", server, "-s", "-screen 0 640x480x24", MARCH_BIN, "view",
+    std::vector<std::string> argv = {"env", x_display(), MARCH_BIN, "view",
                                      scene.string(), "--size", "160x90", "--paused", "--no-panel",
                                      "--log", log().string(), "--mesh-resolution", "32"};
     argv.insert(argv.end(), extra.begin(), extra.end());

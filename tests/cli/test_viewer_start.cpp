@@ -34,8 +34,7 @@ double panel_cover(const fs::path& dir, const std::string& size) {
   std::vector<Image> shots;
   for (const bool panel : {true, false}) {
     const fs::path shots_dir = dir / (size + (panel ? "_panel" : "_none"));
-    std::vector<std::string> argv = {"xvfb-run", "-a", "-n", std::to_string(300 + getpid() % 20000), "-s",
-                                     "-screen 0 1280x800x24", MARCH_BIN, "view",
+    std::vector<std::string> argv = {"env", x_display(), MARCH_BIN, "view",
                                      (source_dir() / "scenes/seed.toml").string(), "--size", size, "--paused",
                                      "--shot-frame", "3", "--shot-dir", shots_dir.string(), "--max-frames", "5",
                                      "--exit-after", "60"};
@@ -58,7 +57,7 @@ double panel_cover(const fs::path& dir, const std::string& size) {
 }
 
 TEST(ViewerPanel, CollapsesInASmallWindowAndOpensInALargeOne) {
-  if (!on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not on PATH";
+  if (!on_path("Xvfb")) GTEST_SKIP() << "Xvfb is not on PATH";
   TempDir dir;
   const double small = panel_cover(dir.path(), "640x360");
   EXPECT_GE(small, 0.0) << "no window shots";

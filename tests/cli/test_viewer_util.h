@@ -1,8 +1,10 @@
-// Helpers for the viewer's integration tests: a background process in its
-// own process group (xvfb-run, Xvfb and marchstudio die together), polling
-// a log file for a line, and image statistics.
+// Helpers for the viewer's integration tests: the X server they share, a
+// background process in its own process group (killed as one), polling a
+// log file for a line, and image statistics.
 #pragma once
+#include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -25,6 +27,63 @@ namespace ms::test {
 
 inline bool on_path(const std::string& exe) {
   return std::system(("command -v " + exe + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+// One Xvfb per test process, started on first use and stopped at exit. It
+// picks a free display itself and writes its number to a pipe
+// (-displayfd), so two runs at once never race for a number; the viewer runs
+// under `env DISPLAY=:N`, so a test sees the product's own exit code, not
+// a wrapper's. The screen fits the largest window a test opens.
+class XServer {
+ public:
+  static const XServer& shared() {
+    static const XServer server;
+    return server;
+  }
+  const std::string& display() const { return display_; }  // ":N"; empty when Xvfb did not start
+  ~XServer() {
+    if (pid_ <= 0) return;
+    kill(pid_, SIGTERM);
+    waitpid(pid_, nullptr, 0);
+  }
+  XServer(const XServer&) = delete;
+  XServer& operator=(const XServer&) = delete;
+
+ private:
+  XServer() {
+    int fds[2];
+    if (pipe(fds) != 0) return;
+    pid_ = fork();
+    if (pid_ == 0) {
+      prctl(PR_SET_PDEATHSIG, SIGTERM);  // a test killed by its timeout leaves no server behind
+      setpgid(0, 0);                     // out of reach of a viewer's group kill
+      close(fds[0]);
+      if (!freopen("/dev/null", "r", stdin) || !freopen("/dev/null", "w", stdout) ||
+          !freopen("/dev/null", "w", stderr))
+        _exit(126);
+      const std::string fd = std::to_string(fds[1]);
+      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x800x24", "-nolisten", "tcp",
+             static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(fds[1]);
+    // The number and a newline arrive once the server accepts clients; EOF
+    // first means it exited.
+    std::string number;
+    char c = 0;
+    while (pid_ > 0 && read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+    close(fds[0]);
+    if (!number.empty()) display_ = ":" + number;
+  }
+  pid_t pid_ = -1;
+  std::string display_;
+};
+
+// `env`'s argument that puts a viewer on the shared X server.
+inline std::string x_display() {
+  const std::string& d = XServer::shared().display();
+  if (d.empty()) ADD_FAILURE() << "Xvfb did not start (Debian: apt install xvfb)";
+  return "DISPLAY=" + d;
 }
 
 class BackgroundProcess {

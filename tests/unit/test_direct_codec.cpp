@@ -14,6 +14,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "files.h"
 #include "io/direct_codec.h"
 #include "io/image_backend.h"
 #include "io/image_io.h"
@@ -24,12 +25,8 @@ namespace fs = std::filesystem;
 
 class DirectCodec : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir = fs::temp_directory_path() / ("march_direct_" + std::to_string(getpid()));
-    fs::create_directories(dir);
-  }
-  void TearDown() override { fs::remove_all(dir); }
-  fs::path dir;
+  test::TempDir tmp;
+  const fs::path dir = tmp.path();
 };
 
 // Every value that rounds differently on either side of a level, the ends,

@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "files.h"
 #include "io/image_io.h"
 #include "render/environment.h"
 
@@ -57,8 +58,8 @@ TEST(Environment, UpperHalfSpaceFollowsTheCosineLobe) {
 // and decoded again (the same image object), a changed one is.
 TEST(Environment, AnUnchangedMapIsNotReadAgain) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("ms_env_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  const test::TempDir tmp;
+  const fs::path dir = tmp.path();
   setenv("XDG_CACHE_HOME", (dir / "cache").c_str(), 1);  // the irradiance cache, not the user's
   const fs::path file = dir / "sky.exr";
   write_image(map_of(16, 8, [](glm::vec3) { return 1.0f; }), file);
@@ -77,7 +78,6 @@ TEST(Environment, AnUnchangedMapIsNotReadAgain) {
   EXPECT_NEAR(c.inputs[0].image->pixels[0], 2.0f, 1e-6f);
   EXPECT_NEAR(eval_irradiance(scene.sky.irradiance, glm::vec3(0, 1, 0)).x, 2.0f, 0.05f);  // the new map lights (the old: 1)
   unsetenv("XDG_CACHE_HOME");
-  fs::remove_all(dir);
 }
 
 }  // namespace

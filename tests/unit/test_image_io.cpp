@@ -141,7 +141,8 @@ TEST(InputFile, NonRegularFilesAreNamedForWhatTheyAre) {
   EXPECT_EQ(input_file_problem("/no/such/file"), "not found");
   EXPECT_EQ(input_file_problem("/tmp"), "is a directory, not a regular file");
   EXPECT_EQ(input_file_problem("/dev/zero"), "is a device, not a regular file");
-  const fs::path fifo = fs::temp_directory_path() / ("marchfifo" + std::to_string(::getpid()));
+  const test::TempDir dir;
+  const fs::path fifo = dir / "fifo";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   EXPECT_EQ(input_file_problem(fifo), "is a FIFO (named pipe), not a regular file");
   try {
@@ -150,7 +151,6 @@ TEST(InputFile, NonRegularFilesAreNamedForWhatTheyAre) {
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()), fifo.string() + ": scene.map: scene file is a FIFO (named pipe), not a regular file");
   }
-  fs::remove(fifo);
   EXPECT_THROW(read_input_file("/dev/zero", "image"), Error);
 }
 

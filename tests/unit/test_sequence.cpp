@@ -1,7 +1,7 @@
-// Image sequences: frame ranges and patterns parse or fail clearly, shards
-// partition the range exactly, resume tells complete frames from broken
-// ones, stale temporaries go, and the writer queue is bounded and reports
-// its errors.
+// Image sequences: frame ranges (cli/frame_flags.h) and patterns parse or
+// fail clearly, shards partition the range exactly, resume tells complete
+// frames from broken ones, stale temporaries go, and the writer queue is
+// bounded and reports its errors.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "cli/frame_flags.h"
 #include "core/error.h"
 #include "io/frame_writer.h"
 #include "io/image_io.h"

@@ -144,10 +144,10 @@ TEST(ShaderAssemble, FullscreenVertexShaderCompiles) {
   const std::string v = fullscreen_vertex_source();
   EXPECT_NE(v.find("gl_VertexID"), std::string::npos);
   if (!test::have_glslang()) GTEST_SKIP() << "glslangValidator not on PATH";
-  const fs::path f = fs::temp_directory_path() / ("march_shader_test_" + std::to_string(::getpid()) + ".vert");
+  const test::TempDir dir;
+  const fs::path f = dir / "fullscreen.vert";
   { std::ofstream(f) << v; }
   const int rc = std::system(("glslangValidator '" + f.string() + "' >/dev/null 2>&1").c_str());
-  fs::remove(f);
   EXPECT_EQ(rc, 0);
 }
 

@@ -4,12 +4,11 @@
 // cannot join the next line, and a driver's unknown name gets a did-you-mean.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
 #include "core/error.h"
+#include "files.h"
 #include "preprocess/glsl_scan.h"
 #include "preprocess/log_map.h"
 #include "importers/project_json.h"
@@ -73,10 +72,8 @@ TEST(WholeNumbers, ABufferIdPastIntNamesNoBuffer) {
 }
 
 struct Dir {
-  fs::path path = fs::temp_directory_path() / ("ms_shader_text_" + std::to_string(::getpid()) + "_" +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  Dir() { fs::create_directories(path); }
-  ~Dir() { fs::remove_all(path); }
+  test::TempDir tmp;
+  const fs::path path = tmp.path();
   ShaderProject load(const std::string& text) const {
     std::ofstream(path / "main.glsl", std::ios::binary) << text;
     return load_vscode(text, path / "main.glsl", {path});

@@ -1,8 +1,6 @@
 // Helpers shared by the test_shader_*.cpp files: test data paths, a #line
 // interpreter, and running glslangValidator when it is installed.
 #pragma once
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,18 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "files.h"  // TempDir, read_file
+
 namespace ms::test {
 
 inline std::filesystem::path shader_data(const std::string& rel = {}) {
   std::filesystem::path p = std::filesystem::path(MARCH_TEST_DATA) / "shader";
   return rel.empty() ? p : p / rel;
-}
-
-inline std::string read_file(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 inline std::vector<std::string> lines_of(const std::string& text) {
@@ -66,8 +59,8 @@ struct GlslangResult { int status = -1; std::string output; };
 
 // Compiles `text` as a fragment shader with glslangValidator.
 inline GlslangResult run_glslang(const std::string& text, const std::string& tag) {
-  std::filesystem::path f = std::filesystem::temp_directory_path() /
-                            ("march_shader_test_" + std::to_string(::getpid()) + "_" + tag + ".frag");
+  const TempDir dir;
+  const std::filesystem::path f = dir / (tag + ".frag");
   { std::ofstream(f, std::ios::binary) << text; }
   GlslangResult r;
   std::string cmd = "glslangValidator -S frag '" + f.string() + "' 2>&1";
@@ -77,7 +70,6 @@ inline GlslangResult run_glslang(const std::string& text, const std::string& tag
     while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.output.append(buf, n);
     r.status = ::pclose(p);
   }
-  std::filesystem::remove(f);
   return r;
 }
 

@@ -50,7 +50,8 @@ bool has_line(const std::string& text, const std::string& line) {
 // The source as the compiler sees it after its preprocessor: only the
 // active #if branches, macros expanded.
 std::string preprocessed(const std::string& text, const std::string& tag) {
-  const fs::path f = fs::temp_directory_path() / ("march_spec_" + std::to_string(::getpid()) + "_" + tag + ".frag");
+  const test::TempDir dir;
+  const fs::path f = dir / (tag + ".frag");
   { std::ofstream(f, std::ios::binary) << text; }
   std::string out;
   if (FILE* p = ::popen(("glslangValidator -E -S frag '" + f.string() + "' 2>/dev/null").c_str(), "r")) {
@@ -59,7 +60,6 @@ std::string preprocessed(const std::string& text, const std::string& tag) {
     while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
     ::pclose(p);
   }
-  fs::remove(f);
   return out;
 }
 

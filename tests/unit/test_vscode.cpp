@@ -3,11 +3,10 @@
 // keyboard, #iUniform, and refusals at their line. Files in a temp dir; no GL.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <fstream>
 
 #include "core/error.h"
+#include "files.h"
 #include "shader/scene_params.h"
 #include "importers/vscode.h"
 
@@ -16,10 +15,8 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Dir {
-  fs::path path = fs::temp_directory_path() / ("ms_vscode_" + std::to_string(::getpid()) + "_" +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  Dir() { fs::create_directories(path); }
-  ~Dir() { fs::remove_all(path); }
+  test::TempDir tmp;
+  const fs::path path = tmp.path();
   fs::path put(const std::string& name, const std::string& text) const {
     const fs::path p = path / name;
     fs::create_directories(p.parent_path());

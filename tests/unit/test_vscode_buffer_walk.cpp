@@ -3,11 +3,10 @@
 // the fifth, unread, so 20,000 such files cost five reads, not 20,000.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <fstream>
 
 #include "core/error.h"
+#include "files.h"
 #include "importers/vscode.h"
 
 namespace ms {
@@ -15,8 +14,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(VsCodeBufferWalk, AChainStopsAtTheFifthBufferBeforeReadingIt) {
-  const fs::path dir = fs::temp_directory_path() / ("ms_vscode_walk_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const test::TempDir tmp;
+  const fs::path dir = tmp.path();
   const std::string image = "void mainImage(out vec4 c, in vec2 f) { c = vec4(1.0); }\n";
   const auto name = [](int i) { return "b" + std::to_string(i) + ".glsl"; };
   // main -> b1 -> b2 -> ... -> b29; b5 is a directory (unreadable as a
@@ -40,7 +39,6 @@ TEST(VsCodeBufferWalk, AChainStopsAtTheFifthBufferBeforeReadingIt) {
     EXPECT_EQ(e.info().line, 1);
     EXPECT_EQ(e.info().key, "#iChannel0");
   }
-  fs::remove_all(dir);
   EXPECT_NE(what.find("b5.glsl' would be a 5th buffer: marchstudio runs at most 4"), std::string::npos) << what;
   EXPECT_EQ(what.find("b10"), std::string::npos) << what;
   EXPECT_EQ(what.find("directory"), std::string::npos) << what;
