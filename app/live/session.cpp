@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "pipeline/input.h"
 #include "scene/quality.h"
@@ -44,7 +45,7 @@ bool Session::reads_keyboard() const {
 Session::PreparedReload Session::prepare(bool from_disk) {
   PreparedReload p;
   ReloadResult& r = p.result;
-  p.t0 = std::chrono::steady_clock::now();
+  p.t0 = Clock::now();
   try {
     if (from_disk || !disk_ok_) {
       Scene fresh;
@@ -94,7 +95,7 @@ Session::PreparedReload Session::prepare(bool from_disk) {
   } catch (const Error& e) {
     fail(e, r);
   }
-  r.assemble_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.t0).count();
+  r.assemble_ms = ms_since(p.t0);
   return p;
 }
 
@@ -118,7 +119,7 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
                             std::exception_ptr error, double gl_ms) {
   ReloadResult r = p.result;
   if (!r.ok) {
-    r.compile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.t0).count();
+    r.compile_ms = ms_since(p.t0);
     return r;
   }
   r.ok = false;
@@ -126,7 +127,7 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
     if (error) std::rethrow_exception(error);
     for (size_t i = 0; i < compiled.size() && i < p.compiling.size(); ++i)
       cache_.put(fullscreen_vertex_source(), p.compiling[i], compiled[i]);
-    const auto t_gl = std::chrono::steady_clock::now();
+    const auto t_gl = Clock::now();
     const long misses = cache_.misses();
     auto graph = std::make_shared<PassGraph>(p.passes, &cache_);
     auto post = cache_.get(fullscreen_vertex_source(), p.post_src);
@@ -136,7 +137,7 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
                                                  cache_.get(fullscreen_vertex_source(), p.bloom_src[1]));
     r.compiled += static_cast<int>(compiled.size() + (cache_.misses() - misses));
     std::shared_ptr<GraphField> field = adopt_field(p, r);
-    r.gl_ms = gl_ms + std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_gl).count();
+    r.gl_ms = gl_ms + ms_since(t_gl);
     std::vector<std::string> warnings = std::move(p.warnings);
     for (const std::string& u : graph->unbound_sampled()) warnings.push_back(u + " is sampled but nothing is bound to it");
     if (graph_) graph->adopt_buffers(*graph_);  // buffers evolve on across a reload of a pass
@@ -170,7 +171,7 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
   } catch (const Error& e) {
     fail(e, r);
   }
-  r.compile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.t0).count();
+  r.compile_ms = ms_since(p.t0);
   return r;
 }
 

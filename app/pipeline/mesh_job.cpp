@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "core/clock.h"
 #include "core/deadline.h"
 #include "core/error.h"
 #include "core/format.h"
@@ -34,10 +35,6 @@ namespace ms {
 namespace fs = std::filesystem;
 
 namespace {
-
-double since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 // The box the export covers and the cut that closes every surface there:
 // --bounds, else the scene's [bounds] (a sphere cuts as a sphere).
@@ -117,7 +114,7 @@ LevelSetBand band_of(const SparseField& f, const Scene& scene, int band) {
 // The sparse field meshed, checked and measured, into r.
 TriMesh mesh_of(FieldSampler& sampler, const SparseField& sparse, const Scene& scene, const MeshJob& job,
                 const MeshProgress& progress, MeshReport& r) {
-  const auto m = std::chrono::steady_clock::now();
+  const auto m = Clock::now();
   DualContour dc = dual_contour(sampler, sparse, progress);
   if (dc.mesh.positions.empty() && sparse.nonfinite > 0)
     fail_input("no surface inside the box: map() is NaN or Inf at " + std::to_string(sparse.nonfinite) + " of " +
@@ -129,11 +126,11 @@ TriMesh mesh_of(FieldSampler& sampler, const SparseField& sparse, const Scene& s
   const std::size_t crossings = untangle(dc, sparse.grid);
   vertex_normals(sampler, dc);
   r.accuracy = measure_accuracy(sampler, dc, sparse.grid.voxel);
-  r.mesh_s = since(m);
+  r.mesh_s = seconds_since(m);
   if (progress) progress("checking", 0.8);
-  const auto c = std::chrono::steady_clock::now();
+  const auto c = Clock::now();
   r.check = check_mesh(dc.mesh, sparse.grid.voxel, &crossings);
-  r.check_s = since(c);
+  r.check_s = seconds_since(c);
   r.vertices = dc.mesh.positions.size();
   r.triangles = dc.mesh.triangles();
   r.surface_cells = dc.cells;
@@ -191,7 +188,7 @@ std::vector<fs::path> mesh_files(const fs::path& file) {
 }
 
 MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgress& progress) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   // From here on the export has job.frame.timeout seconds: checked between
   // stages, and a watchdog ends the process if a dispatch never returns.
   const std::string what = job.frame.label.empty() ? "the mesh export" : job.frame.label;
@@ -227,7 +224,7 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
     field->bind();
     if (job.frame.verbose && !field->summary().empty()) std::fprintf(stderr, "  %s\n", field->summary().c_str());
   }
-  r.setup_s = since(start);
+  r.setup_s = seconds_since(start);
   // Every uniform a frame at this time would set (a map() may read the
   // materials or lights, not only uTime); uFrame as a still's at 24 fps.
   set_scene_uniforms(prog, animated(scene, time), 1, 1, time, static_cast<int>(std::lround(time * kSceneFps)));
@@ -243,7 +240,7 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   NonfiniteGuard guard{job.frame.input.string(), job.frame.strict, {}, "nothing written", "samples of map()"};
   if (job.frame.label.rfind("frame ", 0) == 0) guard.where = job.frame.label;
   guard_nonfinite(guard, static_cast<long long>(sparse.nonfinite), static_cast<long long>(sparse.samples));
-  r.sample_s = since(start);
+  r.sample_s = seconds_since(start);
   std::optional<LevelSetBand> band;
   std::optional<TriMesh> mesh;
   if (r.format == MeshFormat::vdb) {
@@ -256,10 +253,10 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   step("writing", 0.9);
   // The write is atomic, and not cut short by the watchdog: no temporary is left.
   if (watchdog) watchdog->disarm();
-  const auto w = std::chrono::steady_clock::now();
+  const auto w = Clock::now();
   write_files(job, scene, band, mesh, r);
-  r.write_s = since(w);
-  r.seconds = since(start);
+  r.write_s = seconds_since(w);
+  r.seconds = seconds_since(start);
   return r;
 }
 

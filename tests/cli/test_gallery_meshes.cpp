@@ -1,5 +1,5 @@
 // The gallery's scenes of modifiers and profiles (scenes/flange,
-// profiles, lattice) mesh watertight at --resolution 256: the mesher's own
+// profiles, lattice, assembly) mesh watertight at --resolution 256: the mesher's own
 // check says so, and read back, every edge of the file is shared by
 // exactly two triangles, each way round once. (The lattice takes about 30 s.)
 #include <gtest/gtest.h>
@@ -48,7 +48,7 @@ TEST_P(GalleryMesh, IsWatertightAt256) {
   EXPECT_EQ(doubled, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(, GalleryMesh, ::testing::Values("flange", "profiles", "lattice"),
+INSTANTIATE_TEST_SUITE_P(, GalleryMesh, ::testing::Values("flange", "profiles", "lattice", "assembly"),
                          [](const ::testing::TestParamInfo<const char*>& i) { return std::string(i.param); });
 
 }  // namespace
