@@ -11,6 +11,7 @@
 #include "dispatch.h"
 #include "image_diff.h"
 #include "io/image_io.h"
+#include "graph_scene.h"
 #include "run.h"
 #include "scene/graph_unary.h"
 
@@ -84,25 +85,7 @@ std::string modifier(std::mt19937& rng, std::string_view m, int depth) {
   return with(R"("r": )" + num(u(rng, 0.01f, 0.05f)), child);  // round, dilate, opRound, erode
 }
 
-const char* kScene = R"([scene]
-graph = "g.json"
-[camera]
-position = [1.6, 1.4, -2.6]
-target = [0.0, 0.0, 0.0]
-fov = 45.0
-[[planes]]
-normal = [0.0, 1.0, 0.0]
-offset = 1.2
-material = "a"
-[[lights]]
-type = "point"
-position = [2.0, 3.0, -1.0]
-intensity = 2.0
-size = 0.3
-[[materials]]
-name = "a"
-color = [0.8, 0.3, 0.2]
-)";
+const std::string kScene = graph_test_scene("[1.6, 1.4, -2.6]", "[0.0, 0.0, 0.0]", 45.0, 1.2);
 
 Image render(const std::filesystem::path& dir, const std::string& name, std::vector<std::string> extra) {
   std::vector<std::string> args = {"render", (dir / "s.toml").string(), "--size", "48x27", "--aov", "steps",

@@ -10,6 +10,7 @@
 #include "dispatch.h"
 #include "image_diff.h"
 #include "io/image_io.h"
+#include "graph_scene.h"
 #include "run.h"
 #include "scene/graph_vocab.h"
 
@@ -82,29 +83,7 @@ std::string random_node(std::mt19937& rng, int depth, int& op_index) {
   return "{\"op\": \"" + std::string(op.name) + "\"" + op_params(op, rng) + transform(rng) + ", \"children\": [" + kids + "]}";
 }
 
-const char* kScene = R"([scene]
-graph = "g.json"
-[camera]
-position = [1.6, 1.4, -2.6]
-target = [0.0, 0.2, 0.0]
-fov = 45.0
-[[planes]]
-normal = [0.0, 1.0, 0.0]
-offset = 1.2
-material = "a"
-[[lights]]
-type = "point"
-position = [2.0, 3.0, -1.0]
-intensity = 2.0
-size = 0.3
-[[materials]]
-name = "a"
-color = [0.8, 0.3, 0.2]
-[[materials]]
-name = "b"
-color = [0.2, 0.5, 0.8]
-reflectivity = 0.2
-)";
+const std::string kScene = graph_test_scene("[1.6, 1.4, -2.6]", "[0.0, 0.2, 0.0]", 45.0, 1.2);
 
 struct Rendered {
   Image img;

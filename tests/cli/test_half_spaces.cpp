@@ -12,6 +12,7 @@
 #include "dispatch.h"
 #include "image_diff.h"
 #include "io/image_io.h"
+#include "graph_scene.h"
 #include "run.h"
 
 namespace ms::test {
@@ -38,29 +39,7 @@ const char* kGraph = R"({"root": {"op": "opIntersection", "children": [
   {"sdf": "sdSlab", "x": [-1.4, null]}]}}
 )";
 
-const char* kScene = R"([scene]
-graph = "g.json"
-[camera]
-position = [1.8, 1.6, -2.8]
-target = [0.0, 0.0, 0.3]
-fov = 50.0
-[[planes]]
-normal = [0.0, 1.0, 0.0]
-offset = 0.6
-material = "a"
-[[lights]]
-type = "point"
-position = [2.0, 3.0, -1.0]
-intensity = 2.0
-size = 0.3
-[[materials]]
-name = "a"
-color = [0.8, 0.3, 0.2]
-[[materials]]
-name = "b"
-color = [0.2, 0.5, 0.8]
-reflectivity = 0.2
-)";
+const std::string kScene = graph_test_scene("[1.8, 1.6, -2.8]", "[0.0, 0.0, 0.3]", 50.0, 0.6);
 
 class HalfSpaces : public BothDispatches {
  protected:
