@@ -65,6 +65,7 @@ class Builder : GraphReader {
         continue;
       }
       const int done = f.unary == -1 ? f.acc : modifier(f, f.acc);
+      if (f.unary != -1) --open_modifiers_;
       stack.pop_back();
       deliver(done, stack);
     }
@@ -119,8 +120,13 @@ class Builder : GraphReader {
         fail(op, quote(un.name) + " cannot be used on a 2D profile", "use it on the extruded or revolved solid");
       if (children == -1 || doc_.at(children).kind != JsonKind::array || doc_.at(children).count != 1)
         fail(children == -1 ? v : children, quote(un.name) + " takes one child: 'children' must be an array of one node");
+      if (open_modifiers_ >= kMaxModifierDepth)
+        fail(op, "modifiers nest " + std::to_string(kMaxModifierDepth + 1) + " deep here, past the " +
+                     std::to_string(kMaxModifierDepth) + " the evaluators take",
+             "each is a frame of the interpreter and a function of the inline map()");
       const int child_dims = un.child_dims == 2 ? 2 : dims;
       stack.push_back({v, u, xf, mat, read_params(v, un.params), doc_.at(children).first, -1, u, child_dims});
+      ++open_modifiers_;
       ++g_.operators;
       return;
     }
@@ -337,6 +343,7 @@ class Builder : GraphReader {
   SceneGraph g_;
   std::vector<int> value_;  // per node of g_, its JSON value (an operator's: the fold's)
   int result_ = -1;
+  int open_modifiers_ = 0;  // modifiers on the stack: how deep they nest here
 };
 
 glm::mat3 axis_angle(glm::vec3 axis, float degrees) {

@@ -136,19 +136,28 @@ std::string repeat(N c, float* p, GraphNode& out) {
   if (c.core.empty() || !full(c).finite()) return "its child must be bounded";
   out.core = c.core;
   out.slack = c.slack;
+  // The copies a point may look at: along each axis those whose box can
+  // hold the nearest surface (modifiers.glsl), at most every copy there is.
+  double looked = 1.0;
   for (int i = 0; i < 3; ++i) {
     const float s = p[i], n = p[3 + i];
     if (n >= 0.0f && n != std::floor(n)) return "'count' must be whole numbers (copies either side), or -1 for no end";
     if (s == 0.0f) continue;
+    const double reach = (double(c.core.max[i]) - c.core.min[i] + 2.0 * c.slack) / s + 2.0;
+    looked *= n < 0.0f ? reach : std::min(reach, 2.0 * n + 1.0);
     if (n < 0.0f) out.core.min[i] = -kInf, out.core.max[i] = kInf;
     else out.core.min[i] -= n * s, out.core.max[i] += n * s;
   }
+  if (looked > kMaxCopies)
+    return "a point would look at up to " + std::to_string(static_cast<long long>(looked)) + " copies (at most " +
+           std::to_string(kMaxCopies) + "): the spacing is small against the child's size";
   copy_floor(c, p + 6);
   return {};
 }
 
 std::string polar(N c, float* p, GraphNode& out) {
   if (!(p[0] >= 1.0f && p[0] == std::floor(p[0]))) return "'count' must be a whole number of copies, 1 or more";
+  if (p[0] > kMaxCopies) return "'count' must be at most " + std::to_string(kMaxCopies) + ": a point looks at every copy";
   const glm::vec3 ax{p[2], p[3], p[4]};
   // Copies go out along the part of +x across the axis (+y for an x axis).
   glm::vec3 across = glm::vec3(1, 0, 0) - ax * ax.x;

@@ -45,4 +45,10 @@ int find_unary(std::string_view name);  // or -1
 // value so far (msCopyFloor).
 inline constexpr int kCopyFloorFloats = 7;
 
+// The most copies a repetition's point may look at (each is a loop
+// iteration of the child), and the deepest nesting of modifiers (each a
+// frame of the interpreter's stack, a GLSL function inline).
+inline constexpr int kMaxCopies = 1024;
+inline constexpr int kMaxModifierDepth = 64;
+
 }  // namespace ms

@@ -85,6 +85,28 @@ TEST(GraphModifiers, MistakesAreOneLineAtTheirPointer) {
             std::string::npos);
 }
 
+// What would make a shader loop or nest without end is refused at the node.
+TEST(GraphModifiers, HostileRepetitionsAndNestingAreRefused) {
+  EXPECT_NE(graph_error(wrap(R"({"op": "repeat", "spacing": [0.001, 0.001, 0.001], "count": [1000, 1000, 1000], "children": [)" +
+                             sphere(1) + "]}"))
+                .find("copies (at most 1024)"),
+            std::string::npos);
+  EXPECT_NE(graph_error(wrap(R"({"op": "polar", "count": 1e9, "radius": 1, "children": [)" + sphere(0.1f) + "]}"))
+                .find("at most 1024"),
+            std::string::npos);
+  std::string deep = sphere(0.5f);
+  for (int i = 0; i < kMaxModifierDepth + 1; ++i) deep = R"({"op": "round", "r": 0.001, "children": [)" + deep + "]}";
+  const std::string e = graph_error(wrap(deep));
+  EXPECT_NE(e.find("modifiers nest 65 deep"), std::string::npos) << e;
+  EXPECT_NE(e.find("/root"), std::string::npos) << e;
+  // At the limit it builds, and a wide repetition of small copies is fine.
+  deep = sphere(0.5f);
+  for (int i = 0; i < kMaxModifierDepth; ++i) deep = R"({"op": "round", "r": 0.001, "children": [)" + deep + "]}";
+  EXPECT_NO_THROW(graph_of(wrap(deep)));
+  EXPECT_NO_THROW(graph_of(wrap(R"({"op": "repeat", "spacing": [1, 1, 1], "count": [100, 100, 100], "children": [)" +
+                                sphere(0.2f) + "]}")));
+}
+
 TEST(GraphModifiers, TheLibrarysOneFieldOperatorsAreAccepted) {
   for (const char* op : {"opRound\", \"r", "opOnion\", \"t", "dilate\", \"r", "erode\", \"r", "onion\", \"t"})
     EXPECT_NO_THROW(graph_of(wrap(std::string(R"({"op": ")") + op + R"(": 0.1, "children": [)" + sphere(1) + "]}")))
