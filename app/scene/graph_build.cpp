@@ -174,6 +174,10 @@ class Builder : GraphReader {
     if (!why.empty()) fail(f.value, quote(un.name) + ": " + why);
     if (n.core.empty()) fail(f.value, quote(un.name) + " leaves nothing: its child is empty");
     n.lipschitz *= c.lipschitz;
+    // Past this a march would crawl: every step divided by the bound.
+    if (!(n.lipschitz <= 1e6f))
+      fail(f.value, quote(un.name) + " has a Lipschitz bound of " + format_number(n.lipschitz) + ", past the 1e+06 a march can use",
+           "a smaller rate, or a smaller child");
     n.param = static_cast<int>(g_.params.size());
     g_.params.insert(g_.params.end(), params.begin(), params.end());
     n.material = c.material;

@@ -99,6 +99,8 @@ TEST(GraphModifiers, HostileRepetitionsAndNestingAreRefused) {
   const std::string e = graph_error(wrap(deep));
   EXPECT_NE(e.find("modifiers nest 65 deep"), std::string::npos) << e;
   EXPECT_NE(e.find("/root"), std::string::npos) << e;
+  EXPECT_NE(graph_error(wrap(R"({"op": "twist", "k": 1e20, "children": [)" + sphere(1) + "]}")).find("Lipschitz bound"),
+            std::string::npos);
   // At the limit it builds, and a wide repetition of small copies is fine.
   deep = sphere(0.5f);
   for (int i = 0; i < kMaxModifierDepth; ++i) deep = R"({"op": "round", "r": 0.001, "children": [)" + deep + "]}";
