@@ -64,7 +64,7 @@ INSTANTIATE_BOTH_DISPATCHES(GraphRender);
 TEST(GraphInfo, PrintsTheCountsTheBoxAndTheBound) {
   const RunResult r = run_marchstudio({"info", (kData / "part.toml").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("graph: 3 primitives, 2 operators (2 binary), box ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("graph: 3 primitives, 2 operators (2 binary, 0 modifiers), box ("), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Lipschitz bound 1.41421"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("(the graph's box)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("lipschitz: 1.41421 (the graph's bound)"), std::string::npos) << r.out;
