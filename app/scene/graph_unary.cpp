@@ -78,31 +78,31 @@ bool radial(const GraphBox& b, glm::vec3 axis, float& r, float& t0, float& t1) {
   return true;
 }
 
+// A warp about an axis (twist, bend): its box is the cylinder of radius r
+// its child lies in, from t0 to t1 along the axis, its bound l; the
+// derived r, l and box go at `at`.
+void cylinder_warp(glm::vec3 axis, float r, float t0, float t1, float l, float* at, GraphNode& out) {
+  out.core = cylinder_box(axis, r, t0, t1);
+  out.slack = 0.0f;
+  out.lipschitz = l;
+  at[0] = r, at[1] = l;
+  put(at + 2, out.core.min);
+  put(at + 5, out.core.max);
+}
+
 std::string twist(N c, float* p, GraphNode& out) {
   const glm::vec3 ax{p[1], p[2], p[3]};
   float r, t0, t1;
   if (!radial(full(c), ax, r, t0, t1)) return "its child's box must be bounded across the twist's axis";
   const float a = std::fabs(p[0]) * r;
-  const float l = 0.5f * (a + std::sqrt(a * a + 4.0f));
-  out.core = cylinder_box(ax, r, t0, t1);
-  out.slack = 0.0f;
-  out.lipschitz = l;
-  p[4] = r, p[5] = l;
-  put(p + 6, out.core.min);
-  put(p + 9, out.core.max);
+  cylinder_warp(ax, r, t0, t1, 0.5f * (a + std::sqrt(a * a + 4.0f)), p + 4, out);
   return {};
 }
 
 std::string bend(N c, float* p, GraphNode& out) {
   float r, t0, t1;
   if (!radial(full(c), {0, 0, 1}, r, t0, t1)) return "its child's box must be bounded in x and y";
-  const float l = 1.0f + std::fabs(p[0]) * r;
-  out.core = cylinder_box({0, 0, 1}, r, t0, t1);
-  out.slack = 0.0f;
-  out.lipschitz = l;
-  p[1] = r, p[2] = l;
-  put(p + 3, out.core.min);
-  put(p + 6, out.core.max);
+  cylinder_warp({0, 0, 1}, r, t0, t1, 1.0f + std::fabs(p[0]) * r, p + 1, out);
   return {};
 }
 
