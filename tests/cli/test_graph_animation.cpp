@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,6 +13,7 @@
 
 #include "image_diff.h"
 #include "io/image_io.h"
+#include "mesh_read.h"
 #include "run.h"
 
 namespace ms::test {
@@ -82,19 +82,6 @@ TEST(GraphAnimation, FramesAfterTheFirstCompileNoProgram) {
         << r.err;
 }
 
-std::vector<glm::vec3> obj_vertices(const fs::path& file) {
-  std::istringstream in(read_file(file));
-  std::vector<glm::vec3> v;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("v ", 0) != 0) continue;
-    glm::vec3 x;
-    std::istringstream(line.substr(2)) >> x.x >> x.y >> x.z;
-    v.push_back(x);
-  }
-  return v;
-}
-
 TEST(GraphAnimation, MeshFramesFollowTheNode) {
   const TempDir dir;
   write_scenes(dir, "0");
@@ -103,7 +90,7 @@ TEST(GraphAnimation, MeshFramesFollowTheNode) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   float min_x[3];
   for (int f = 0; f < 3; ++f) {
-    const std::vector<glm::vec3> v = obj_vertices(dir / ("m_" + std::to_string(f) + ".obj"));
+    const std::vector<glm::vec3> v = read_obj(dir / ("m_" + std::to_string(f) + ".obj")).positions;
     ASSERT_FALSE(v.empty());
     min_x[f] = std::min_element(v.begin(), v.end(), [](auto a, auto b) { return a.x < b.x; })->x;
   }

@@ -10,10 +10,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "mesh_read.h"
 #include "run.h"
 
 namespace ms::test {
@@ -28,19 +28,6 @@ void write_scene(const TempDir& dir, const std::string& base) {
   write_file(dir / "grow.toml",
              "[scene]\nname = \"grow\"\nmap = \"grow.glsl\"\n\n[bounds]\nmin = [-1.0, -1.0, -1.0]\nmax = [1.0, 1.0, "
              "1.0]\n\n[[materials]]\nname = \"part\"\ncolor = [0.7, 0.7, 0.75]\n");
-}
-
-std::vector<glm::vec3> obj_vertices(const fs::path& file) {
-  std::istringstream in(read_file(file));
-  std::vector<glm::vec3> v;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("v ", 0) != 0) continue;
-    glm::vec3 x;
-    std::istringstream(line.substr(2)) >> x.x >> x.y >> x.z;
-    v.push_back(x);
-  }
-  return v;
 }
 
 RunResult mesh_frames(const TempDir& dir, std::vector<std::string> extra = {}) {
@@ -65,7 +52,7 @@ TEST(MeshFrames, OneMeshPerFrameAtItsTime) {
   EXPECT_EQ(count_of(r.out, ".obj\n"), 3) << r.out;
   std::vector<std::size_t> counts;
   for (int f = 0; f < 3; ++f) {
-    const std::vector<glm::vec3> v = obj_vertices(dir / ("f_0" + std::to_string(f) + ".obj"));
+    const std::vector<glm::vec3> v = read_obj(dir / ("f_0" + std::to_string(f) + ".obj")).positions;
     ASSERT_FALSE(v.empty()) << "frame " << f;
     counts.push_back(v.size());
     // Frame f is at time f (--fps 1): its radius is 0.4 + 0.2 f, within a voxel (2 / 16).
@@ -106,7 +93,7 @@ TEST(MeshFrames, ARerunResumesAndRedoesOnlyWhatIsNotComplete) {
   EXPECT_EQ(count_of(r.err, "frame 2: "), 1) << r.err;
   EXPECT_EQ(count_of(r.err, "frame 2 meshed in "), 1) << r.err;
   EXPECT_EQ(count_of(r.err, " skipped: "), 2) << r.err;
-  EXPECT_FALSE(obj_vertices(dir / "f_02.obj").empty());
+  EXPECT_FALSE(read_obj(dir / "f_02.obj").positions.empty());
   EXPECT_EQ(fs::last_write_time(dir / "f_00.obj"), before[0]);
   EXPECT_EQ(fs::last_write_time(dir / "f_01.obj"), before[1]);
 

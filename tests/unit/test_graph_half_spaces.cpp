@@ -9,6 +9,7 @@
 #include <toml++/toml.h>
 
 #include "core/error.h"
+#include "graph_of.h"
 #include "io/json_doc.h"
 #include "scene/graph_build.h"
 
@@ -16,21 +17,8 @@ namespace {
 
 constexpr float kInf = INFINITY;
 
-ms::SceneGraph graph_of(const std::string& json) {
-  const ms::JsonDoc doc = ms::parse_json_doc(json, "g.json");
-  return ms::build_graph(doc, doc.member(0, "root"), "g.json", "", {ms::Material{"m"}});
-}
-
-std::string error_of(const std::string& json) {
-  try {
-    graph_of(json);
-  } catch (const ms::Error& e) {
-    EXPECT_EQ(e.code(), ms::Exit::bad_input);
-    return e.what();
-  }
-  ADD_FAILURE() << "no error for " << json;
-  return {};
-}
+using ms::test::graph_of;
+using ms::test::graph_error;
 
 std::string node(const std::string& body) { return "{\"root\": " + body + "}"; }
 
@@ -97,12 +85,12 @@ TEST(GraphHalfSpaces, AnIntersectionCutsTheBoxAndASubtractionKeepsItsShape) {
 TEST(GraphHalfSpaces, AnUnboundedGraphNamesTheNodeThatMakesIt) {
   const std::string sphere = "{\"sdf\": \"sdSphere\", \"r\": 1}";
   const std::string plane = "{\"sdf\": \"sdPlane\", \"n\": [0, 1, 0], \"w\": 0}";
-  EXPECT_EQ(error_of(node("{\"op\": \"opUnion\", \"children\": [" + sphere + ", " + plane + "]}")),
+  EXPECT_EQ(graph_error(node("{\"op\": \"opUnion\", \"children\": [" + sphere + ", " + plane + "]}")),
             "g.json:1: /root/children/1: the graph is unbounded: an infinite sdPlane not cut by an intersection "
             "(intersect it with a bounded shape or subtract it from one; ground planes go in [[planes]])");
   // What a subtraction cuts from is what bounds it; deeper down, the slab.
   const std::string slab = "{\"sdf\": \"sdSlab\", \"y\": [0, 1]}";
-  const std::string e = error_of(node("{\"op\": \"opUnion\", \"children\": [" + sphere +
+  const std::string e = graph_error(node("{\"op\": \"opUnion\", \"children\": [" + sphere +
                                       ", {\"op\": \"opSubtraction\", \"children\": [" + slab + ", " + sphere + "]}, " +
                                       plane + "]}"));
   EXPECT_NE(e.find("/root/children/1/children/0: the graph is unbounded: an infinite sdSlab"), std::string::npos) << e;
@@ -112,16 +100,16 @@ TEST(GraphHalfSpaces, AnUnboundedGraphNamesTheNodeThatMakesIt) {
 
 TEST(GraphHalfSpaces, BadBoundsAndNormalsAreOneLineAtTheirValue) {
   const auto slab = [](const std::string& params) { return node("{\"sdf\": \"sdSlab\"" + params + "}"); };
-  EXPECT_NE(error_of(slab("")).find("/root: it bounds no axis"), std::string::npos);
-  EXPECT_NE(error_of(slab(", \"x\": [null, null]")).find("/root: it bounds no axis"), std::string::npos);
-  EXPECT_NE(error_of(slab(", \"x\": [1, 0]")).find("/root/x: 'x' must have min <= max"), std::string::npos);
-  EXPECT_NE(error_of(slab(", \"y\": [1]")).find("/root/y: 'y' must be [min, max]"), std::string::npos);
-  EXPECT_NE(error_of(slab(", \"z\": [0, 1e25]")).find("/root/z/1: each end of 'z' must be within 1e+18"),
+  EXPECT_NE(graph_error(slab("")).find("/root: it bounds no axis"), std::string::npos);
+  EXPECT_NE(graph_error(slab(", \"x\": [null, null]")).find("/root: it bounds no axis"), std::string::npos);
+  EXPECT_NE(graph_error(slab(", \"x\": [1, 0]")).find("/root/x: 'x' must have min <= max"), std::string::npos);
+  EXPECT_NE(graph_error(slab(", \"y\": [1]")).find("/root/y: 'y' must be [min, max]"), std::string::npos);
+  EXPECT_NE(graph_error(slab(", \"z\": [0, 1e25]")).find("/root/z/1: each end of 'z' must be within 1e+18"),
             std::string::npos);
-  EXPECT_NE(error_of(slab(", \"z\": [0, \"top\"]")).find("/root/z/1: each end of 'z' must be a number"),
+  EXPECT_NE(graph_error(slab(", \"z\": [0, \"top\"]")).find("/root/z/1: each end of 'z' must be a number"),
             std::string::npos);
   // A longer normal would make the field 2-Lipschitz, against its L = 1.
-  EXPECT_NE(error_of(node("{\"sdf\": \"sdPlane\", \"n\": [0, 2, 0], \"w\": 0}")).find("/root/n: 'n' must have length 1 (it has 2)"),
+  EXPECT_NE(graph_error(node("{\"sdf\": \"sdPlane\", \"n\": [0, 2, 0], \"w\": 0}")).find("/root/n: 'n' must have length 1 (it has 2)"),
             std::string::npos);
 }
 

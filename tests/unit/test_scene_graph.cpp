@@ -15,6 +15,7 @@
 
 #include "core/error.h"
 #include "files.h"
+#include "graph_of.h"
 #include "io/json_doc.h"
 #include "scene/graph_build.h"
 #include "scene/graph_scene.h"
@@ -29,27 +30,8 @@ using ms::test::write_file;
 
 namespace {
 
-std::vector<ms::Material> mats(std::initializer_list<const char*> names) {
-  std::vector<ms::Material> m;
-  for (const char* n : names) m.push_back({n});
-  return m;
-}
-
-ms::SceneGraph graph_of(const std::string& json) {
-  const ms::JsonDoc doc = ms::parse_json_doc(json, "g.json");
-  return ms::build_graph(doc, doc.member(0, "root"), "g.json", "", mats({"ball", "floor"}));
-}
-
-std::string error_of(const std::string& json) {
-  try {
-    graph_of(json);
-  } catch (const ms::Error& e) {
-    EXPECT_EQ(e.code(), ms::Exit::bad_input);
-    return e.what();
-  }
-  ADD_FAILURE() << "no error for " << json;
-  return {};
-}
+using ms::test::graph_of;
+using ms::test::graph_error;
 
 TEST(JsonDoc, ValuesKnowTheirLineAndPointer) {
   const ms::JsonDoc d = ms::parse_json_doc("{\n\"a/b\": [1,\n {\"x~\": \"s\\u00e9\"}]\n}", "t.json");
@@ -83,7 +65,7 @@ TEST(GraphErrors, NameTheFileLineAndPointerWithASuggestion) {
   const std::string j = "{\"root\": {\"op\": \"opUnion\", \"children\": [\n"
                         "  {\"sdf\": \"sdSphere\", \"r\": 1},\n"
                         "  {\"sdf\": \"sdShpere\", \"r\": 1}]}}";
-  EXPECT_EQ(error_of(j), "g.json:3: /root/children/1/sdf: unknown primitive 'sdShpere' (did you mean 'sdSphere'?)");
+  EXPECT_EQ(graph_error(j), "g.json:3: /root/children/1/sdf: unknown primitive 'sdShpere' (did you mean 'sdSphere'?)");
 }
 
 TEST(GraphErrors, EveryKindOfMistakeIsRefusedAtItsValue) {
@@ -110,7 +92,7 @@ TEST(GraphErrors, EveryKindOfMistakeIsRefusedAtItsValue) {
       {node("{\"sdf\": \"sdSphere\", \"r\": 1, \"rotate\": [0, 0, 0, 45]}"), "'rotate' needs a non-zero axis"},
   };
   for (const auto& [json, want] : cases) {
-    const std::string e = error_of(json);
+    const std::string e = graph_error(json);
     EXPECT_NE(e.find(want), std::string::npos) << "got: " << e << "\nwant: " << want;
     EXPECT_EQ(e.find('\n'), std::string::npos);
   }
