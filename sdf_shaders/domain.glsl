@@ -107,11 +107,12 @@ vec2 domMirrorOctant(vec2 p, float offset) {
 #endif
 
 #if !defined(MS_LIBRARY_SUBSET) || defined(USE_DOMREFLECT)
-// Reflects p across the plane dot(p, n) + offset = 0 (unit n) when it is on
-// the plane's negative side: a shape on the positive side appears twice.
+// Reflects p across the plane dot(p, n) + w = 0 (unit n) when it is on the
+// plane's negative side: a shape on the positive side appears twice (the
+// graph's `mirror`). A fold: exact for a shape on the positive side.
 // [exact; L = 1]
-vec3 domReflect(vec3 p, vec3 n, float offset) {
-  float t = dot(p, n) + offset;
+vec3 domReflect(vec3 p, vec3 n, float w) {
+  float t = dot(p, n) + w;
   return t < 0.0 ? p - 2.0 * t * n : p;
 }
 #endif

@@ -79,16 +79,6 @@ vec3 domSymmetryNode(vec3 p, vec3 axes) {
 }
 #endif
 
-#if !defined(MS_LIBRARY_SUBSET) || defined(USE_DOMMIRRORNODE)
-// domReflect with the plane dot(p, n) + w = 0: the positive side kept and
-// mirrored onto the other. A fold: exact for a shape on the positive side.
-// [exact; L = 1]
-vec3 domMirrorNode(vec3 p, vec3 n, float w) {
-  float t = dot(p, n) + w;
-  return t < 0.0 ? p - 2.0 * t * n : p;
-}
-#endif
-
 #if !defined(MS_LIBRARY_SUBSET) || defined(USE_DOMSCALENODE)
 // A non-uniform scale by s (> 0): the child's point p / s. [bound; L = 1]
 vec3 domScaleNode(vec3 p, vec3 s, float m, vec3 lo, vec3 hi) {

@@ -267,7 +267,7 @@ const std::vector<GraphUnary>& unaries() {
        repeat},
       {"polar", copies({any("count"), len("radius"), axis("axis", 0, 1, 0), derived("across", 3)}), 3, false, true,
        "domPolarNode", "", true, "exact", polar},
-      {"mirror", {axis("n", 1, 0, 0), any("w")}, 3, true, false, "domMirrorNode", "", true,
+      {"mirror", {axis("n", 1, 0, 0), any("w")}, 3, true, false, "domReflect", "", true,
        "exact for a child on the kept side", mirror},
       {"symmetry", {any("axes", 3)}, 3, true, false, "domSymmetryNode", "", true,
        "exact for a child on the positive side", symmetry},
