@@ -67,7 +67,9 @@ struct GraphParts {
   ShaderSource prune_src;
 };
 // Derives the shape from the scene's graph and opts' graph_eval, prune and
-// cell_size. Callers go through prepare_graph_shape(), once per graph.
+// cell_size. Callers go through prepare_graph_shape(), once per graph; a
+// sequence of an animated graph calls it once per posed frame
+// (pipeline/sequence.cpp), for the frame's buffers.
 GraphParts graph_parts(const Scene& scene, const AssembleOptions& opts);
 // Sets opts.graph to the scene's shape (null without a graph).
 void prepare_graph_shape(const Scene& scene, AssembleOptions& opts);
