@@ -5,6 +5,7 @@
 #include "core/clock.h"
 #include "core/error.h"
 #include "pipeline/input.h"
+#include "scene/graph_animation.h"
 #include "scene/quality.h"
 
 namespace ms::live {
@@ -152,6 +153,8 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
     if (!p.keep_field) {
       shape_graph_ = p.graph_of;
       shape_ = p.graph;
+      shape_opts_ = p.graph_opts;
+      posed_.reset();  // a new field holds the file's pose
     }
     if (p.prune) {
       prune_ = p.prune;
@@ -179,6 +182,15 @@ ReloadResult Session::adopt(PreparedReload p, const std::vector<std::shared_ptr<
 // (a toggle, a debug view, a panel value) keeps the ones it has.
 void Session::prepare_graph(AssembleOptions& opts, PreparedReload& p) const {
   if (!scene_.graph) return;
+  if (animates_graph(scene_)) {
+    // As render does (pipeline/prepare.cpp): interpreted, so that a frame's
+    // pose uploads values and compiles nothing, its moving box in uniforms.
+    if (opts.graph_eval == GraphEval::inline_)
+      fail_input("--graph-eval inline cannot animate graph nodes: it compiles their values in",
+                 scene_.file.string(), 0, "--graph-eval", "leave it auto (an animated graph is interpreted) or give interpreter");
+    opts.graph_eval = GraphEval::interpreter;
+    opts.bounds_uniforms = true;
+  }
   if (shape_ && shape_graph_ == scene_.graph) {
     p.keep_field = true;
     opts.graph = shape_;
@@ -187,6 +199,35 @@ void Session::prepare_graph(AssembleOptions& opts, PreparedReload& p) const {
   prepare_graph_shape(scene_, opts);
   p.graph_of = scene_.graph;
   p.graph = opts.graph;
+  p.graph_opts = opts;
+}
+
+bool Session::pose_graph(double time) {
+  if (!field_ || !shape_ || !animates_graph(scene_)) return false;
+  if (posed_ && posed_->time == time && posed_->ok) return true;
+  if (posed_ && posed_->time == time) return false;  // refused at this time already: the file's pose stands
+  const auto t0 = Clock::now();
+  Posed now{time, false, 0.0};
+  std::shared_ptr<GraphField> field;
+  try {
+    Scene scene = scene_;
+    pose_graph_at(scene, time);  // throws where a value breaks the graph, as render would
+    const GraphParts shape = graph_parts(scene, shape_opts_);
+    const bool same = shape.prune_src.text == prune_text_;
+    field = std::make_shared<GraphField>(shape, same ? prune_ : nullptr);
+    if (!same && field->prune()) {
+      prune_ = field->prune();
+      prune_text_ = shape.prune_src.text;
+    }
+    now.ok = true;
+  } catch (const Error&) {
+    // Drawn at the file's pose instead: the field that matches it.
+    field = std::make_shared<GraphField>(*shape_, prune_);
+  }
+  field_ = std::move(field);
+  now.ms = ms_since(t0);
+  posed_ = now;
+  return now.ok;
 }
 
 // The field the adopted programs read: the worker's, one built here (its

@@ -9,6 +9,7 @@
 #include <exception>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,7 @@ class Session {
     std::shared_ptr<const GraphParts> graph;
     std::shared_ptr<const Program> prune;
     std::shared_ptr<GraphField> field;
+    AssembleOptions graph_opts;  // what `graph` was derived with: a pose derives it again so
     bool keep_field = false;
   };
   PreparedReload prepare(bool from_disk);
@@ -131,6 +133,13 @@ class Session {
   // An interpreted graph scene's node buffers and pruned grid, bound
   // before every draw of the scene pass; null otherwise.
   std::shared_ptr<const GraphField> field() const { return field_; }
+  // An animated graph's field at `time`: its nodes posed by the scene's
+  // graph tracks, the grid pruned again when the time moved (the pruning
+  // pass reused, nothing else compiled). False when the graph does not
+  // animate, or a value at `time` breaks it: the field then holds the
+  // file's pose, and so must the frame. pose_ms(): the last pose's time.
+  bool pose_graph(double time);
+  double pose_ms() const { return posed_ ? posed_->ms : 0.0; }
   // The graph to draw (null before the first good build) and its post pass.
   PassGraph* graph() const { return graph_.get(); }
   const Program* main_program() const { return graph_ ? &graph_->program(graph_->size() - 1) : nullptr; }
@@ -193,6 +202,13 @@ class Session {
   std::shared_ptr<GraphField> field_;
   std::shared_ptr<const SceneGraph> shape_graph_;  // what shape_ (and field_) were made from
   std::shared_ptr<const GraphParts> shape_;
+  AssembleOptions shape_opts_;  // what shape_ was derived with
+  struct Posed {
+    double time = 0.0;
+    bool ok = false;  // false: the pose was refused, field_ holds the file's
+    double ms = 0.0;
+  };
+  std::optional<Posed> posed_;  // where field_ stands, when an animated graph was posed
   std::shared_ptr<const Program> prune_;  // the last pruning pass, kept by its text: a move reuses it
   std::string prune_text_;
   std::vector<std::string> warnings_;

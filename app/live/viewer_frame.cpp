@@ -113,9 +113,10 @@ Scene FrameDrawer::posed(float time) const {
     // The keys make the scene unrenderable at this time (say, the camera
     // on its target): show it unanimated rather than nothing.
   }
-  // Graph tracks do not play here yet: the field holds the file's pose, and
-  // the bounds must stay those of the graph it draws.
-  if (animates_graph(scene)) {
+  // Graph tracks play: the field is posed at this time (pruned again when
+  // the time moved). Where a value at this time breaks the graph the field
+  // holds the file's pose, and the bounds must stay those of what it draws.
+  if (animates_graph(scene) && !session_.pose_graph(time)) {
     view.graph = scene.graph;
     view.bounds = scene.bounds;
     view.quality.lipschitz = scene.quality.lipschitz;
