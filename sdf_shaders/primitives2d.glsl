@@ -127,6 +127,25 @@ float sd2RegularPolygon(vec2 p, float r, float n) {
 }
 #endif
 
+#if !defined(MS_LIBRARY_SUBSET) || defined(USE_SD2POLYGON)
+// Polygon of the n vertices v[0] .. v[n - 1] (3 <= n <= 32, in either
+// order; the rest of v is not read), simple (no edge crossing another):
+// the nearest edge's distance, negative inside by the crossing rule.
+// [exact; L = 1]
+float sd2Polygon(vec2 p, float n, vec2 v[32]) {
+  int m = int(n);
+  float d = dot(p - v[0], p - v[0]), s = 1.0;
+  for (int i = 0, j = m - 1; i < m; j = i, i++) {
+    vec2 e = v[j] - v[i], w = p - v[i];
+    d = min(d, msSegment2(p, v[i], v[j]));
+    // An edge crossing the horizontal through p, on p's one side, flips it.
+    bvec3 c = bvec3(p.y >= v[i].y, p.y < v[j].y, e.x * w.y > e.y * w.x);
+    if (all(c) || all(not(c))) s = -s;
+  }
+  return s * sqrt(d);
+}
+#endif
+
 #if !defined(MS_LIBRARY_SUBSET) || defined(USE_SD2PIE)
 // Circular sector of radius r spanning theta either side of +y,
 // sc = (sin, cos)(theta). [exact; L = 1]

@@ -192,9 +192,8 @@ ROWS = [
                                       sdf('ud2Segment', a=[-1, 1], b=[1, -1])])], r=0.2)),
      '`rounded_x(2, 0.2)`: no primitive, but it is exactly two crossed segments from -w/2 to w/2 on '
      'the diagonals, rounded by `r`.'),
-    ('2D primitives', 'polygon', 'polygon(points)', None,
-     'A node\'s parameters are fixed in number (each primitive has a fixed slot in the node '
-     'buffers), so n points need a variable-length parameter and a library `sd2Polygon` looping '
-     'over them. Three points are `sd2Triangle`; a union of `sd2Triangle` over a triangulation is '
-     'the same solid, exact outside.'),
+    ('2D primitives', 'polygon', 'polygon(points)',
+     flat(sdf('sd2Polygon', v=[[-1, -0.4], [0.2, -0.4], [0.2, -0.9], [1, 0], [0.2, 0.9], [0.2, 0.4], [-1, 0.4]])),
+     '`points` is `v`: 3 to 32 [x, y] vertices in order, either winding, each given once (the '
+     'polygon closes itself); a simple polygon, exact inside and out.'),
 ]

@@ -50,6 +50,11 @@ std::vector<float> GraphReader::read_params(int v, const std::vector<GraphParam>
       continue;
     }
     if (c == -1) fail(v, "missing parameter " + quote(p.name), describe(defs));
+    if (p.points > 0) {
+      const std::vector<float> vs = vertices(c, p);
+      out.insert(out.end(), vs.begin(), vs.end());
+      continue;
+    }
     const std::vector<float> xs = numbers(c, p.size, quote(p.name));
     for (float x : xs)
       if (p.nonneg && x < 0.0f) fail(c, quote(p.name) + " must not be negative", "it is a size");
@@ -87,6 +92,30 @@ std::vector<float> GraphReader::range(int c, std::string_view name) const {
   return out;
 }
 
+// A vertex list (GraphParam::points): [[x, y], ...], 3 to p.points of them,
+// no two in a row the same (an edge of no length has no direction).
+std::vector<float> GraphReader::vertices(int c, const GraphParam& p) const {
+  const JsonValue& a = doc_.at(c);
+  const std::string what = quote(p.name);
+  if (a.kind != JsonKind::array || a.count < 3 || a.count > p.points)
+    fail(c, what + " must be an array of 3 to " + std::to_string(p.points) + " [x, y] points",
+         a.kind == JsonKind::array ? "it has " + std::to_string(a.count) : "the polygon's vertices, in order");
+  std::vector<float> out{static_cast<float>(a.count)};
+  for (int e = a.first; e != -1; e = doc_.at(e).next) {
+    const std::vector<float> xy = numbers(e, 2, "each point of " + what);
+    for (float x : xy)
+      if (std::fabs(x) > kMaxCoord) fail(e, "each point of " + what + " must be within 1e+18, as float coordinates hold");
+    const std::size_t n = out.size();
+    const bool repeats = n > 1 && out[n - 2] == xy[0] && out[n - 1] == xy[1];
+    const bool closes = doc_.at(e).next == -1 && out[1] == xy[0] && out[2] == xy[1];
+    if (repeats || closes)
+      fail(e, "a point of " + what + " repeats the one before it", "the polygon closes itself: give each vertex once");
+    out.insert(out.end(), xy.begin(), xy.end());
+  }
+  while (out.size() < static_cast<std::size_t>(p.size)) out.insert(out.end(), {out[out.size() - 2], out[out.size() - 1]});
+  return out;
+}
+
 void GraphReader::unit(int c, std::string_view name, const std::vector<float>& xs) const {
   const double len = std::sqrt(double(xs[0]) * xs[0] + double(xs[1]) * xs[1] + double(xs[2]) * xs[2]);
   if (std::fabs(len - 1.0) > 1e-4)
@@ -99,7 +128,10 @@ std::string GraphReader::describe(const std::vector<GraphParam>& defs) {
   std::string s;
   for (const GraphParam& d : defs) {
     if (d.derived) continue;
-    s += (s.empty() ? "" : ", ") + std::string(d.name) + (d.size > 1 ? " (" + std::to_string(d.size) + " numbers)" : "") +
+    const std::string shape = d.points > 0 ? " (3 to " + std::to_string(d.points) + " [x, y] points)"
+                              : d.size > 1  ? " (" + std::to_string(d.size) + " numbers)"
+                                            : "";
+    s += (s.empty() ? "" : ", ") + std::string(d.name) + shape +
          (d.optional ? " (optional)" : "");
   }
   return s.empty() ? "it takes none" : "it takes " + s;

@@ -39,6 +39,7 @@ class GraphReader {
  private:
   std::vector<float> range(int c, std::string_view name) const;
   void unit(int c, std::string_view name, const std::vector<float>& xs) const;
+  std::vector<float> vertices(int c, const GraphParam& p) const;
 };
 
 }  // namespace ms

@@ -37,6 +37,21 @@ GraphParam len(std::string_view n, int size = 1) { return {n, size, true, true};
 GraphParam any(std::string_view n, int size = 1) { return {n, size, false, false}; }
 GraphParam range(std::string_view n) { return {n, 2, false, true, true}; }
 GraphParam unit(std::string_view n) { return {n, 3, false, false, false, true}; }
+GraphParam vertices(std::string_view n) {
+  GraphParam v{n, 1 + 2 * kPolygonPoints, false, false};
+  v.points = kPolygonPoints;
+  return v;
+}
+// A vertex list's box (count first, then the pairs).
+GraphBox polygon_box(const float* p) {
+  GraphBox b{{kInf, kInf, 0.0f}, {-kInf, -kInf, 0.0f}};
+  for (int i = 0; i < static_cast<int>(p[0]); ++i)
+    for (int a = 0; a < 2; ++a) {
+      b.min[a] = std::min(b.min[a], p[1 + 2 * i + a]);
+      b.max[a] = std::max(b.max[a], p[1 + 2 * i + a]);
+    }
+  return b;
+}
 
 // A range's end as a box coordinate: an open end is infinite.
 float bound(float v) { return std::fabs(v) >= kOpenBound ? std::copysign(kInf, v) : v; }
@@ -117,6 +132,7 @@ const std::vector<GraphPrimitive>& primitives() {
       {"sd2Star", {len("r"), len("ri"), {"n", 1, true, false}}, 1,
        [](P p) { const float r = std::max(p[0], p[1]); return sym(r, r, 0); }, 2},
       {"sd2RegularPolygon", {len("r"), {"n", 1, true, false}}, 1, [](P p) { return sym(p[0], p[0], 0); }, 2},
+      {"sd2Polygon", {vertices("v")}, 1, polygon_box, 2},
       {"sd2Pie", {any("sc", 2), len("r")}, 1, [](P p) { return sym(p[2], p[2], 0); }, 2},
       {"sd2Arc", {any("sc", 2), len("ra"), len("rb")}, 1, [](P p) { return sym(p[2] + p[3], p[2] + p[3], 0); }, 2},
   };

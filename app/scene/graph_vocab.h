@@ -30,7 +30,13 @@ struct GraphParam {
   float fallback[3] = {0.0f, 0.0f, 0.0f};
   bool derived = false;  // not read: the builder derives it from the child (graph_unary.h)
   bool fraction = false; // a weight in [0, 1]
+  // A vertex list: 3 to `points` [x, y] pairs, stored as their count, then
+  // the pairs, the last repeated to fill (size is 1 + 2 points).
+  int points = 0;
 };
+
+// The most vertices a polygon (sd2Polygon) takes: its GLSL array's length.
+inline constexpr int kPolygonPoints = 32;
 
 // An open end of a range parameter: the library's BIG, finite so that the
 // GLSL's distances to a side stay exact; a box treats it as infinite.

@@ -40,7 +40,11 @@ std::string local_point(const GraphNode& n) {
 std::string leaf_args(const std::vector<GraphParam>& params, const float* p) {
   std::string out;
   for (const GraphParam& d : params) {
-    if (d.size == 1) out += ", " + glsl_float(p[0]);
+    if (d.points > 0) {  // a vertex list: its count, then a vec2 array
+      out += ", " + glsl_float(p[0]) + ", vec2[" + std::to_string(d.points) + "](";
+      for (int i = 0; i < d.points; ++i)
+        out += "vec2(" + glsl_float(p[1 + 2 * i]) + ", " + glsl_float(p[2 + 2 * i]) + (i + 1 < d.points ? "), " : "))");
+    } else if (d.size == 1) out += ", " + glsl_float(p[0]);
     else {
       out += ", vec" + std::to_string(d.size) + "(";
       for (int i = 0; i < d.size; ++i) out += glsl_float(p[i]) + (i + 1 < d.size ? ", " : ")");

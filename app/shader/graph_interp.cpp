@@ -18,6 +18,14 @@ std::string buffer_args(const std::vector<GraphParam>& params) {
   std::string args;
   int k = 0;
   for (const GraphParam& d : params) {
+    const auto f = [](int i) { return "msGraphF[o + " + std::to_string(i) + "u]"; };
+    if (d.points > 0) {  // a vertex list: its count, then a vec2 array
+      args += ", " + f(k) + ", vec2[" + std::to_string(d.points) + "](";
+      for (int i = 0; i < d.points; ++i)
+        args += "vec2(" + f(k + 1 + 2 * i) + ", " + f(k + 2 + 2 * i) + (i + 1 < d.points ? "), " : "))");
+      k += d.size;
+      continue;
+    }
     std::string a = d.size == 1 ? "" : "vec" + std::to_string(d.size) + "(";
     for (int i = 0; i < d.size; ++i, ++k) a += (i ? ", " : "") + std::string("msGraphF[o + ") + std::to_string(k) + "u]";
     args += ", " + a + (d.size == 1 ? "" : ")");

@@ -42,6 +42,7 @@ const NodeCase kCases[] = {
     {"shell", R"({"op": "shell", "thickness": 0.06, "children": [{"sdf": "sdTorus", "t": [0.4, 0.15]}]})"},
     {"onion", R"({"op": "onion", "t": 0.03, "children": [{"sdf": "sdSphere", "r": 0.5}]})"},
     {"extrude", R"({"op": "extrude", "h": 0.5, "r": 0.05, "children": [{"sdf": "sd2Star", "r": 0.6, "ri": 0.3, "n": 5, "rotate": 20}]})"},
+    {"polygon", R"({"op": "extrude", "h": 0.4, "r": 0.03, "children": [{"sdf": "sd2Polygon", "v": [[-0.6, -0.2], [0.1, -0.2], [0.1, -0.5], [0.6, 0.05], [0.1, 0.55], [0.1, 0.25], [-0.6, 0.25]]}]})"},
     {"opExtrude", R"({"op": "opExtrude", "h": 0.2, "children": [{"sdf": "sd2Hexagon", "r": 0.4}]})"},
     {"revolve", R"({"op": "revolve", "offset": 0.4, "children": [{"sdf": "sd2Box", "b": [0.1, 0.25], "translate": [0.05, 0]}]})"},
     {"opBlend", R"({"op": "opBlend", "t": 0.3, "children": [{"sdf": "sdSphere", "r": 0.5}, {"sdf": "sdBox", "b": [0.4, 0.3, 0.6], "translate": [0.2, 0, 0]}]})"},

@@ -85,6 +85,34 @@ TEST(GraphModifiers, MistakesAreOneLineAtTheirPointer) {
             std::string::npos);
 }
 
+// A polygon from a vertex list: its box, both evaluators' GLSL, and the
+// lists it refuses.
+TEST(GraphModifiers, APolygonTakesItsVerticesAsAList) {
+  const std::string poly = R"({"op": "extrude", "h": 0.2, "children": [{"sdf": "sd2Polygon", "v": [[-1, -0.5], [2, 0], [0, 1.5]]}]})";
+  const SceneGraph g = graph_of(wrap(poly));
+  EXPECT_NEAR(g.root_node().box.min.x, -1.0f, 1e-3f);
+  EXPECT_NEAR(g.root_node().box.max.x, 2.0f, 1e-3f);
+  EXPECT_NEAR(g.root_node().box.min.y, -0.5f, 1e-3f);
+  EXPECT_NEAR(g.root_node().box.max.y, 1.5f, 1e-3f);
+  // Count 3, then the array, its last vertex repeated to fill.
+  const std::string inl = graph_map_inline(g);
+  EXPECT_NE(inl.find("sd2Polygon("), std::string::npos);
+  EXPECT_NE(inl.find(", 3.0, vec2[32](vec2((-1.0), (-0.5)), vec2(2.0, 0.0), vec2(0.0, 1.5), vec2(0.0, 1.5), "), std::string::npos)
+      << inl;
+  const std::string e1 = graph_error(wrap(R"({"op": "extrude", "h": 1, "children": [{"sdf": "sd2Polygon", "v": [[0, 0], [1, 0]]}]})"));
+  EXPECT_NE(e1.find("'v' must be an array of 3 to 32 [x, y] points"), std::string::npos) << e1;
+  EXPECT_NE(e1.find("/root/children/0/v"), std::string::npos) << e1;
+  const std::string e2 = graph_error(wrap(R"({"op": "extrude", "h": 1, "children": [{"sdf": "sd2Polygon", "v": [[0, 0], [1, 0], [1, 0], [0, 1]]}]})"));
+  EXPECT_NE(e2.find("/root/children/0/v/2: a point of 'v' repeats the one before it"), std::string::npos) << e2;
+  const std::string e3 = graph_error(wrap(R"({"op": "extrude", "h": 1, "children": [{"sdf": "sd2Polygon", "v": [[0, 0], [1, 0], [0, 1], [0, 0]]}]})"));
+  EXPECT_NE(e3.find("closes itself"), std::string::npos) << e3;
+  const std::string e4 = graph_error(wrap(R"({"op": "extrude", "h": 1, "children": [{"sdf": "sd2Polygon", "v": [[0, 0], [1, 0, 2], [0, 1]]}]})"));
+  EXPECT_NE(e4.find("each point of 'v' must be an array of 2 numbers"), std::string::npos) << e4;
+  std::string many = R"({"op": "extrude", "h": 1, "children": [{"sdf": "sd2Polygon", "v": [)";
+  for (int i = 0; i < 33; ++i) many += (i ? ", [" : "[") + std::to_string(std::cos(i * 0.19)) + ", " + std::to_string(std::sin(i * 0.19)) + "]";
+  EXPECT_NE(graph_error(wrap(many + "]}]}")).find("it has 33"), std::string::npos);
+}
+
 // What would make a shader loop or nest without end is refused at the node.
 TEST(GraphModifiers, HostileRepetitionsAndNestingAreRefused) {
   EXPECT_NE(graph_error(wrap(R"({"op": "repeat", "spacing": [0.001, 0.001, 0.001], "count": [1000, 1000, 1000], "children": [)" +

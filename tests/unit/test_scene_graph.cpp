@@ -202,7 +202,10 @@ TEST(GraphVocabulary, MatchesTheLibrarysSignaturesAndClaims) {
   const auto check = [&](std::string_view name, const std::vector<ms::GraphParam>& params, float l) {
     std::string rest;
     for (const ms::GraphParam& p : params)
-      rest += std::string(", ") + (p.size == 1 ? "float " : "vec" + std::to_string(p.size) + " ") + std::string(p.name);
+      if (p.points > 0)  // a vertex list: its count, then the array, as long in the GLSL as in the vocabulary
+        rest += ", float n, vec2 " + std::string(p.name) + "[" + std::to_string(p.points) + "]";
+      else
+        rest += std::string(", ") + (p.size == 1 ? "float " : "vec" + std::to_string(p.size) + " ") + std::string(p.name);
     const auto it = lib.find(std::string(name));
     ASSERT_NE(it, lib.end()) << name << " is not in the library";
     EXPECT_EQ(it->second.first, rest) << name;
