@@ -24,6 +24,62 @@ int msCut(uint fn, uint o, vec2 ia, vec2 ib) {
   return max(max(ib.x, -ib.y), 0.0) >= msReach(fn, o, ia) ? 1 : 0;
 }
 struct MsEntry { vec2 v; float lo, hi; uint start, count; };
+#if MS_GRAPH_FRAMES > 0
+// A modifier the walk goes inside (msGraphRegion): the cell's ball before
+// it, the modifier's value at the cell's centre, and where its begin
+// instruction went in the list.
+struct MsRegion { vec3 centre; float r; vec2 v; uint start; };
+// Instructions from the begin at k to its end, in a list whose modifiers
+// may have been pruned inside (so shorter than the node's unit).
+uint msUnitIn(uint k, uint end) {
+  int depth = 0;
+  for (uint j = k; j < end; ++j) {
+    uint ins = msGraphProg[j];
+    if ((ins & 0x80000000u) != 0u) continue;
+    if ((ins & 0x20000000u) != 0u) ++depth;
+    else if ((ins & 0x10000000u) != 0u && --depth == 0) return j - k + 1u;
+  }
+  return end - k;
+}
+// A repetition's copies for the points within r of c (in its frame; its
+// begin instruction at k, unit instructions to its end): a ball holding
+// the ball's copy in each copy domRepeatNode may look at for its points,
+// as its centre and radius r2 (the ball's about the copies' centres). Where every point of the ball
+// looks first at the same copy j0, a copy whose box lies farther than
+// j0's value can reach over the ball is skipped there (opCopyFloor), and
+// is left out; past 64 copies in range, none is.
+vec3 msRepeatRegion(vec3 c, float r, uint k, uint unit, vec3 spacing, vec3 count, vec3 lo, vec3 hi, float slack,
+                    out float r2) {
+  vec3 rep = step(1e-30, spacing);
+  vec3 sp = mix(vec3(1.0), spacing, rep);
+  vec3 lim = mix(vec3(1e9), count, step(0.0, count));
+  vec3 jlo = clamp(rep * floor((c - r - hi - slack) / sp), -lim, lim);
+  vec3 jhi = clamp(rep * ceil((c + r - lo + slack) / sp), -lim, lim);
+  vec3 n = jhi - jlo + 1.0;
+  r2 = 0.5 * length(spacing * (jhi - jlo)) * 1.001 + r + 1e-6;
+  vec3 whole = c - spacing * 0.5 * (jlo + jhi);
+  if (n.x * n.y * n.z > 64.0) return whole;
+  vec3 j0 = rep * round(c / sp);
+  vec3 innerLo = clamp(rep * floor((c + r - hi - slack) / sp), -lim, lim);
+  vec3 innerHi = clamp(rep * ceil((c - r - lo + slack) / sp), -lim, lim);
+  if (any(notEqual(rep * round((c - r) / sp), rep * round((c + r) / sp))) || any(greaterThan(innerLo, j0)) ||
+      any(lessThan(innerHi, j0)))
+    return whole;
+  uint root = msGraphProg[k + unit - 2u] & MS_INDEX;
+  float reach = msGraphRun(k + 1u, unit - 2u, c - spacing * j0).x + uintBitsToFloat(msGraphNode[root].w) * r;
+  vec3 bmin = vec3(1e30), bmax = vec3(-1e30);
+  for (float z = jlo.z; z <= jhi.z; z += 1.0)
+    for (float y = jlo.y; y <= jhi.y; y += 1.0)
+      for (float x = jlo.x; x <= jhi.x; x += 1.0) {
+        vec3 j = vec3(x, y, z), q = c - spacing * j;
+        if (j != j0 && length(max(max(lo - q, q - hi), vec3(0.0))) - r - slack >= reach) continue;
+        bmin = min(bmin, q);
+        bmax = max(bmax, q);
+      }
+  r2 = 0.5 * length(bmax - bmin) * 1.001 + r + 1e-6;
+  return 0.5 * (bmin + bmax);
+}
+#endif
 layout(local_size_x = 64) in;
 // uLevel 0 prunes coarse cells, 1 fine ones; uGrid is the grid level.
 uniform int uLevel;
@@ -78,6 +134,10 @@ void main() {
   MsEntry st[MS_GRAPH_STACK];
   int sp = 0;
   uint len = 0u;
+#if MS_GRAPH_FRAMES > 0
+  MsRegion rg[MS_GRAPH_FRAMES];
+  int rp = 0;
+#endif
   bool overflow = false;
   for (uint k = inStart; k < inStart + inCount; ++k) {
     uint ins = msGraphProg[k];
@@ -92,9 +152,24 @@ void main() {
     }
 #if MS_GRAPH_FRAMES > 0
     if ((ins & 0x20000000u) != 0u) {
-      // A modifier is kept or dropped whole: its value at the centre,
-      // widened by its bound, stands for its unit of instructions.
-      uint unit = msGraphNode[i].z;
+      uvec4 n = msGraphNode[i];
+      vec3 c2;
+      float r2;
+      uint unitIn = uLevel == 0 ? n.z : msUnitIn(k, inStart + inCount);
+      if (msGraphRegion(n.x, n.y + 13u, msGraphLocal(n.y, centre), r / msGraphF[n.y + 12u], k, unitIn, c2, r2)) {
+        // Inside it the walk goes on, pruning its child for the ball its
+        // points map into; its end restores the cell's ball.
+        rg[rp++] = MsRegion(centre, r, msGraphRun(k, unitIn, centre), len);
+        centre = c2;
+        r = r2;
+        if (len < listMax) msPut(len, ins); else overflow = true;
+        ++len;
+        continue;
+      }
+      // Else it is kept or dropped whole: its value at the centre, widened
+      // by its bound, stands for its unit of instructions (copied whole,
+      // so its unit is the node's in any list).
+      uint unit = n.z;
       vec2 v = msGraphRun(k, unit, centre);
       st[sp++] = MsEntry(v, v.x - L * r, v.x + L * r, len, unit);
       for (uint j = 0u; j < unit; ++j) {
@@ -102,6 +177,16 @@ void main() {
         ++len;
       }
       k += unit - 1u;
+      continue;
+    }
+    if ((ins & 0x10000000u) != 0u) {  // the end of a modifier the walk went inside
+      MsRegion g = rg[--rp];
+      --sp;  // its child's entry: the modifier's value stands for it
+      centre = g.centre;
+      r = g.r;
+      if (len < listMax) msPut(len, ins); else overflow = true;
+      ++len;
+      st[sp++] = MsEntry(g.v, g.v.x - L * r, g.v.x + L * r, g.start, len - g.start);
       continue;
     }
 #endif

@@ -257,33 +257,34 @@ const std::vector<GraphUnary>& unaries() {
     v.push_back(derived("slack"));
     return v;
   };
+  constexpr auto kPoint = GraphUnary::Inside::point, kCopies = GraphUnary::Inside::copies;
   static const std::vector<GraphUnary> v = {
       {"twist", floor({any("k"), axis("axis", 0, 1, 0), derived("r"), derived("l")}), 3, false, false,
        "domTwistNode", "opTwistNode", true, "bound", twist},
       {"bend", floor({any("k"), derived("r"), derived("l")}), 3, false, false, "domBendNode", "opBendNode", true,
        "bound", bend},
-      {"elongate", {len("h", 3)}, 3, true, false, "domElongate", "", true, "exact outside", elongate},
+      {"elongate", {len("h", 3)}, 3, true, false, "domElongate", "", true, "exact outside", elongate, kPoint},
       {"repeat", copies({len("spacing", 3), counts("count")}), 3, true, true, "domRepeatNode", "", true, "exact",
-       repeat},
+       repeat, kCopies},
       {"polar", copies({any("count"), len("radius"), axis("axis", 0, 1, 0), derived("across", 3)}), 3, false, true,
        "domPolarNode", "", true, "exact", polar},
       {"mirror", {axis("n", 1, 0, 0), any("w")}, 3, true, false, "domReflect", "", true,
-       "exact for a child on the kept side", mirror},
+       "exact for a child on the kept side", mirror, kPoint},
       {"symmetry", {any("axes", 3)}, 3, true, false, "domSymmetryNode", "", true,
-       "exact for a child on the positive side", symmetry},
+       "exact for a child on the positive side", symmetry, kPoint},
       {"scale", floor({len("s", 3), derived("m")}), 3, false, false, "domScaleNode", "opScaleNode", true,
        "bound (under by up to max(s) / min(s))", scale},
-      {"round", {len("r")}, 3, true, false, "", "opRound", false, "exact outside", grow},
-      {"dilate", {len("r")}, 3, true, false, "", "opRound", false, "exact outside", grow},
-      {"opRound", {len("r")}, 3, true, false, "", "opRound", false, "exact outside", grow},
-      {"erode", {len("r")}, 3, true, false, "", "opErode", false, "exact inside", keep},
-      {"shell", {len("thickness")}, 3, true, false, "", "opShellNode", true, "exact outside", shell},
-      {"onion", {len("t")}, 3, true, false, "", "opOnion", false, "exact outside", onion},
-      {"opOnion", {len("t")}, 3, true, false, "", "opOnion", false, "exact outside", onion},
+      {"round", {len("r")}, 3, true, false, "", "opRound", false, "exact outside", grow, kPoint},
+      {"dilate", {len("r")}, 3, true, false, "", "opRound", false, "exact outside", grow, kPoint},
+      {"opRound", {len("r")}, 3, true, false, "", "opRound", false, "exact outside", grow, kPoint},
+      {"erode", {len("r")}, 3, true, false, "", "opErode", false, "exact inside", keep, kPoint},
+      {"shell", {len("thickness")}, 3, true, false, "", "opShellNode", true, "exact outside", shell, kPoint},
+      {"onion", {len("t")}, 3, true, false, "", "opOnion", false, "exact outside", onion, kPoint},
+      {"opOnion", {len("t")}, 3, true, false, "", "opOnion", false, "exact outside", onion, kPoint},
       {"extrude", {len("h"), [] { GraphParam r = len("r"); r.optional = true; return r; }()}, 2, false, false, "",
-       "opExtrudeNode", true, "exact", extrude},
-      {"opExtrude", {len("h")}, 2, false, false, "", "opExtrudeHalfNode", true, "exact", extrude_half},
-      {"revolve", {any("offset")}, 2, false, false, "domRevolveNode", "", true, "exact", revolve},
+       "opExtrudeNode", true, "exact", extrude, kPoint},
+      {"opExtrude", {len("h")}, 2, false, false, "", "opExtrudeHalfNode", true, "exact", extrude_half, kPoint},
+      {"revolve", {any("offset")}, 2, false, false, "domRevolveNode", "", true, "exact", revolve, kPoint},
   };
   return v;
 }

@@ -35,6 +35,13 @@ struct GraphUnary {
   // out.slack and out.lipschitz (a factor on the child's). Returns an
   // empty string, or why the child cannot be used (an unbounded one).
   std::string (*shape)(const GraphNode& child, float* params, GraphNode& out) = nullptr;
+  // How the pruning pass looks inside it (graph_prune.glsl). whole: kept or
+  // dropped as one unit. point: its point map moves no two points farther
+  // apart, so the points of a ball about c go within the same radius of
+  // the map of c, and its child is pruned for that ball. copies: the child
+  // is pruned for the box every copy's point of the ball lies in (repeat).
+  enum class Inside { whole, point, copies };
+  Inside inside = Inside::whole;
 };
 
 std::span<const GraphUnary> graph_unaries();

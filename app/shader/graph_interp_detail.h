@@ -3,7 +3,9 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <vector>
 
+#include "scene/graph_vocab.h"
 #include "shader/graph_interp.h"
 
 namespace ms::graph_detail {
@@ -18,6 +20,8 @@ inline constexpr int kHeader = 3 + 3 * kGridLevels;
 
 // msGraphPrim and msGraphOp: a case for each function the graph uses.
 std::string dispatch_glsl(const SceneGraph& g);
+// Parameters read from the float buffer at o, as GLSL arguments (", a, vec3(b...)").
+std::string buffer_args(const std::vector<GraphParam>& params);
 // The defines sdf_shaders/graph_interp.glsl reads; `copies` of its loop body.
 std::string defines(const SceneGraph& g, const GraphEvalPlan& plan, const GraphBuffers& b, int copies);
 

@@ -38,10 +38,11 @@ std::string solid(std::mt19937& rng) {
 
 std::string profile(std::mt19937& rng) {
   const std::string t = R"(, "translate": )" + vec(rng, -0.05f, 0.05f, 2) + R"(, "rotate": )" + num(u(rng, -90, 90));
-  switch (rng() % 4) {
+  switch (rng() % 5) {
     case 0: return R"({"sdf": "sd2Circle", "r": )" + num(u(rng, 0.05f, 0.2f)) + t + "}";
     case 1: return R"({"sdf": "sd2Box", "b": )" + vec(rng, 0.05f, 0.2f, 2) + t + "}";
     case 2: return R"({"sdf": "sd2Star", "r": 0.2, "ri": 0.1, "n": 5)" + t + "}";
+    case 3: return R"({"sdf": "sd2Polygon", "v": [[-0.2, -0.1], [0.05, -0.1], [0.05, -0.2], [0.2, 0.02], [0.05, 0.2], [0.05, 0.1], [-0.2, 0.1]])" + t + "}";
     default:
       return R"({"op": "opSubtraction", "children": [{"sdf": "sd2Hexagon", "r": 0.2}, {"sdf": "sd2Circle", "r": 0.08}])" + t + "}";
   }
@@ -72,7 +73,7 @@ std::string modifier(std::mt19937& rng, std::string_view m, int depth) {
   if (m == "twist") return with(R"("k": )" + num(u(rng, -3, 3)), child);
   if (m == "bend") return with(R"("k": )" + num(u(rng, -2, 2)), child);
   if (m == "elongate") return with(R"("h": )" + vec(rng, 0.0f, 0.15f), child);
-  if (m == "repeat") return with(R"("spacing": [0.35, 0, 0.3], "count": [1, 0, 1])", solid(rng));
+  if (m == "repeat") return with(R"("spacing": [0.35, 0, 0.3], "count": [1, 0, 1])", child);
   if (m == "polar") return with(R"("count": 5, "radius": 0.25)", solid(rng));
   if (m == "mirror") return with(R"("n": [0.6, 0.8, 0], "w": 0.05)", child);
   if (m == "symmetry") return with(R"("axes": [1, 0, 1])", child);
@@ -138,6 +139,64 @@ TEST_P(GraphModifierPrune, ThirtyRandomGraphsGiveTheWholeGraphsImage) {
 }
 
 INSTANTIATE_BOTH_DISPATCHES(GraphModifierPrune);
+
+// A row of n small spheres 0.2 apart along x, centred: a child worth
+// pruning inside.
+std::string row(int n, float y = 0.0f) {
+  std::string kids;
+  for (int i = 0; i < n; ++i)
+    kids += std::string(i ? ", " : "") + R"({"sdf": "sdSphere", "r": 0.06, "translate": [)" +
+            num(0.2f * (static_cast<float>(i) - 0.5f * static_cast<float>(n - 1))) + ", " + num(y) + ", 0]}";
+  return R"({"op": "opUnion", "children": [)" + kids + "]}";
+}
+std::string row2(int n) {  // the same as a profile: circles along x
+  std::string kids;
+  for (int i = 0; i < n; ++i)
+    kids += std::string(i ? ", " : "") + R"({"sdf": "sd2Circle", "r": 0.06, "translate": [)" +
+            num(0.2f * (static_cast<float>(i) - 0.5f * static_cast<float>(n - 1))) + ", 0.3]}";
+  return R"({"op": "opUnion", "children": [)" + kids + "]}";
+}
+
+// The pass goes inside the modifiers whose point map stretches nothing, and
+// inside a repetition: each cell keeps only the few spheres of the child
+// near it (counted in instructions, the fine cells' mean list of render
+// -v), and the image and steps are --no-prune's. A twist is kept whole:
+// its list is its whole program wherever it is the only shape.
+TEST(GraphModifierPruneInside, ModifiersThatStretchNothingArePrunedInside) {
+  TempDir dir;
+  write_file(dir / "s.toml", kScene);
+  const std::string r16 = row(16);
+  const std::pair<std::string, std::string> cases[] = {
+      {"round", R"("r": 0.02, "children": [)" + r16 + "]"},
+      {"shell", R"("thickness": 0.02, "children": [)" + r16 + "]"},
+      {"symmetry", R"("axes": [0, 1, 0], "children": [)" + row(16, 0.2f) + "]"},
+      {"mirror", R"("n": [0, 1, 0], "w": 0, "children": [)" + row(16, 0.2f) + "]"},
+      {"elongate", R"("h": [0, 0.1, 0], "children": [)" + r16 + "]"},
+      {"extrude", R"("h": 0.2, "children": [)" + row2(16) + "]"},
+      {"revolve", R"("offset": 0.0, "children": [)" + row2(8) + "]"},
+      {"repeat", R"("spacing": [0, 0, 1.2], "count": [0, 0, 1], "children": [)" + r16 + "]"},
+      {"twist", R"("k": 0.5, "children": [)" + r16 + "]"},
+  };
+  for (const auto& [op, body] : cases) {
+    write_file(dir / "g.json", R"({"root": {"op": ")" + op + R"(", )" + body + "}}");
+    std::vector<std::string> args = {"render", (dir / "s.toml").string(), "--size", "48x27", "--aov", "steps",
+                                     "--graph-eval", "interpreter", "-v", "-o", (dir / "p.exr").string()};
+    const RunResult pruned = run_marchstudio(args);
+    ASSERT_EQ(pruned.exit_code, 0) << op << ": " << pruned.err;
+    const Image whole = render(dir.path(), "w.exr", {"--graph-eval", "interpreter", "--no-prune"});
+    const Image p = read_image(dir / "p.exr");
+    EXPECT_LE(max_diff(p, whole), 1.0 / 255 + 1e-6) << op;
+    EXPECT_EQ(channel(p, "steps"), channel(whole, "steps")) << op;
+    const std::size_t at = pruned.err.find("mean list "), of = pruned.err.find("instructions (of ");
+    ASSERT_TRUE(at != std::string::npos && of != std::string::npos) << op << ": " << pruned.err;
+    const double mean = std::stod(pruned.err.substr(at + 10)), all = std::stod(pruned.err.substr(of + 17));
+    // A repetition's cells between two copies look at both (0.35 of the
+    // program here, where the three rows written out as one flat union
+    // keep about as many spheres a cell).
+    if (op == "twist") EXPECT_EQ(mean, all) << op;
+    else EXPECT_LT(mean, (op == "repeat" ? 0.45 : 0.3) * all) << op << ": " << pruned.err;
+  }
+}
 
 }  // namespace
 }  // namespace ms::test
