@@ -84,6 +84,10 @@ layout(local_size_x = 64) in;
 // uLevel 0 prunes coarse cells, 1 fine ones; uGrid is the grid level.
 uniform int uLevel;
 uniform int uGrid;
+// 1: only the cells of this level msDirty lists (its count first), as a
+// new pose of the graph needs (shader/graph_repose.h).
+uniform int uSubset;
+layout(std430, binding = 8) readonly buffer MsDirty { uint msDirty[]; };
 uint gList[MS_GRID_LIST];
 uint gBase;
 void msPut(uint at, uint v) {
@@ -100,6 +104,10 @@ void main() {
   ivec3 fine = ivec3(gd.xyz), coarseDims = (fine + MS_GRID_SPLIT - 1) / MS_GRID_SPLIT;
   ivec3 dims = uLevel == 0 ? coarseDims : fine;
   uint cellIndex = gl_GlobalInvocationID.x;
+  if (uSubset != 0) {
+    if (cellIndex >= msDirty[0]) return;
+    cellIndex = msDirty[1u + cellIndex];
+  }
   if (cellIndex >= uint(dims.x * dims.y * dims.z)) return;
   ivec3 c = ivec3(int(cellIndex) % dims.x, (int(cellIndex) / dims.x) % dims.y, int(cellIndex) / (dims.x * dims.y));
   vec3 size = uintBitsToFloat(gb.xyz) * (uLevel == 0 ? float(MS_GRID_SPLIT) : 1.0);
@@ -226,5 +234,8 @@ void main() {
       cell = uvec4(pool.x + at, len, 0u, 0u);
     }
   }
+  // The field's upper bound on the cell, which a new pose reads to tell
+  // the cells a moved node cannot reach (shader/graph_repose.h).
+  cell.z = floatBitsToUint(st[0].hi);
   msSetCell(cellIndex, cell, h0);
 }

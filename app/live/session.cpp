@@ -213,16 +213,20 @@ bool Session::pose_graph(double time) {
     Scene scene = scene_;
     pose_graph_at(scene, time);  // throws where a value breaks the graph, as render would
     const GraphParts shape = graph_parts(scene, shape_opts_);
-    const bool same = shape.prune_src.text == prune_text_;
-    field = std::make_shared<GraphField>(shape, same ? prune_ : nullptr);
-    if (!same && field->prune()) {
-      prune_ = field->prune();
-      prune_text_ = shape.prune_src.text;
+    if (field_->repose(shape)) {
+      field = field_;  // the same grid: only where a node moved is pruned again
+    } else {
+      const bool same = shape.prune_src.text == prune_text_;
+      field = std::make_shared<GraphField>(shape, same ? prune_ : nullptr);
+      if (!same && field->prune()) {
+        prune_ = field->prune();
+        prune_text_ = shape.prune_src.text;
+      }
     }
     now.ok = true;
   } catch (const Error&) {
     // Drawn at the file's pose instead: the field that matches it.
-    field = std::make_shared<GraphField>(*shape_, prune_);
+    field = field_->repose(*shape_) ? field_ : std::make_shared<GraphField>(*shape_, prune_);
   }
   field_ = std::move(field);
   now.ms = ms_since(t0);

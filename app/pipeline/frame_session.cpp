@@ -23,6 +23,7 @@ FramePrograms::FramePrograms(const Context& ctx, ProgramCache& cache, const Prep
 
 int FramePrograms::reshape(const GraphParts& shape) {
   if (!field_) fail_system("internal: a graph reshaped without its field");
+  if (field_->repose(shape)) return 0;  // the same grid: only where a node moved is pruned again
   const bool same = shape.prune_src.text == prune_text_;
   field_ = std::make_unique<GraphField>(shape, same ? field_->prune() : nullptr, false);
   prune_text_ = shape.prune_src.text;

@@ -229,8 +229,9 @@ void reshape_graph(FrameSession& session, const Scene& posed, const AssembleOpti
   const GraphParts shape = graph_parts(posed, opts);
   const int compiled = session.job().reshape(shape);
   if (verbose)
-    std::fprintf(stderr, "marchstudio: frame %d: graph posed, %ld programs compiled, pruning %.1f ms\n", frame,
-                 session.cache().misses() - before + compiled, session.job().field()->build_ms());
+    std::fprintf(stderr, "marchstudio: frame %d: graph posed, %ld programs compiled, pruning %.1f ms (%zu of %zu cells)\n",
+                 frame, session.cache().misses() - before + compiled, session.job().field()->build_ms(),
+                 session.job().field()->pruned_cells(), session.job().field()->cells());
 }
 
 // The frames to render, drawn and handed to the writers in order.

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -25,12 +27,13 @@ void upload(GLuint buf, const std::vector<T>& data, std::size_t extra_bytes = 0)
 }  // namespace
 
 GraphField::GraphField(const GraphParts& parts, std::shared_ptr<const Program> prune, bool disk_cache)
-    : plan_(parts.plan), program_(parts.buffers.program.size()), prune_(std::move(prune)) {
+    : parts_(parts), program_(parts.buffers.program.size()), prune_(std::move(prune)) {
   const GraphBuffers& b = parts.buffers;
   const GraphEvalPlan& plan = parts.plan;
   if (plan.pruned() && !prune_) prune_ = std::make_shared<const Program>(Program::Compute{}, parts.prune_src);
   if (!plan.pruned()) prune_.reset();
-  glGenBuffers(5, buffers_);
+  glGenBuffers(6, buffers_);
+  upload(buffers_[5], std::vector<std::uint32_t>{0u});
   const std::size_t cells = plan.prune ? cell_count(plan) : 0, coarse = plan.prune ? coarse_cell_count(plan) : 0;
   upload(buffers_[0], b.nodes);
   upload(buffers_[1], b.floats);
@@ -53,20 +56,9 @@ GraphField::GraphField(const GraphParts& parts, std::shared_ptr<const Program> p
   std::string refused;
   from_cache_ = cache.load(kept, sizes, &refused);
   if (!from_cache_) run_pass(*prune_);
-  std::vector<std::uint32_t> out(cells * 4);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[3]);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(first * sizeof(std::uint32_t)),
-                     static_cast<GLsizeiptr>(out.size() * sizeof(std::uint32_t)), out.data());
+  pruned_cells_ = cells;
+  measure();
   build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  // The mean over level 0, the bounds that rays march; the outer levels'
-  // cells are larger and rarely visited.
-  const std::size_t inner = cell_count(plan.levels[0]);
-  double sum = 0.0;
-  for (std::size_t i = 0; i < cells; ++i) {
-    if (i < inner) sum += out[i * 4 + 1];
-    overflowed_ += out[i * 4 + 3] == 1u;
-  }
-  mean_list_ = inner > 0 ? sum / static_cast<double>(inner) : 0.0;
   // A refused entry is replaced whatever the pass took: it was kept once,
   // and left as it is it would be refused again on every run.
   const bool written = !from_cache_ && (build_ms_ >= prune_cache_ms() || !refused.empty()) && cache.save(kept, sizes);
@@ -75,20 +67,104 @@ GraphField::GraphField(const GraphParts& parts, std::shared_ptr<const Program> p
                   (written ? " and written again" : "");
 }
 
-void GraphField::run_pass(const Program& prune) {
+void GraphField::run_pass(const Program& prune, const ReposeCells* only) {
   glUseProgram(prune.id());
+  prune.set("uSubset", only ? 1 : 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, buffers_[5]);
   // Per grid level, coarse cells first, then each fine cell from its coarse cell's list.
   for (int grid = 0; grid < kGridLevels; ++grid) {
     prune.set("uGrid", grid);
     const GridLevel& l = plan_.levels[grid];
     for (int level = 0; level < 2; ++level) {
+      const std::vector<std::uint32_t>* subset =
+          only ? &(level == 0 ? only->coarse : only->fine)[static_cast<std::size_t>(grid)] : nullptr;
+      if (subset) {
+        if (subset->empty()) continue;
+        std::vector<std::uint32_t> list{static_cast<std::uint32_t>(subset->size())};
+        list.insert(list.end(), subset->begin(), subset->end());
+        upload(buffers_[5], list);
+      }
       prune.set("uLevel", level);
       const glm::ivec3 c = coarse_dims(l);
-      const std::size_t n = level == 0 ? static_cast<std::size_t>(c.x) * c.y * c.z : cell_count(l);
+      const std::size_t n = subset ? subset->size()
+                            : level == 0 ? static_cast<std::size_t>(c.x) * c.y * c.z
+                                         : cell_count(l);
       glDispatchCompute(static_cast<GLuint>((n + 63) / 64), 1, 1);
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
   }
+}
+
+// The fine cells' mean list over level 0, the bounds that rays march (the
+// outer levels' cells are larger and rarely visited), and the cells that
+// kept their coarse cell's list.
+void GraphField::measure() {
+  const std::size_t cells = cell_count(plan_), first = grid_header(plan_, parts_.buffers).size();
+  std::vector<std::uint32_t> out(cells * 4);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[3]);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(first * sizeof(std::uint32_t)),
+                     static_cast<GLsizeiptr>(out.size() * sizeof(std::uint32_t)), out.data());
+  const std::size_t inner = cell_count(plan_.levels[0]);
+  double sum = 0.0;
+  overflowed_ = 0;
+  for (std::size_t i = 0; i < cells; ++i) {
+    if (i < inner) sum += out[i * 4 + 1];
+    overflowed_ += out[i * 4 + 3] == 1u;
+  }
+  mean_list_ = inner > 0 ? sum / static_cast<double>(inner) : 0.0;
+}
+
+std::size_t GraphField::cells() const { return plan_.prune ? cell_count(plan_) : 0; }
+
+bool GraphField::repose(const GraphParts& next) {
+  const GraphBuffers &b = parts_.buffers, &n = next.buffers;
+  if (!plan_.pruned() || !prune_ || next.prune_src.text != parts_.prune_src.text || b.program != n.program ||
+      b.nodes.size() != n.nodes.size() || b.floats.size() != n.floats.size() || !same_grid(plan_, next.plan))
+    return false;
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t coarse = coarse_cell_count(plan_);
+  // The cells (the coarse ones after the pool's count and padding): each
+  // holds the field's upper bound on it; one inside the finer level is all 0.
+  std::vector<std::uint32_t> head((coarse + 1) * 4), fine(cell_count(plan_) * 4);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[4]);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(head.size() * sizeof(std::uint32_t)),
+                     head.data());
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[3]);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER,
+                     static_cast<GLintptr>(grid_header(plan_, b).size() * sizeof(std::uint32_t)),
+                     static_cast<GLsizeiptr>(fine.size() * sizeof(std::uint32_t)), fine.data());
+  const auto bound = [](const std::uint32_t* c) {
+    float u;
+    std::memcpy(&u, c + 2, sizeof u);
+    return (c[0] | c[1] | c[2] | c[3]) == 0u ? std::nanf("") : u;
+  };
+  GridUpper upper;
+  for (std::size_t i = 0; i < coarse; ++i) upper.coarse.push_back(bound(head.data() + 4 * (i + 1)));
+  for (std::size_t i = 0; i < fine.size() / 4; ++i) {
+    upper.fine.push_back(bound(fine.data() + 4 * i));
+    upper.fine_far.push_back(fine[4 * i + 3] == 2u);
+  }
+  std::optional<ReposeCells> cells = repose_cells(parts_, next, upper);
+  // A pool three quarters taken by earlier poses starts again from empty.
+  if (cells && head[0] > plan_.pool / 4 * 3) cells.reset();
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[0]);
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(n.nodes.size() * sizeof(std::uint32_t)), n.nodes.data());
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[1]);
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(n.floats.size() * sizeof(float)), n.floats.data());
+  if (!cells) {
+    const std::uint32_t zero = 0u;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[4]);
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof zero, &zero);
+  }
+  bind();
+  run_pass(*prune_, cells ? &*cells : nullptr);
+  pruned_cells_ = cells ? cells->count() : cell_count(plan_);
+  parts_ = next;
+  from_cache_ = false;
+  cache_note_.clear();
+  measure();
+  build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return true;
 }
 
 std::string GraphField::summary() const {
@@ -103,10 +179,13 @@ std::string GraphField::summary() const {
   std::snprintf(buf, sizeof buf, ", %s %.1f ms, mean list %.1f instructions (of %zu), %d cells kept their coarse list",
                 from_cache_ ? "pruned grid read from the cache in" : "pruning", build_ms_, mean_list_, program_,
                 overflowed_);
-  return grid + buf + cache_note_;
+  std::string again;
+  if (pruned_cells_ < cells())
+    again = ", " + std::to_string(pruned_cells_) + " of " + std::to_string(cells()) + " cells pruned again";
+  return grid + buf + again + cache_note_;
 }
 
-GraphField::~GraphField() { glDeleteBuffers(5, buffers_); }
+GraphField::~GraphField() { glDeleteBuffers(6, buffers_); }
 
 void GraphField::bind() const {
   for (GLuint i = 0; i < 5; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3 + i, buffers_[i]);

@@ -16,6 +16,7 @@
 #include "render/program.h"
 #include "shader/assemble.h"
 #include "shader/graph_interp.h"
+#include "shader/graph_repose.h"
 
 namespace ms {
 
@@ -34,6 +35,17 @@ class GraphField {
   GraphField& operator=(const GraphField&) = delete;
 
   void bind() const;
+  // The same graph at another pose (an animated graph's next frame):
+  // uploads `next`'s node buffers and prunes again only the coarse cells
+  // where a moved node may change the field (shader/graph_repose.h), or
+  // every cell where that cannot be told; compiles nothing. False, with
+  // nothing changed, when `next` needs a field of its own (another plan or
+  // program).
+  bool repose(const GraphParts& next);
+  // Fine cells the last pruning pass pruned (all of them but after a
+  // repose), of how many.
+  std::size_t pruned_cells() const { return pruned_cells_; }
+  std::size_t cells() const;
   double build_ms() const { return build_ms_; }
   bool from_cache() const { return from_cache_; }
   // "grid 16x23x22, pruning 412.3 ms, mean list 23.4 instructions (of 1999), 3 cells kept their coarse list",
@@ -43,8 +55,11 @@ class GraphField {
   const std::shared_ptr<const Program>& prune() const { return prune_; }
 
  private:
-  void run_pass(const Program& prune);
-  GLuint buffers_[5] = {0, 0, 0, 0, 0};  // nodes, floats, program and lists, cells, coarse cells
+  void run_pass(const Program& prune, const ReposeCells* only = nullptr);
+  void measure();
+  GLuint buffers_[6] = {0, 0, 0, 0, 0, 0};  // nodes, floats, program and lists, cells, coarse cells, cells to repose
+  GraphParts parts_;  // the shape at the pose the lists are for
+  std::size_t pruned_cells_ = 0;
   double build_ms_ = 0.0;
   bool from_cache_ = false;
   // Over the fine cells: the mean list length (a cell that would overflow
@@ -52,7 +67,7 @@ class GraphField {
   double mean_list_ = -1.0;
   int overflowed_ = 0;
   std::string cache_note_;  // "; the cache's entry ... not used ...", or empty
-  GraphEvalPlan plan_;
+  const GraphEvalPlan& plan_ = parts_.plan;
   std::size_t program_ = 0;
   std::shared_ptr<const Program> prune_;
 };

@@ -194,6 +194,7 @@ GraphParts graph_parts(const Scene& scene, const AssembleOptions& opts) {
   GraphParts parts;
   if (!scene.graph) return parts;
   ++assemble_stats().graph_parts;
+  parts.graph = scene.graph;
   const GraphBox box = scene.bounds.kind == BoundsKind::box ? GraphBox{scene.bounds.min, scene.bounds.max}
                                                             : scene.graph->root_node().box;
   parts.plan = plan_graph_eval(*scene.graph, opts.graph_eval, opts.prune, box, opts.cell_size);

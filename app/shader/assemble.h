@@ -65,6 +65,7 @@ struct GraphParts {
   GraphEvalPlan plan;
   GraphBuffers buffers;
   ShaderSource prune_src;
+  std::shared_ptr<const SceneGraph> graph;  // what it was derived from: a new pose finds what moved (graph_repose.h)
 };
 // Derives the shape from the scene's graph and opts' graph_eval, prune and
 // cell_size. Callers go through prepare_graph_shape(), once per graph; a

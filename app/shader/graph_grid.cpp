@@ -40,6 +40,8 @@ std::size_t volume_of(glm::ivec3 d) {
 
 }  // namespace
 
+int grid_split() { return graph_detail::kSplit; }
+
 glm::ivec3 coarse_dims(const GridLevel& level) { return (level.dims + graph_detail::kSplit - 1) / graph_detail::kSplit; }
 
 std::size_t cell_count(const GridLevel& level) { return volume_of(level.dims); }

@@ -57,6 +57,7 @@ struct GraphBuffers {
   int frames = 0;                    // the deepest nesting of modifiers
 };
 GraphBuffers graph_buffers(const SceneGraph& g);
+int grid_split();                                          // a coarse cell's fine cells along each axis
 std::size_t cell_count(const GridLevel& level);            // one level's fine cells
 glm::ivec3 coarse_dims(const GridLevel& level);            // its coarse cells (kSplit^3 fine ones each) along x, y, z
 std::size_t cell_count(const GraphEvalPlan& plan);         // fine cells of every level: the tracer's
