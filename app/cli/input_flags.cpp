@@ -59,14 +59,6 @@ std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector
   return out;
 }
 
-AssembleOptions assemble_options(const std::string& shader_dir, const std::vector<std::string>& allow_include,
-                                 bool no_specialize, const std::vector<UniformValue>& uniforms) {
-  AssembleOptions opts{resolve_shader_dir(shader_dir), {}, parse_allow_include(allow_include)};
-  opts.specialize = no_specialize ? Specialization::generic : Specialization::folded;
-  opts.uniforms = uniforms;
-  return opts;
-}
-
 std::vector<fs::path> parse_allow_include(const std::vector<std::string>& flags) {
   std::vector<fs::path> dirs;
   for (const std::string& f : flags) {

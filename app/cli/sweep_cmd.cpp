@@ -52,19 +52,17 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
          "The frame time the fronts and the plot use: gpu (GL timer), wall, cpu (this process's CPU time: "
          "steadier on a shared machine), or auto (default: cpu on a software GL such as llvmpipe, else gpu)")
       ->check(one_of({"auto", "gpu", "wall", "cpu"}));
-  cmd->add_option("--preset", a.preset, "The preset the rows vary around (default balanced)")
-      ->check(one_of(quality_preset_names()));
   cmd->add_option("--only", a.only, "Measure only these rows of the grid, by name (e.g. textbook,balanced)")
       ->delimiter(',');
   cmd->add_option("-o,--out", a.out, "Directory for <scene>.sweep.csv, .json and .png (default .)");
   add_backend_flag(cmd, a.backend);
-  add_shader_dir_flag(cmd, a.shader_dir);
-  add_allow_include_flag(cmd, a.allow_include);
   cmd->add_flag("-q,--quiet", a.quiet, "No progress lines on stderr");
-  cmd->add_flag("--no-specialize", a.no_specialize,
-                "Measure the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
-  add_graph_flags(cmd, a.graph_eval, a.no_prune);
-  add_override_flags(cmd, a.overrides);
+  LoadFlagChoice load;
+  load.defines = load.disable = load.shadertoy = false;
+  load.preset_help = "The preset the rows vary around (default balanced)";
+  load.no_specialize_help =
+      "Measure the generic shader: every feature compiled, values as uniforms (docs/specialization.md)";
+  add_load_flags(cmd, a.load, load);
   add_dispatch_flag(cmd, a.dispatch,
                     "Draw every row as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
   add_compute_group_flag(cmd, a.compute_group);
@@ -84,19 +82,20 @@ std::string command_line(const SweepArgs& a) {
   std::string c = "marchstudio sweep " + a.input + " --size " + size_text(a.size) + " --frames " + std::to_string(a.frames) +
                   " --rounds " + std::to_string(a.rounds) + " --warmup " + std::to_string(a.warmup) + " --spp " + std::to_string(a.spp) + " --ref-spp " +
                   std::to_string(a.ref_spp) + " --grid " + sweep_grid_name(a.grid);
-  if (a.preset != "balanced") c += " --preset " + a.preset;
+  const LoadFlags& l = a.load;
+  if (l.preset != "balanced") c += " --preset " + l.preset;
   if (a.time_by) c += std::string(" --time-by ") + sweep_clock_name(*a.time_by);
   if (!a.only.empty()) {
     c += " --only ";
     for (size_t i = 0; i < a.only.size(); ++i) c += (i ? "," : "") + a.only[i];
   }
   if (a.backend != Backend::automatic) c += std::string(" --backend ") + backend_name(a.backend);
-  if (a.no_specialize) c += " --no-specialize";
-  if (a.graph_eval != GraphEval::auto_)
-    c += std::string(" --graph-eval ") + (a.graph_eval == GraphEval::inline_ ? "inline" : "interpreter");
-  if (a.no_prune) c += " --no-prune";
+  if (l.no_specialize) c += " --no-specialize";
+  if (l.graph_eval != GraphEval::auto_)
+    c += std::string(" --graph-eval ") + (l.graph_eval == GraphEval::inline_ ? "inline" : "interpreter");
+  if (l.no_prune) c += " --no-prune";
   if (a.dispatch != Dispatch::fragment) c += std::string(" --dispatch ") + dispatch_name(a.dispatch);
-  for (const std::string& o : a.overrides.as_given) {  // "--set KEY=VALUE": the value quoted, brackets are shell globs
+  for (const std::string& o : l.overrides.as_given) {  // "--set KEY=VALUE": the value quoted, brackets are shell globs
     const size_t space = o.find(' ');
     std::string value = o.substr(space + 1);
     for (size_t at = 0; (at = value.find('\'', at)) != std::string::npos; at += 4) value.replace(at, 1, "'\\''");
@@ -110,9 +109,7 @@ std::string command_line(const SweepArgs& a) {
 int run_sweep_command(const SweepArgs& a) {
   const Backend backend = a.backend;
   // The shader render and bench build: specialized to the scene (and each row's quality).
-  AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
-  opts.graph_eval = a.graph_eval;
-  opts.prune = !a.no_prune;
+  AssembleOptions opts = load_assemble_options(a.load);
   SweepSettings s;
   const ImageSize size = a.size;
   s.width = size.width;
@@ -129,7 +126,7 @@ int run_sweep_command(const SweepArgs& a) {
   s.ref_spp = a.ref_spp;
   s.grid = a.grid;
   if (a.time_by) s.clock = *a.time_by;
-  LoadedInput loaded = load_input_scene(a.input, {}, opts, {}, a.overrides.set);
+  LoadedInput loaded = load_input_scene(a.input, {}, opts, {}, a.load.overrides.set);
   prepare_graph_shape(loaded.scene, opts);  // once: the rows of its cell size take it from here
   assemble_input(loaded, opts);
   const LoadedInput& in = loaded;
@@ -142,11 +139,11 @@ int run_sweep_command(const SweepArgs& a) {
   s.group = group.value_or(ComputeGroup{});
   check_compute_input(s.dispatch, in);
 
-  std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.preset);
+  std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.load.preset);
   if (opts.graph) {  // the pruning grid's cells: half and twice the planned size
     const GraphEvalPlan& plan = opts.graph->plan;
     const glm::vec3 cell = plan.pruned() ? plan.levels[0].cell : glm::vec3(0.0f);
-    for (SweepConfig& c : cell_size_rows(in.scene.quality, std::max({cell.x, cell.y, cell.z}), a.preset))
+    for (SweepConfig& c : cell_size_rows(in.scene.quality, std::max({cell.x, cell.y, cell.z}), a.load.preset))
       configs.push_back(std::move(c));
   }
   if (!a.only.empty()) {
