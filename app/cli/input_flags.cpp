@@ -8,7 +8,7 @@
 #include "cli/flag_checks.h"
 #include "core/error.h"
 #include "pipeline/shader_dir.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "preprocess/glsl_scan.h"
 
 namespace ms {

@@ -18,7 +18,7 @@
 #include "cli/override_flags.h"
 #include "cli/render_cmd.h"
 #include "pipeline/input.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "importers/json_brief.h"
 #include "io/input_file.h"
 

@@ -16,7 +16,7 @@
 #include "io/image_io.h"
 #include "io/sequence.h"
 #include "scene/quality.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "scene/toml_guard.h"
 #include "scene/toml_read.h"
 #include "preprocess/glsl_scan.h"

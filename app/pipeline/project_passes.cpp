@@ -1,4 +1,4 @@
-#include "render/project_passes.h"
+#include "pipeline/project_passes.h"
 
 #include <algorithm>
 #include <map>
@@ -11,7 +11,7 @@
 #include "io/image_io.h"
 #include "io/input_file.h"
 #include "io/video_input.h"
-#include "render/cube_input.h"
+#include "pipeline/cube_input.h"
 #include "preprocess/confine.h"
 #include "importers/glslviewer.h"
 #include "importers/shadertoy.h"
@@ -147,7 +147,7 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
         case InputKind::buffer:
         case InputKind::keyboard:
           break;
-        case InputKind::cubemap:  // Cube A, six face files or one equirectangular image (render/cube_input.h)
+        case InputKind::cubemap:  // Cube A, six face files or one equirectangular image (pipeline/cube_input.h)
           if (in.buffer != kCubeA) g.cube = load_cube_input(in, s, media.roots, where, origin, warnings, cubes);
           break;
         case InputKind::texture: {
