@@ -104,16 +104,11 @@ std::string command_line(const SweepArgs& a) {
   return c;
 }
 
-}  // namespace
-
-int run_sweep_command(const SweepArgs& a) {
-  const Backend backend = a.backend;
-  // The shader render and bench build: specialized to the scene (and each row's quality).
-  AssembleOptions opts = load_assemble_options(a.load);
+// The measuring settings from the flags, each checked.
+SweepSettings sweep_settings(const SweepArgs& a) {
   SweepSettings s;
-  const ImageSize size = a.size;
-  s.width = size.width;
-  s.height = size.height;
+  s.width = a.size.width;
+  s.height = a.size.height;
   check_range(a.frames, 1, 10000, "--frames");
   check_range(a.warmup, 0, 10000, "--warmup");
   check_range(a.rounds, 1, 100, "--rounds");
@@ -126,6 +121,56 @@ int run_sweep_command(const SweepArgs& a) {
   s.ref_spp = a.ref_spp;
   s.grid = a.grid;
   if (a.time_by) s.clock = *a.time_by;
+  s.dispatch = a.dispatch;
+  s.group = a.compute_group.value_or(ComputeGroup{});
+  return s;
+}
+
+// The grid's rows, a graph's cell-size rows added, cut to --only's.
+std::vector<SweepConfig> sweep_rows(const SweepArgs& a, const LoadedInput& in, const AssembleOptions& opts) {
+  std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, a.grid, a.load.preset);
+  if (opts.graph) {  // the pruning grid's cells: half and twice the planned size
+    const GraphEvalPlan& plan = opts.graph->plan;
+    const glm::vec3 cell = plan.pruned() ? plan.levels[0].cell : glm::vec3(0.0f);
+    for (SweepConfig& c : cell_size_rows(in.scene.quality, std::max({cell.x, cell.y, cell.z}), a.load.preset))
+      configs.push_back(std::move(c));
+  }
+  if (a.only.empty()) return configs;
+  std::vector<SweepConfig> kept;
+  for (const std::string& name : a.only) {
+    const auto it = std::find_if(configs.begin(), configs.end(), [&](const SweepConfig& c) { return c.name == name; });
+    if (it == configs.end())
+      fail_input("no row '" + name + "' in the " + sweep_grid_name(a.grid) + " grid", {}, 0, "--only",
+                 "row names are in the first column of the CSV, e.g. textbook, balanced, omega=1.5");
+    kept.push_back(*it);
+  }
+  return kept;
+}
+
+// --dispatch auto: probed on the scene's own pass (pipeline/dispatch_probe.h).
+void choose_dispatch(FrameSession& session, const LoadedInput& in, const Scene& posed, const AssembleOptions& opts,
+                     const SweepArgs& a, SweepSettings& s) {
+  PreparedFrame probe;
+  probe.in = in;
+  probe.in.scene.bloom.enabled = false;  // the rows draw without bloom
+  probe.opts = opts;
+  probe.opts.graph = nullptr;  // as before: the probe times the pass without building a pruned grid
+  probe.post_src = assemble_post(in.scene.render.tonemap, true, opts);
+  StillFrame f;
+  f.in.scene = &posed;
+  f.in.time = s.time;
+  f.params.exposure = posed.render.exposure;
+  const DispatchChoice c = session.load(probe).choose(s.dispatch, a.compute_group, f, !a.quiet);
+  s.dispatch = c.dispatch;
+  s.group = c.group;
+}
+
+}  // namespace
+
+int run_sweep_command(const SweepArgs& a) {
+  // The shader render and bench build: specialized to the scene (and each row's quality).
+  AssembleOptions opts = load_assemble_options(a.load);
+  SweepSettings s = sweep_settings(a);
   LoadedInput loaded = load_input_scene(a.input, {}, opts, {}, a.load.overrides.set);
   prepare_graph_shape(loaded.scene, opts);  // once: the rows of its cell size take it from here
   assemble_input(loaded, opts);
@@ -134,29 +179,8 @@ int run_sweep_command(const SweepArgs& a) {
     fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
                "wrap the map in a scene .toml");
   s.time = in.scene.render.time;
-  s.dispatch = a.dispatch;
-  const std::optional<ComputeGroup> group = a.compute_group;
-  s.group = group.value_or(ComputeGroup{});
   check_compute_input(s.dispatch, in);
-
-  std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.load.preset);
-  if (opts.graph) {  // the pruning grid's cells: half and twice the planned size
-    const GraphEvalPlan& plan = opts.graph->plan;
-    const glm::vec3 cell = plan.pruned() ? plan.levels[0].cell : glm::vec3(0.0f);
-    for (SweepConfig& c : cell_size_rows(in.scene.quality, std::max({cell.x, cell.y, cell.z}), a.load.preset))
-      configs.push_back(std::move(c));
-  }
-  if (!a.only.empty()) {
-    std::vector<SweepConfig> kept;
-    for (const std::string& name : a.only) {
-      const auto it = std::find_if(configs.begin(), configs.end(), [&](const SweepConfig& c) { return c.name == name; });
-      if (it == configs.end())
-        fail_input("no row '" + name + "' in the " + sweep_grid_name(a.grid) + " grid", {}, 0, "--only",
-                   "row names are in the first column of the CSV, e.g. textbook, balanced, omega=1.5");
-      kept.push_back(*it);
-    }
-    configs = std::move(kept);
-  }
+  const std::vector<SweepConfig> configs = sweep_rows(a, in, opts);
   // Outputs are checked before any work: the directory is made if missing.
   const fs::path dir(a.out);
   std::error_code ec;
@@ -171,24 +195,10 @@ int run_sweep_command(const SweepArgs& a) {
   ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
   ::setenv("__GL_SHADER_DISK_CACHE", "0", 1);
   FrameSession session;
-  const Context& ctx = session.context(backend);
+  const Context& ctx = session.context(a.backend);
   if (!a.time_by) s.clock = ctx.info().software() ? SweepClock::cpu : SweepClock::gpu;
   const Scene posed = animated(in.scene, s.time);
-  if (s.dispatch == Dispatch::automatic) {  // probed on the scene's own pass (pipeline/dispatch_probe.h)
-    PreparedFrame probe;
-    probe.in = in;
-    probe.in.scene.bloom.enabled = false;  // the rows draw without bloom
-    probe.opts = opts;
-    probe.opts.graph = nullptr;  // as before: the probe times the pass without building a pruned grid
-    probe.post_src = assemble_post(in.scene.render.tonemap, true, opts);
-    StillFrame f;
-    f.in.scene = &posed;
-    f.in.time = s.time;
-    f.params.exposure = posed.render.exposure;
-    const DispatchChoice c = session.load(probe).choose(s.dispatch, group, f, !a.quiet);
-    s.dispatch = c.dispatch;
-    s.group = c.group;
-  }
+  if (s.dispatch == Dispatch::automatic) choose_dispatch(session, in, posed, opts, a, s);
   const size_t n = configs.size();
   const SweepResult r = run_sweep(ctx, posed, configs, opts, s, [&](size_t i, const std::string& name) {
     if (a.quiet) return;

@@ -109,6 +109,160 @@ Volume volume_standin(const ShadertoyMedia& m, MissingMedia kind) {
   return v;
 }
 
+namespace {
+
+// One project's media, each file read or decoded once however many
+// channels use it, and where missing ones are looked for.
+struct ProjectMedia {
+  const MediaPlace& place;
+  std::vector<std::string>& warnings;
+  std::map<fs::path, std::shared_ptr<const Image>> decoded;
+  std::map<std::string_view, std::shared_ptr<const Volume>> volumes;  // by hash: one upload per volume
+  std::map<fs::path, std::shared_ptr<const AudioClip>> clips;
+  std::map<std::tuple<fs::path, bool, bool>, std::shared_ptr<VideoStream>> videos;  // one decoder per file, vflip, sRGB
+  std::map<fs::path, std::shared_ptr<const CubeFaces>> cubes;
+};
+
+// A missing medium under --missing-media error: the one-line refusal.
+[[noreturn]] void missing_media(const ProjectMedia& m, const std::string& where, const std::string& what,
+                                const std::string& otherwise) {
+  const ShadertoySettings& s = m.place.s;
+  fail_input(where + ": " + what + " is not in the media directory", m.place.origin, 0, where,
+             (s.media_dir.empty() ? std::string("no media directory") : "looked in " + s.media_dir.string()) +
+                 "; give --media-dir DIR, or --missing-media noise|black to " + otherwise);
+}
+
+void bind_texture(const ProjectInput& in, const std::string& where, ProjectMedia& m, GraphInput& g) {
+  const ShadertoySettings& s = m.place.s;
+  const ShadertoyMedia* known = find_shadertoy_media(in.src);
+  g.single_channel = known && known->single_channel;
+  const std::string what = "texture '" + in.src + "'";
+  const fs::path f = find_media(in, m.place, where, what);
+  if (f.empty()) {
+    if (s.missing_media == MissingMedia::error) missing_media(m, where, what, "stand in for it");
+    const bool noise = s.missing_media == MissingMedia::noise;
+    m.warnings.push_back(where + ": " + what + " is missing; " +
+                         (noise ? "generated noise stands in (not Shadertoy's pixels)" : "black stands in"));
+    g.image = std::make_shared<const Image>(media_standin(in.src, s.missing_media));
+    return;
+  }
+  auto& img = m.decoded[f];
+  if (!img) img = std::make_shared<const Image>(read_image(f, AlphaMode::straight));
+  g.image = img;
+  g.file = f.string();
+  g.eight_bit = !is_hdr(f);
+}
+
+// Volumes are never read from files: a known one is stood in for.
+void bind_volume(const ProjectInput& in, const std::string& where, ProjectMedia& m, GraphInput& g) {
+  const ShadertoySettings& s = m.place.s;
+  const ShadertoyMedia* known = find_shadertoy_media(in.src);
+  if (!known || !known->volume)
+    fail_input(where + ": volume '" + in.src + "' is not one of Shadertoy's volumes", m.place.origin, 0, where,
+               "marchstudio stands in for Gray Noise 3D and RGBA Noise 3D, by their /media/a/<hash>.bin");
+  const std::string what = where + ": volume '" + in.src + "' (" + std::string(known->name) + ")";
+  if (s.missing_media == MissingMedia::error)
+    fail_input(what + " is not read from files", m.place.origin, 0, where,
+               "give --missing-media noise for a generated 32^3 stand-in (not Shadertoy's voxels), or "
+               "--missing-media black");
+  const bool noise = s.missing_media == MissingMedia::noise;
+  m.warnings.push_back(what + ": " + (noise ? "generated noise stands in (not Shadertoy's voxels)" : "black stands in"));
+  auto& vol = m.volumes[known->hash];
+  if (!vol) vol = std::make_shared<const Volume>(volume_standin(*known, s.missing_media));
+  g.volume = vol;
+}
+
+// Found like a texture; missing: an error, or (a warning) the channel as
+// Shadertoy has it before the audio loads: no clip, nothing bound.
+void bind_audio(const ProjectInput& in, const std::string& where, ProjectMedia& m, GraphInput& g) {
+  const std::string what = "audio '" + in.src + "'";
+  const fs::path f = find_media(in, m.place, where, what);
+  if (f.empty()) {
+    if (m.place.s.missing_media == MissingMedia::error) missing_media(m, where, what, "read it as not loaded");
+    m.warnings.push_back(where + ": " + what + " is missing; it reads as Shadertoy's audio before it loads: 0 in both rows");
+    return;
+  }
+  auto& clip = m.clips[f];
+  if (!clip) clip = std::make_shared<const AudioClip>(read_audio(f));
+  g.audio = clip;
+}
+
+// Found like a texture; missing: an error, or the texture's stand-in with a warning.
+void bind_video(const ProjectInput& in, const std::string& where, ProjectMedia& m, GraphInput& g) {
+  const ShadertoySettings& s = m.place.s;
+  const std::string what = "video '" + in.src + "'";
+  const fs::path f = find_media(in, m.place, where, what);
+  if (f.empty()) {
+    if (s.missing_media == MissingMedia::error) missing_media(m, where, what, "stand in for it");
+    const bool noise = s.missing_media == MissingMedia::noise;
+    m.warnings.push_back(where + ": " + what + " is missing; " +
+                         (noise ? "a still of generated noise stands in" : "black stands in"));
+    g.kind = InputKind::texture;  // a still image, bound as a texture is
+    g.image = std::make_shared<const Image>(media_standin(in.src, s.missing_media));
+    return;
+  }
+  auto& v = m.videos[{f, in.sampler.vflip, in.sampler.srgb}];
+  if (!v) v = open_video(f, where);  // ffmpeg missing, a file it cannot decode: one line
+  g.video = v;
+}
+
+// Channel `in` of a pass as the graph binds it, its media found and read.
+GraphInput bind_input(const ProjectInput& in, const std::string& where, ProjectMedia& m) {
+  GraphInput g;
+  g.kind = in.kind;
+  g.buffer = in.buffer;
+  g.sampler = in.sampler;
+  g.uniform = in.uniform;
+  switch (in.kind) {
+    case InputKind::none:
+    case InputKind::buffer:
+    case InputKind::keyboard:
+      break;
+    case InputKind::cubemap:  // Cube A, six face files or one equirectangular image (pipeline/cube_input.h)
+      if (in.buffer != kCubeA)
+        g.cube = load_cube_input(in, m.place.s, m.place.roots, where, m.place.origin, m.warnings, m.cubes);
+      break;
+    case InputKind::texture:
+      bind_texture(in, where, m, g);
+      break;
+    case InputKind::volume:
+      bind_volume(in, where, m, g);
+      break;
+    case InputKind::music:
+    case InputKind::musicstream:
+      bind_audio(in, where, m, g);
+      break;
+    case InputKind::video:
+      bind_video(in, where, m, g);
+      break;
+    case InputKind::mic:
+    case InputKind::webcam:
+      // A live device has no meaning for an offline, reproducible render.
+      fail_input(where + " reads a " + std::string(input_kind_name(in.kind)) +
+                     " input, a live device that an offline render cannot have",
+                 m.place.origin, 0, where, "bind a music or video file instead (docs/shadertoy.md#support)");
+    default:
+      fail_input(where + " reads a " + std::string(input_kind_name(in.kind)) + " input, which marchstudio does not run yet",
+                 m.place.origin, 0, where, "docs/shadertoy.md lists what is supported");
+  }
+  return g;
+}
+
+// --uniform: a name may be declared in any pass (each pass that declares it gets the value).
+void apply_uniforms(std::vector<PassSource>& passes, const std::vector<UniformValue>& uniforms) {
+  if (uniforms.empty()) return;
+  std::vector<bool> found(uniforms.size(), false);
+  std::vector<SceneParam> declared;
+  for (PassSource& ps : passes) {
+    const std::vector<bool> here = set_uniform_defaults(ps.source.text, uniforms);
+    for (size_t i = 0; i < found.size(); ++i) found[i] = found[i] || here[i];
+    for (SceneParam& d : parse_scene_params(ps.source.text)) declared.push_back(std::move(d));
+  }
+  check_uniforms_found(uniforms, found, declared);
+}
+
+}  // namespace
+
 std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const ShadertoySettings& settings,
                                          const AssembleOptions& opts, const fs::path& scene_file,
                                          std::vector<std::string>& warnings) {
@@ -120,13 +274,9 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
   bind_glslviewer_textures(p, s.textures, warnings);  // --texture: glslViewer's u_tex0..
   const std::string origin = display_path(scene_file.empty() ? p.origin : scene_file);
   warnings.insert(warnings.end(), p.warnings.begin(), p.warnings.end());
-  std::map<fs::path, std::shared_ptr<const Image>> decoded;  // a file used twice is read once
-  std::map<std::string_view, std::shared_ptr<const Volume>> volumes;  // by hash: one upload per volume
-  std::map<fs::path, std::shared_ptr<const AudioClip>> clips;  // a file used twice is decoded once
-  std::map<std::tuple<fs::path, bool, bool>, std::shared_ptr<VideoStream>> videos;  // one decoder per file, vflip, sRGB
-  std::map<fs::path, std::shared_ptr<const CubeFaces>> cubes;  // a cubemap used twice is read once
   const fs::path scene = scene_file.empty() ? p.origin : scene_file;
-  const MediaPlace media{s, media_roots(scene, s.media_dir_flag, opts.allow_include), origin};
+  const MediaPlace place{s, media_roots(scene, s.media_dir_flag, opts.allow_include), origin};
+  ProjectMedia media{place, warnings, {}, {}, {}, {}, {}};
   std::vector<PassSource> out;
   for (size_t i = 0; i < p.passes.size(); ++i) {
     const ProjectPass& pass = p.passes[i];
@@ -137,122 +287,12 @@ std::vector<PassSource> shadertoy_passes(const ShaderProject& project, const Sha
     for (size_t c = 0; c < 4; ++c) {
       const ProjectInput& in = pass.inputs[c];
       const std::string where = pass.name + " " + (in.uniform.empty() ? "iChannel" + std::to_string(c) : in.uniform);
-      GraphInput& g = ps.inputs[c];
-      g.kind = in.kind;
-      g.buffer = in.buffer;
-      g.sampler = in.sampler;
-      g.uniform = in.uniform;
-      switch (in.kind) {
-        case InputKind::none:
-        case InputKind::buffer:
-        case InputKind::keyboard:
-          break;
-        case InputKind::cubemap:  // Cube A, six face files or one equirectangular image (pipeline/cube_input.h)
-          if (in.buffer != kCubeA) g.cube = load_cube_input(in, s, media.roots, where, origin, warnings, cubes);
-          break;
-        case InputKind::texture: {
-          const ShadertoyMedia* known = find_shadertoy_media(in.src);
-          g.single_channel = known && known->single_channel;
-          const fs::path f = find_media(in, media, where, "texture '" + in.src + "'");
-          if (f.empty()) {
-            if (s.missing_media == MissingMedia::error)
-              fail_input(where + ": texture '" + in.src + "' is not in the media directory", origin, 0, where,
-                         (s.media_dir.empty() ? std::string("no media directory") : "looked in " + s.media_dir.string()) +
-                             "; give --media-dir DIR, or --missing-media noise|black to stand in for it");
-            const bool noise = s.missing_media == MissingMedia::noise;
-            warnings.push_back(where + ": texture '" + in.src + "' is missing; " +
-                               (noise ? "generated noise stands in (not Shadertoy's pixels)" : "black stands in"));
-            g.image = std::make_shared<const Image>(media_standin(in.src, s.missing_media));
-            break;
-          }
-          auto& img = decoded[f];
-          if (!img) img = std::make_shared<const Image>(read_image(f, AlphaMode::straight));
-          g.image = img;
-          g.file = f.string();
-          g.eight_bit = !is_hdr(f);
-          break;
-        }
-        case InputKind::volume: {
-          const ShadertoyMedia* known = find_shadertoy_media(in.src);
-          if (!known || !known->volume)
-            fail_input(where + ": volume '" + in.src + "' is not one of Shadertoy's volumes", origin, 0, where,
-                       "marchstudio stands in for Gray Noise 3D and RGBA Noise 3D, by their /media/a/<hash>.bin");
-          const std::string what = where + ": volume '" + in.src + "' (" + std::string(known->name) + ")";
-          if (s.missing_media == MissingMedia::error)
-            fail_input(what + " is not read from files", origin, 0, where,
-                       "give --missing-media noise for a generated 32^3 stand-in (not Shadertoy's voxels), or "
-                       "--missing-media black");
-          const bool noise = s.missing_media == MissingMedia::noise;
-          warnings.push_back(what + ": " + (noise ? "generated noise stands in (not Shadertoy's voxels)" : "black stands in"));
-          auto& vol = volumes[known->hash];
-          if (!vol) vol = std::make_shared<const Volume>(volume_standin(*known, s.missing_media));
-          g.volume = vol;
-          break;
-        }
-        case InputKind::music:
-        case InputKind::musicstream: {
-          // Found like a texture; missing: an error, or (a warning) the channel as
-          // Shadertoy has it before the audio loads: no clip, nothing bound.
-          const fs::path f = find_media(in, media, where, "audio '" + in.src + "'");
-          if (f.empty()) {
-            if (s.missing_media == MissingMedia::error)
-              fail_input(where + ": audio '" + in.src + "' is not in the media directory", origin, 0, where,
-                         (s.media_dir.empty() ? std::string("no media directory") : "looked in " + s.media_dir.string()) +
-                             "; give --media-dir DIR, or --missing-media noise|black to read it as not loaded");
-            warnings.push_back(where + ": audio '" + in.src +
-                               "' is missing; it reads as Shadertoy's audio before it loads: 0 in both rows");
-            break;
-          }
-          auto& clip = clips[f];
-          if (!clip) clip = std::make_shared<const AudioClip>(read_audio(f));
-          g.audio = clip;
-          break;
-        }
-        case InputKind::video: {
-          // Found like a texture; missing: an error, or the texture's stand-in with a warning.
-          const fs::path f = find_media(in, media, where, "video '" + in.src + "'");
-          if (f.empty()) {
-            if (s.missing_media == MissingMedia::error)
-              fail_input(where + ": video '" + in.src + "' is not in the media directory", origin, 0, where,
-                         (s.media_dir.empty() ? std::string("no media directory") : "looked in " + s.media_dir.string()) +
-                             "; give --media-dir DIR, or --missing-media noise|black to stand in for it");
-            const bool noise = s.missing_media == MissingMedia::noise;
-            warnings.push_back(where + ": video '" + in.src + "' is missing; " +
-                               (noise ? "a still of generated noise stands in" : "black stands in"));
-            g.kind = InputKind::texture;  // a still image, bound as a texture is
-            g.image = std::make_shared<const Image>(media_standin(in.src, s.missing_media));
-            break;
-          }
-          auto& v = videos[{f, in.sampler.vflip, in.sampler.srgb}];
-          if (!v) v = open_video(f, where);  // ffmpeg missing, a file it cannot decode: one line
-          g.video = v;
-          break;
-        }
-        case InputKind::mic:
-        case InputKind::webcam:
-          // A live device has no meaning for an offline, reproducible render.
-          fail_input(where + " reads a " + std::string(input_kind_name(in.kind)) +
-                         " input, a live device that an offline render cannot have",
-                     origin, 0, where, "bind a music or video file instead (docs/shadertoy.md#support)");
-        default:
-          fail_input(where + " reads a " + std::string(input_kind_name(in.kind)) + " input, which marchstudio does not run yet",
-                     origin, 0, where, "docs/shadertoy.md lists what is supported");
-      }
+      ps.inputs[c] = bind_input(in, where, media);
     }
     ps.source = assemble_shadertoy_pass(p, i, opts, scene_file);
     out.push_back(std::move(ps));
   }
-  // --uniform: a name may be declared in any pass (each pass that declares it gets the value).
-  if (!opts.uniforms.empty()) {
-    std::vector<bool> found(opts.uniforms.size(), false);
-    std::vector<SceneParam> declared;
-    for (PassSource& ps : out) {
-      const std::vector<bool> here = set_uniform_defaults(ps.source.text, opts.uniforms);
-      for (size_t i = 0; i < found.size(); ++i) found[i] = found[i] || here[i];
-      for (SceneParam& d : parse_scene_params(ps.source.text)) declared.push_back(std::move(d));
-    }
-    check_uniforms_found(opts.uniforms, found, declared);
-  }
+  apply_uniforms(out, opts.uniforms);
   return out;
 }
 
