@@ -146,12 +146,45 @@ def functions(path, text):
     return found
 
 
+# What the scanner must get right, checked by --self-test: a constructor's
+# member initializers, raw strings with braces, comments, a lambda inside a
+# function, class bodies, initializers and enums that are not functions.
+SELF_TEST = r"""
+namespace ms {
+struct A {
+  A(int x) : a_{x}, b_(x) {
+    f();
+  }
+  int get() const { return a_; }
+  int a_, b_;
+};
+enum class E { one, two };
+const int table[] = {1, 2, 3};
+std::string text() {
+  const char* s = R"(} { "not a brace" )";
+  // } a comment
+  auto l = [] {
+    return 1;
+  };
+  return s;
+}
+}  // namespace ms
+"""
+SELF_EXPECT = [("A", 4, 6), ("get", 7, 7), ("text", 12, 19)]  # lines from the leading newline
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--root", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
     ap.add_argument("--allow", default=None)
     ap.add_argument("--list", action="store_true", help="list the functions over 80 lines too")
+    ap.add_argument("--self-test", action="store_true", help="check the scanner on a built-in sample")
     args = ap.parse_args()
+    if args.self_test:
+        got = functions("sample.cpp", SELF_TEST)
+        ok = got == SELF_EXPECT
+        print(f"long-functions: self-test {'passed' if ok else 'FAILED'}: {got}")
+        return 0 if ok else 1
     root = os.path.abspath(args.root)
     allow_file = args.allow or os.path.join(root, "tools", "long-functions.allow")
     allowed = set()
