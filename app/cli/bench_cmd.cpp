@@ -30,8 +30,6 @@ namespace ms {
 CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
   CLI::App* cmd = app.add_subcommand("bench", "Time a scene and count its steps per pixel (docs/bench.md)");
   cmd->add_option("scene", a.input, "Scene .toml, a graph file (.json) or a Shadertoy shader (.glsl, .json): its passes are timed")->required();
-  add_shadertoy_flags(cmd, a.shadertoy);
-  add_override_flags(cmd, a.overrides);
   add_size_flag(cmd, "--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
   cmd->add_option("--frames", a.frames, "Timed frames (default 30)");
   cmd->add_option("--warmup", a.warmup, "Untimed frames before them (default 3)");
@@ -42,16 +40,14 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
                 "Allow the driver's on-disk shader cache and the pruned-grid cache (default: off, so compile and "
                 "pruning times are cold)");
   add_backend_flag(cmd, a.backend);
-  add_shader_dir_flag(cmd, a.shader_dir);
-  add_preset_flag(cmd, a.preset);
-  add_disable_flag(cmd, a.disable);
-  add_allow_include_flag(cmd, a.allow_include);
   cmd->add_flag("--strict", a.strict,
                 "Fail (exit 1) when any pixel of the counting pass has a NaN or Inf (colour or AOV); "
                 "the report is still printed");
-  add_graph_flags(cmd, a.graph_eval, a.no_prune);
-  cmd->add_flag("--no-specialize", a.no_specialize,
-                "Time the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
+  LoadFlagChoice load;
+  load.defines = false;
+  load.no_specialize_help =
+      "Time the generic shader: every feature compiled, values as uniforms (docs/specialization.md)";
+  add_load_flags(cmd, a.load, load);
   add_dispatch_flag(cmd, a.dispatch,
                     "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
   add_compute_group_flag(cmd, a.compute_group);
@@ -77,7 +73,7 @@ int run_bench_command(const BenchArgs& a) {
   job.input = a.input;
   job.spp = a.spp;
   job.backend = a.backend;
-  set_input_fields(job, a);
+  set_load_fields(job, a.load);
   // Timed frames as render draws them to a PNG: one pass at spp 1, bloom
   // as the scene says (docs/post.md).
   PreparedFrame p = prepare(job, true);
@@ -121,8 +117,8 @@ int run_bench_command(const BenchArgs& a) {
     }));
     if (!bw.empty()) std::fprintf(stderr, "marchstudio: %s\n", bw.c_str());
   }
-  const BenchSubject subject{a.input, in.scene.name, a.disable, specialization_name(p.opts.specialize),
-                             a.overrides.as_given};
+  const BenchSubject subject{a.input, in.scene.name, a.load.disable, specialization_name(p.opts.specialize),
+                             a.load.overrides.as_given};
   const std::string text = a.json ? bench_json(subject, s, r) : bench_table(subject, s, r);
   std::fputs(text.c_str(), stdout);
   guard_nonfinite({a.input, a.strict, {}, {}}, r.cost.nonfinite_pixels, r.cost.pixels);  // pipeline/nonfinite.h

@@ -1,12 +1,11 @@
 // `marchstudio bench SCENE`: frame times, startup times and per-pixel cost
 // of a scene, as a table or one JSON object (docs/bench.md).
 #pragma once
-#include "shader/graph_interp.h"
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "cli/override_flags.h"
+#include "cli/load_flags.h"
 #include "gl/context.h"
 #include "pipeline/input.h"
 #include "render/compute_frame.h"
@@ -27,16 +26,8 @@ struct BenchArgs {
   bool json = false;
   bool shader_cache = false;  // let the driver's disk cache serve the compile
   Backend backend = Backend::automatic;
-  std::string shader_dir;  // empty: MARCH_SHADER_DIR or the built-in location
-  std::vector<std::string> disable;
-  std::string preset;      // empty: the scene's [quality] preset
-  bool no_specialize = false;  // time the generic shader (docs/specialization.md)
-  GraphEval graph_eval = GraphEval::auto_;  // --graph-eval
-  bool no_prune = false;                   // --no-prune
+  LoadFlags load;  // no -D (cli/load_flags.h)
   bool strict = false;     // any NaN/Inf pixel in the counting pass is an error (exit 1)
-  std::vector<std::string> allow_include;  // more directories #include may read
-  ShadertoyOptions shadertoy;  // --media-dir, --missing-media, --mouse
-  Overrides overrides;       // --set, --uniform (cli/override_flags.h)
   Dispatch dispatch = Dispatch::fragment;  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
   std::optional<ComputeGroup> compute_group;  // hidden --compute-group; none: 8x8, or auto's measured group
   bool verbose = false;               // -v: what --dispatch auto chose, and why

@@ -10,7 +10,7 @@
 
 #include "cli/glslviewer_flags.h"
 #include "core/error.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 
 namespace ms {
 

@@ -8,7 +8,7 @@
 #include "cli/flag_checks.h"
 #include "core/error.h"
 #include "pipeline/shader_dir.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "preprocess/glsl_scan.h"
 
 namespace ms {
@@ -57,14 +57,6 @@ std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector
     out.emplace_back(std::move(name), std::move(value));
   }
   return out;
-}
-
-AssembleOptions assemble_options(const std::string& shader_dir, const std::vector<std::string>& allow_include,
-                                 bool no_specialize, const std::vector<UniformValue>& uniforms) {
-  AssembleOptions opts{resolve_shader_dir(shader_dir), {}, parse_allow_include(allow_include)};
-  opts.specialize = no_specialize ? Specialization::generic : Specialization::folded;
-  opts.uniforms = uniforms;
-  return opts;
 }
 
 std::vector<fs::path> parse_allow_include(const std::vector<std::string>& flags) {

@@ -3,7 +3,6 @@
 // media, mouse and textures. Every error names its flag.
 //
 //   ImageSize s = parse_size_flag("1280x720");             // throws bad_input naming --size
-//   AssembleOptions o = assemble_options(dir, allow, false, uniforms);
 #pragma once
 #include <filesystem>
 #include <string>
@@ -49,29 +48,5 @@ std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector
 // --allow-include DIR flags: each an existing directory, made canonical
 // (AssembleOptions::allow_include). Throws bad_input naming the flag.
 std::vector<std::filesystem::path> parse_allow_include(const std::vector<std::string>& flags);
-
-// The assembler's options from sweep's flags (it loads no FrameJob):
-// --shader-dir, --allow-include, --no-specialize (otherwise folded to the
-// scene; animated values stay uniforms) and the --uniform values.
-AssembleOptions assemble_options(const std::string& shader_dir, const std::vector<std::string>& allow_include,
-                                 bool no_specialize, const std::vector<UniformValue>& uniforms);
-
-// What to load, from the flags of these names that render, its
-// sequences and bench share: --shader-dir (resolved), --allow-include,
-// --no-specialize, --disable, --preset, --set, --uniform and Shadertoy's
-// options, each parsed or checked here.
-template <class Args>
-void set_input_fields(FrameJob& job, const Args& a) {
-  job.shader_dir = resolve_shader_dir(a.shader_dir);
-  job.allow_include = parse_allow_include(a.allow_include);
-  job.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  job.disable = parse_disabled(a.disable);
-  job.preset = a.preset;
-  job.set = a.overrides.set;
-  job.uniforms = a.overrides.uniforms;
-  job.shadertoy = a.shadertoy;
-  job.graph_eval = a.graph_eval;
-  job.prune = !a.no_prune;
-}
 
 }  // namespace ms

@@ -18,7 +18,7 @@
 #include "cli/override_flags.h"
 #include "cli/render_cmd.h"
 #include "pipeline/input.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "importers/json_brief.h"
 #include "io/input_file.h"
 
@@ -92,55 +92,52 @@ const std::map<std::string, Handler>& handlers() {
       {"time",
        [](const KeyValue& kv, RenderArgs& a) {
          a.time = number(kv);
-         a.time_set = true;
        }},
       {"frame",
        [](const KeyValue& kv, RenderArgs& a) {
          a.frame = integer(kv);
-         a.frame_set = true;
        }},
       {"fps",
        [](const KeyValue& kv, RenderArgs& a) {
          a.fps = number(kv);
-         a.fps_set = true;
        }},
       {"backend", [](const KeyValue& kv, RenderArgs& a) { a.backend = parse_backend(text(kv)); }},
-      {"shader-dir", [](const KeyValue& kv, RenderArgs& a) { a.shader_dir = path(kv); }},
-      {"preset", [](const KeyValue& kv, RenderArgs& a) { a.preset = text(kv); }},
-      {"disable", [](const KeyValue& kv, RenderArgs& a) { comma_list(kv, a.disable); }},
+      {"shader-dir", [](const KeyValue& kv, RenderArgs& a) { a.load.shader_dir = path(kv); }},
+      {"preset", [](const KeyValue& kv, RenderArgs& a) { a.load.preset = text(kv); }},
+      {"disable", [](const KeyValue& kv, RenderArgs& a) { comma_list(kv, a.load.disable); }},
       {"aov", [](const KeyValue& kv, RenderArgs& a) { comma_list(kv, a.aov); }},
       {"define",
        [](const KeyValue& kv, RenderArgs& a) {
-         strings(kv, text, [&](const std::string& s) { a.defines.push_back(parse_defines({s}).front()); });
+         strings(kv, text, [&](const std::string& s) { a.load.defines.push_back(parse_defines({s}).front()); });
        }},
       {"allow-include",
        [](const KeyValue& kv, RenderArgs& a) {
-         strings(kv, path, [&](const std::string& s) { a.allow_include.push_back(s); });
+         strings(kv, path, [&](const std::string& s) { a.load.allow_include.push_back(s); });
        }},
       {"set",
        [](const KeyValue& kv, RenderArgs& a) {
          strings(kv, text, [&](const std::string& s) {
-           a.overrides.set.push_back(parse_set_flag(s));
-           a.overrides.as_given.push_back("--set " + s);
+           a.load.overrides.set.push_back(parse_set_flag(s));
+           a.load.overrides.as_given.push_back("--set " + s);
          });
        }},
       {"uniform",
        [](const KeyValue& kv, RenderArgs& a) {
          strings(kv, text, [&](const std::string& s) {
-           a.overrides.uniforms.push_back(parse_uniform_flag(s));
-           a.overrides.as_given.push_back("--uniform " + s);
+           a.load.overrides.uniforms.push_back(parse_uniform_flag(s));
+           a.load.overrides.as_given.push_back("--uniform " + s);
          });
        }},
       {"strict", [](const KeyValue& kv, RenderArgs& a) { a.strict = boolean(kv); }},
-      {"no-specialize", [](const KeyValue& kv, RenderArgs& a) { a.no_specialize = boolean(kv); }},
+      {"no-specialize", [](const KeyValue& kv, RenderArgs& a) { a.load.no_specialize = boolean(kv); }},
       {"dispatch", [](const KeyValue& kv, RenderArgs& a) { a.dispatch = parse_dispatch(text(kv)); }},
       {"timeout", [](const KeyValue& kv, RenderArgs& a) { a.timeout = number(kv); }},
-      {"media-dir", [](const KeyValue& kv, RenderArgs& a) { a.shadertoy.media_dir = path(kv); }},
+      {"media-dir", [](const KeyValue& kv, RenderArgs& a) { a.load.shadertoy.media_dir = path(kv); }},
       {"missing-media",
-       [](const KeyValue& kv, RenderArgs& a) { a.shadertoy.missing_media = parse_missing_media(text(kv)); }},
-      {"mouse", [](const KeyValue& kv, RenderArgs& a) { a.shadertoy.mouse = parse_mouse_flag(text(kv)); }},
-      {"graph-eval", [](const KeyValue& kv, RenderArgs& a) { a.graph_eval = parse_graph_eval(text(kv)); }},
-      {"no-prune", [](const KeyValue& kv, RenderArgs& a) { a.no_prune = boolean(kv); }},
+       [](const KeyValue& kv, RenderArgs& a) { a.load.shadertoy.missing_media = parse_missing_media(text(kv)); }},
+      {"mouse", [](const KeyValue& kv, RenderArgs& a) { a.load.shadertoy.mouse = parse_mouse_flag(text(kv)); }},
+      {"graph-eval", [](const KeyValue& kv, RenderArgs& a) { a.load.graph_eval = parse_graph_eval(text(kv)); }},
+      {"no-prune", [](const KeyValue& kv, RenderArgs& a) { a.load.no_prune = boolean(kv); }},
   };
   return h;
 }
@@ -216,19 +213,11 @@ MeshArgs mesh_args_from(const RenderArgs& a) {
   m.input = a.input;
   m.output = a.output;
   m.time = a.time;
-  m.time_set = a.time_set;
   m.verbose = a.verbose;
   m.timeout = a.timeout;
   m.backend = a.backend;
-  m.shader_dir = a.shader_dir;
-  m.allow_include = a.allow_include;
-  m.defines = a.defines;
-  m.preset = a.preset;
-  m.disable = a.disable;
-  m.no_specialize = a.no_specialize;
-  m.graph_eval = a.graph_eval;
-  m.no_prune = a.no_prune;
-  m.overrides = a.overrides;
+  m.load = a.load;
+  m.load.shadertoy = {};  // a mesh line takes no Shadertoy keys (render_only())
   return m;
 }
 

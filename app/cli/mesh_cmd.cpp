@@ -43,15 +43,15 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
       ->expected(6);
   cmd->add_flag("--planes", a.planes, "Include the scene's [[planes]], cut by the box (default: left out)");
   cmd->add_option("--band", a.band, "A .vdb level set's half-width in voxels (default 3)")->check(CLI::Range(1, 64));
-  cmd->add_option("--time", a.time, "Scene time in seconds, finite (default: the scene's)")
-      ->check(seconds_value())
-      ->each([&a](const std::string&) { a.time_set = true; });
+  cmd->add_option_function<double>(
+         "--time", [&a](double v) { a.time = v; }, "Scene time in seconds, finite (default: the scene's)")
+      ->check(seconds_value());
   cmd->add_option_function<std::string>(
          "--frames", [&a](const std::string& v) { a.frames = parse_frame_range(v); },
          "Mesh frames A..B (both included), one file each, to -o PATTERN, e.g. out/f_%04d.obj")
       ->check(not_empty());
-  cmd->add_option("--fps", a.fps, "Frames per second: frame f of --frames is at time f / fps (default 24)")
-      ->each([&a](const std::string&) { a.fps_set = true; });
+  cmd->add_option_function<double>(
+      "--fps", [&a](double v) { a.fps = v; }, "Frames per second: frame f of --frames is at time f / fps (default 24)");
   cmd->add_flag("--force", a.force,
                 "With --frames: mesh every frame again, even those on disk with this run's fingerprint");
   cmd->add_flag("--strict", a.strict,
@@ -62,31 +62,28 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
       ->check(seconds_value())
       ->check(non_negative());
   add_backend_flag(cmd, a.backend);
-  add_shader_dir_flag(cmd, a.shader_dir);
-  add_allow_include_flag(cmd, a.allow_include);
-  add_define_flag(cmd, a.defines);
-  add_preset_flag(cmd, a.preset);
-  add_override_flags(cmd, a.overrides);
-  add_graph_flags(cmd, a.graph_eval, a.no_prune);
-  cmd->add_flag("--no-specialize", a.no_specialize, "Sample with the generic shader (docs/specialization.md)");
+  LoadFlagChoice load;
+  load.disable = false;
+  load.shadertoy = false;
+  load.no_specialize_help = "Sample with the generic shader (docs/specialization.md)";
+  add_load_flags(cmd, a.load, load);
   return cmd;
 }
 
 MeshJob make_mesh_job(const MeshArgs& a) {
   MeshJob job;
-  set_input_fields(job.frame, a);
+  set_load_fields(job.frame, a.load);
   job.frame.input = a.input;
   job.frame.backend = a.backend;
-  job.frame.defines = a.defines;
   job.frame.verbose = a.verbose;
   // A --jobs line's values arrive without the flags' checks.
   if (!std::isfinite(a.timeout) || a.timeout < 0)
     fail_input("--timeout must be a number of seconds >= 0 (0: no limit)", {}, 0, "--timeout");
   job.frame.timeout = a.timeout;
   job.frame.strict = a.strict;
-  if (!std::isfinite(a.time) || std::abs(a.time) > FLT_MAX)
+  if (a.time && (!std::isfinite(*a.time) || std::abs(*a.time) > FLT_MAX))
     fail_input("--time must be a finite number of seconds", {}, 0, "--time");
-  if (a.time_set) job.frame.time = static_cast<float>(a.time);
+  if (a.time) job.frame.time = static_cast<float>(*a.time);
   if (!std::isfinite(a.voxel) || a.voxel < 0) fail_input("--voxel must be a number > 0", {}, 0, "--voxel");
   job.output = a.output.empty() ? fs::path(fs::path(a.input).stem().string() + ".obj") : fs::path(a.output);
   job.resolution = a.resolution;
@@ -120,21 +117,22 @@ MeshProgress progress_for(bool tty) {
 
 // `--frames`: the flags checked before any file is read, then the frames.
 int run_mesh_sequence(const MeshArgs& a) {
-  if (a.time_set)
+  if (a.time)
     fail_input("--time conflicts with --frames: each frame's time is frame / fps", {}, 0, "--time",
                "shift the animation with --frames instead");
   if (a.json) fail_input("--json reports one mesh, and --frames makes several", {}, 0, "--json");
-  if (!std::isfinite(a.fps) || a.fps <= 0)
-    fail_input("--fps must be a positive number, got " + format_number(a.fps), {}, 0, "--fps");
+  const double fps = a.fps.value_or(kSceneFps);
+  if (!std::isfinite(fps) || fps <= 0)
+    fail_input("--fps must be a positive number, got " + format_number(fps), {}, 0, "--fps");
   // Frame f is at time f / fps, a 32-bit float in the shader.
-  const double last_time = std::max(std::abs(double(a.frames->first)), std::abs(double(a.frames->last))) / a.fps;
+  const double last_time = std::max(std::abs(double(a.frames->first)), std::abs(double(a.frames->last))) / fps;
   if (!(last_time <= FLT_MAX))
-    fail_input("--fps " + format_number(a.fps) + " puts frame " + std::to_string(a.frames->last) + " at time " +
+    fail_input("--fps " + format_number(fps) + " puts frame " + std::to_string(a.frames->last) + " at time " +
                    format_number(last_time) + " s, beyond a 32-bit float",
                {}, 0, "--fps", "give frames per second, e.g. --fps 24");
   MeshSequenceJob job;
   job.range = *a.frames;
-  job.fps = a.fps;
+  job.fps = fps;
   job.force = a.force;
   std::string pattern = a.output;
   if (pattern.empty()) {
@@ -153,7 +151,7 @@ int run_mesh_sequence(const MeshArgs& a) {
 
 int run_mesh(const MeshArgs& a) {
   if (a.frames) return run_mesh_sequence(a);
-  if (a.fps_set || a.force)
+  if (a.fps || a.force)
     fail_input(std::string(a.force ? "--force" : "--fps") + " needs --frames", {}, 0, a.force ? "--force" : "--fps",
                "e.g. --frames 0..23 -o out/f_%04d.obj");
   if (has_frame_field(a.output))

@@ -6,12 +6,11 @@
 #include <utility>
 #include <vector>
 
-#include "cli/override_flags.h"
+#include "cli/load_flags.h"
 #include "gl/context.h"
 #include "io/sequence.h"
 #include "pipeline/input.h"
 #include "pipeline/mesh_job.h"
-#include "shader/graph_interp.h"
 
 namespace CLI {
 class App;
@@ -27,27 +26,16 @@ struct MeshArgs {
   std::vector<float> bounds; // --bounds x0,y0,z0,x1,y1,z1
   bool planes = false;
   int band = 3;
-  double time = 0.0;
-  bool time_set = false;
+  std::optional<double> time;  // none: the scene's
   std::optional<FrameRange> frames;  // --frames A..B: one file per frame
-  double fps = kSceneFps;
-  bool fps_set = false;
+  std::optional<double> fps;   // none: kSceneFps
   bool force = false;        // --frames: mesh every frame again
   bool strict = false;       // NaN or Inf samples of map() are an error
   bool json = false;
   bool verbose = false;
   double timeout = 0.0;
   Backend backend = Backend::automatic;
-  std::string shader_dir;
-  std::vector<std::string> allow_include;
-  std::vector<std::pair<std::string, std::string>> defines;
-  std::string preset;
-  std::vector<std::string> disable;
-  bool no_specialize = false;
-  GraphEval graph_eval = GraphEval::auto_;
-  bool no_prune = false;
-  Overrides overrides;
-  ShadertoyOptions shadertoy;  // never set: set_input_fields() reads it
+  LoadFlags load;  // no --disable or Shadertoy options (cli/load_flags.h)
 };
 
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);

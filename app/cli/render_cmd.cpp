@@ -45,19 +45,16 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
                   "flag without its dashes; the command line's flags are the defaults")
       ->check(not_empty());
   add_size_flag(cmd, "--size", a.size, "Image size WxH (default: the scene's)")->check(not_empty());
-  cmd->add_option("--time", a.time,
-                  "Scene time in seconds, any finite value (default: the scene's [render] time, else 0)")
-      ->check(seconds_value())
-      ->each([&a](const std::string&) { a.time_set = true; });
+  cmd->add_option_function<double>(
+         "--time", [&a](double v) { a.time = v; },
+         "Scene time in seconds, any finite value (default: the scene's [render] time, else 0)")
+      ->check(seconds_value());
   cmd->add_option("--spp", a.spp, "Samples per pixel, stratified, 1..1024 (default: the scene's)")
       ->check(CLI::Range(1, 1024));
-  cmd->add_option("--frame", a.frame, "Frame number (uFrame / iFrame; default round(time x fps), 0 at time 0)")
-      ->each([&a](const std::string&) { a.frame_set = true; });
+  cmd->add_option_function<int>(
+      "--frame", [&a](int v) { a.frame = v; }, "Frame number (uFrame / iFrame; default round(time x fps), 0 at time 0)");
   add_backend_flag(cmd, a.backend);
-  add_shader_dir_flag(cmd, a.shader_dir);
-  add_preset_flag(cmd, a.preset);
-  add_disable_flag(cmd, a.disable);
-  add_define_flag(cmd, a.defines);
+  add_load_flags(cmd, a.load);
   cmd->add_option_function<std::string>(
          "--frames", [&a](const std::string& v) { a.frames = parse_frame_range(v); },
          "Render frames A..B (both included) to -o PATTERN, e.g. out/f_%04d.png")
@@ -65,12 +62,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
   add_dispatch_flag(cmd, a.dispatch,
                     "Draw the scene pass as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
   add_compute_group_flag(cmd, a.compute_group);
-  add_shadertoy_flags(cmd, a.shadertoy);
-  add_override_flags(cmd, a.overrides);
-  cmd->add_option("--fps", a.fps,
+  cmd->add_option_function<double>("--fps", [&a](double v) { a.fps = v; },
                   "Frames per second: frame f of --frames is at time f / fps (default 24; a Shadertoy shader's 60), "
-                  "and a still of a shader with buffers replays round(time x fps) frames")
-      ->each([&a](const std::string&) { a.fps_set = true; });
+                  "and a still of a shader with buffers replays round(time x fps) frames");
   cmd->add_option_function<std::string>(
          "--shard", [&a](const std::string& v) { a.shard = parse_shard(v); },
          "Render only shard I of N (I/N, from 0) of --frames")
@@ -92,16 +86,12 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
       ->check(one_of(kAovNames));
   cmd->add_flag("-v,--verbose", a.verbose,
                 "Print the backend, GL renderer, the shader dir and image module used, and timings");
-  add_graph_flags(cmd, a.graph_eval, a.no_prune);
-  cmd->add_flag("--no-specialize", a.no_specialize,
-                "Build the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
   cmd->add_flag("--print-shader", a.print_shader,
                 "Print the assembled main-pass shader to stdout and exit; nothing is rendered");
   cmd->add_flag("--strict", a.strict,
                 "Fail (exit 1, no file written) when any pixel has a NaN or Inf in its colour or AOVs, or map() "
                 "crosses [bounds]; without it they are warnings on stderr");
   cmd->add_flag("--watch", a.watch, "Render again on every save of the scene or a file it includes, until Ctrl+C");
-  add_allow_include_flag(cmd, a.allow_include);
   cmd->add_option("--timeout", a.timeout,
                   "Give up after SECONDS per image (each frame of --frames): exit 3, no file written");
   // Hidden: tests and experiments, the image is the same for any value
@@ -121,11 +111,12 @@ static int run_render_watch(const RenderArgs& a) {
   live::WatchRenderOptions w;
   w.render = [once] { run_render(once); };
   w.files = [&a] {
-    AssembleOptions opts{resolve_shader_dir(a.shader_dir), a.defines,
-                         parse_allow_include(a.allow_include)};
-    opts.uniforms = a.overrides.uniforms;
+    AssembleOptions opts{resolve_shader_dir(a.load.shader_dir), a.load.defines,
+                         parse_allow_include(a.load.allow_include)};
+    opts.uniforms = a.load.overrides.uniforms;
     std::vector<fs::path> files = {a.input};
-    for (const PassSource& pass : load_input(a.input, parse_disabled(a.disable), opts, a.preset, a.overrides.set).passes)
+    for (const PassSource& pass :
+         load_input(a.input, parse_disabled(a.load.disable), opts, a.load.preset, a.load.overrides.set).passes)
       for (const fs::path& p : pass.source.dependencies) files.push_back(p);
     return files;
   };

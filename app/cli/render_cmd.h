@@ -1,13 +1,12 @@
 // `marchstudio render`: a scene (.toml) or a Shadertoy shader (.glsl) to an
 // image file, headless.
 #pragma once
-#include "shader/graph_interp.h"
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "cli/override_flags.h"
+#include "cli/load_flags.h"
 #include "gl/context.h"
 #include "io/image_io.h"
 #include "io/sequence.h"
@@ -33,20 +32,14 @@ struct RenderArgs {
   std::optional<ImageFormat> format;  // --format: outputs named from the input; none: png
   std::string jobs;       // --jobs FILE: JSON lines, one still each (cli/job_list.h)
   ImageSize size;         // --size WxH; 0x0: the scene's
-  double time = 0.0;      // seconds; explicit default 0, never the wall clock
-  bool time_set = false;
+  std::optional<double> time;  // seconds; none: the scene's, never the wall clock
   int spp = 0;            // 0: the scene's
-  int frame = 0;
-  bool frame_set = false;  // else a still's frame is round(time x fps)
+  std::optional<int> frame;  // none: a still's frame is round(time x fps)
   Backend backend = Backend::automatic;
-  std::string shader_dir; // empty: MARCH_SHADER_DIR or the built-in location
-  std::vector<std::string> disable;  // effects switched off: shadows, reflections, ao, checker-filter
-  std::string preset;                // quality preset replacing the scene's; empty: the scene's
-  std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE], injected into the scene shader
+  LoadFlags load;  // shader dir, includes, -D, preset, --disable, --set ... (cli/load_flags.h)
   // Sequences (cli/sequence_cmd.h): --frames turns `render` into one.
   std::optional<FrameRange> frames;  // --frames A..B, both included
-  double fps = kSceneFps;  // time of frame f is f / fps
-  bool fps_set = false;
+  std::optional<double> fps;  // time of frame f is f / fps; none: kSceneFps, or a shader's own
   std::optional<Shard> shard;           // --shard I/N
   std::optional<ShardMode> shard_mode;  // none: stride
   std::string video;       // encode the frames with ffmpeg afterwards
@@ -55,19 +48,13 @@ struct RenderArgs {
   bool verbose = false;
   bool watch = false;       // re-render on every save of the scene or its includes (live/render_watch.h)
   std::vector<std::string> aov;      // AOVs to add to an .exr: depth, normal, steps, material, shadow, ao, cost, hit
-  bool no_specialize = false;  // build the generic shader (docs/specialization.md)
-  GraphEval graph_eval = GraphEval::auto_;  // --graph-eval
-  bool no_prune = false;                   // --no-prune
   bool print_shader = false;   // print the assembled scene shader and exit
   bool strict = false;         // any NaN/Inf pixel (colour or AOV) is an error: exit 1, nothing written
-  std::vector<std::string> allow_include;  // more directories #include may read (preprocess/preprocess.h)
   double timeout = 0.0;      // seconds per image (each frame of --frames); 0: none (core/deadline.h)
   int tile_size = kTileSize; // hidden --tile-size: largest square per draw (render/tiles.h); 0: whole frame
   int tile_still = 0;        // hidden --tile-still: draw and stream the still in tiles of this side (tests); 0: past the limits only
   Dispatch dispatch = Dispatch::fragment;  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
   std::optional<ComputeGroup> compute_group;  // hidden --compute-group WxH; none: 8x8, or auto's measured group
-  ShadertoyOptions shadertoy;  // --media-dir, --missing-media, --mouse
-  Overrides overrides;       // --set, --uniform (cli/override_flags.h)
 };
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args);

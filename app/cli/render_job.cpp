@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "cli/flag_checks.h"
-#include "cli/input_flags.h"
+#include "cli/load_flags.h"
 #include "cli/render_cmd.h"
 #include "core/error.h"
 #include "io/image_io.h"
@@ -22,14 +22,14 @@ FrameJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::p
   if (!std::isfinite(a.timeout) || a.timeout < 0)
     fail_input("--timeout must be a number of seconds >= 0 (0: no limit)", {}, 0, "--timeout");
   job.timeout = a.timeout;
-  if (!std::isfinite(a.time)) fail_input("--time must be a finite number", {}, 0, "--time");
-  if (a.time_set) job.time = static_cast<float>(a.time);
+  if (a.time && !std::isfinite(*a.time)) fail_input("--time must be a finite number", {}, 0, "--time");
+  if (a.time) job.time = static_cast<float>(*a.time);
   if (a.spp < 0 || a.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
   job.spp = a.spp;
-  if (a.frame < 0) fail_input("--frame must be >= 0", {}, 0, "--frame");
-  if (a.frame_set) job.frame = a.frame;
-  if (a.fps_set) {
-    if (!std::isfinite(a.fps) || a.fps <= 0) fail_input("--fps must be a positive number", {}, 0, "--fps");
+  if (a.frame && *a.frame < 0) fail_input("--frame must be >= 0", {}, 0, "--frame");
+  job.frame = a.frame;
+  if (a.fps) {
+    if (!std::isfinite(*a.fps) || *a.fps <= 0) fail_input("--fps must be a positive number", {}, 0, "--fps");
     job.fps = a.fps;
   }
   if (a.tile_size < 0) fail_input("--tile-size must be >= 0", {}, 0, "--tile-size");
@@ -39,11 +39,10 @@ FrameJob make_render_job(const RenderArgs& a, const fs::path& input, const fs::p
   job.backend = a.backend;
   job.size = a.size;
   // A --jobs line's names arrive without the flags' validators: checked here.
-  if (!a.preset.empty()) check_one_of(a.preset, quality_preset_names(), "--preset");
+  if (!a.load.preset.empty()) check_one_of(a.load.preset, quality_preset_names(), "--preset");
   for (const std::string& n : a.aov) check_one_of(n, kAovNames, "--aov");
-  set_input_fields(job, a);
+  set_load_fields(job, a.load);
   if (!a.aov.empty()) job.aov_channels = aov_channels(a.aov);
-  job.defines = a.defines;
   job.strict = a.strict;
   job.verbose = a.verbose;
   job.dispatch = a.dispatch;  // auto: chosen once the context exists (pipeline/dispatch_probe.h)

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "cli/input_flags.h"
+#include "cli/load_flags.h"
 #include "cli/render_cmd.h"
 #include "core/error.h"
 #include "io/image_io.h"
@@ -31,14 +31,14 @@ Plan plan_from_flags(const RenderArgs& a) {
   if (!a.frames)
     fail_input("--shard, --shard-mode, --video and --no-write need --frames", {}, 0, "--frames",
                "e.g. --frames 0..59 --fps 24 -o out/frame_%04d.png");
-  if (a.time_set)
+  if (a.time)
     fail_input("--time conflicts with --frames: each frame's time is frame / fps", {}, 0, "--time",
                "shift the animation with --frames instead");
-  if (a.frame != 0) fail_input("--frame conflicts with --frames", {}, 0, "--frame");
+  if (a.frame.value_or(0) != 0) fail_input("--frame conflicts with --frames", {}, 0, "--frame");
   if (a.spp < 0 || a.spp > 1024) fail_input("--spp must be in 1..1024", {}, 0, "--spp");
   Plan p;
   p.range = *a.frames;
-  p.fps = a.fps_set ? a.fps : kSceneFps;
+  p.fps = a.fps.value_or(kSceneFps);
   if (!std::isfinite(p.fps) || p.fps <= 0)
     fail_input("--fps must be a positive number, got " + std::to_string(p.fps), {}, 0, "--fps");
   if (a.shard) p.shard = *a.shard;
@@ -93,10 +93,9 @@ int run_sequence(const RenderArgs& a) {
   f.input = a.input;
   f.size = a.size;
   f.spp = a.spp;
-  if (a.fps_set) f.fps = plan.fps;
+  if (a.fps) f.fps = plan.fps;
   f.backend = a.backend;
-  set_input_fields(f, a);
-  f.defines = a.defines;
+  set_load_fields(f, a.load);
   if (!a.aov.empty()) f.aov_channels = aov_channels(a.aov);
   f.strict = a.strict;
   f.timeout = a.timeout;

@@ -52,19 +52,17 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
          "The frame time the fronts and the plot use: gpu (GL timer), wall, cpu (this process's CPU time: "
          "steadier on a shared machine), or auto (default: cpu on a software GL such as llvmpipe, else gpu)")
       ->check(one_of({"auto", "gpu", "wall", "cpu"}));
-  cmd->add_option("--preset", a.preset, "The preset the rows vary around (default balanced)")
-      ->check(one_of(quality_preset_names()));
   cmd->add_option("--only", a.only, "Measure only these rows of the grid, by name (e.g. textbook,balanced)")
       ->delimiter(',');
   cmd->add_option("-o,--out", a.out, "Directory for <scene>.sweep.csv, .json and .png (default .)");
   add_backend_flag(cmd, a.backend);
-  add_shader_dir_flag(cmd, a.shader_dir);
-  add_allow_include_flag(cmd, a.allow_include);
   cmd->add_flag("-q,--quiet", a.quiet, "No progress lines on stderr");
-  cmd->add_flag("--no-specialize", a.no_specialize,
-                "Measure the generic shader: every feature compiled, values as uniforms (docs/specialization.md)");
-  add_graph_flags(cmd, a.graph_eval, a.no_prune);
-  add_override_flags(cmd, a.overrides);
+  LoadFlagChoice load;
+  load.defines = load.disable = load.shadertoy = false;
+  load.preset_help = "The preset the rows vary around (default balanced)";
+  load.no_specialize_help =
+      "Measure the generic shader: every feature compiled, values as uniforms (docs/specialization.md)";
+  add_load_flags(cmd, a.load, load);
   add_dispatch_flag(cmd, a.dispatch,
                     "Draw every row as a fragment pass (default), a compute dispatch, or auto (docs/gpu.md)");
   add_compute_group_flag(cmd, a.compute_group);
@@ -84,19 +82,20 @@ std::string command_line(const SweepArgs& a) {
   std::string c = "marchstudio sweep " + a.input + " --size " + size_text(a.size) + " --frames " + std::to_string(a.frames) +
                   " --rounds " + std::to_string(a.rounds) + " --warmup " + std::to_string(a.warmup) + " --spp " + std::to_string(a.spp) + " --ref-spp " +
                   std::to_string(a.ref_spp) + " --grid " + sweep_grid_name(a.grid);
-  if (a.preset != "balanced") c += " --preset " + a.preset;
+  const LoadFlags& l = a.load;
+  if (l.preset != "balanced") c += " --preset " + l.preset;
   if (a.time_by) c += std::string(" --time-by ") + sweep_clock_name(*a.time_by);
   if (!a.only.empty()) {
     c += " --only ";
     for (size_t i = 0; i < a.only.size(); ++i) c += (i ? "," : "") + a.only[i];
   }
   if (a.backend != Backend::automatic) c += std::string(" --backend ") + backend_name(a.backend);
-  if (a.no_specialize) c += " --no-specialize";
-  if (a.graph_eval != GraphEval::auto_)
-    c += std::string(" --graph-eval ") + (a.graph_eval == GraphEval::inline_ ? "inline" : "interpreter");
-  if (a.no_prune) c += " --no-prune";
+  if (l.no_specialize) c += " --no-specialize";
+  if (l.graph_eval != GraphEval::auto_)
+    c += std::string(" --graph-eval ") + (l.graph_eval == GraphEval::inline_ ? "inline" : "interpreter");
+  if (l.no_prune) c += " --no-prune";
   if (a.dispatch != Dispatch::fragment) c += std::string(" --dispatch ") + dispatch_name(a.dispatch);
-  for (const std::string& o : a.overrides.as_given) {  // "--set KEY=VALUE": the value quoted, brackets are shell globs
+  for (const std::string& o : l.overrides.as_given) {  // "--set KEY=VALUE": the value quoted, brackets are shell globs
     const size_t space = o.find(' ');
     std::string value = o.substr(space + 1);
     for (size_t at = 0; (at = value.find('\'', at)) != std::string::npos; at += 4) value.replace(at, 1, "'\\''");
@@ -105,18 +104,11 @@ std::string command_line(const SweepArgs& a) {
   return c;
 }
 
-}  // namespace
-
-int run_sweep_command(const SweepArgs& a) {
-  const Backend backend = a.backend;
-  // The shader render and bench build: specialized to the scene (and each row's quality).
-  AssembleOptions opts = assemble_options(a.shader_dir, a.allow_include, a.no_specialize, a.overrides.uniforms);
-  opts.graph_eval = a.graph_eval;
-  opts.prune = !a.no_prune;
+// The measuring settings from the flags, each checked.
+SweepSettings sweep_settings(const SweepArgs& a) {
   SweepSettings s;
-  const ImageSize size = a.size;
-  s.width = size.width;
-  s.height = size.height;
+  s.width = a.size.width;
+  s.height = a.size.height;
   check_range(a.frames, 1, 10000, "--frames");
   check_range(a.warmup, 0, 10000, "--warmup");
   check_range(a.rounds, 1, 100, "--rounds");
@@ -129,7 +121,57 @@ int run_sweep_command(const SweepArgs& a) {
   s.ref_spp = a.ref_spp;
   s.grid = a.grid;
   if (a.time_by) s.clock = *a.time_by;
-  LoadedInput loaded = load_input_scene(a.input, {}, opts, {}, a.overrides.set);
+  s.dispatch = a.dispatch;
+  s.group = a.compute_group.value_or(ComputeGroup{});
+  return s;
+}
+
+// The grid's rows, a graph's cell-size rows added, cut to --only's.
+std::vector<SweepConfig> sweep_rows(const SweepArgs& a, const LoadedInput& in, const AssembleOptions& opts) {
+  std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, a.grid, a.load.preset);
+  if (opts.graph) {  // the pruning grid's cells: half and twice the planned size
+    const GraphEvalPlan& plan = opts.graph->plan;
+    const glm::vec3 cell = plan.pruned() ? plan.levels[0].cell : glm::vec3(0.0f);
+    for (SweepConfig& c : cell_size_rows(in.scene.quality, std::max({cell.x, cell.y, cell.z}), a.load.preset))
+      configs.push_back(std::move(c));
+  }
+  if (a.only.empty()) return configs;
+  std::vector<SweepConfig> kept;
+  for (const std::string& name : a.only) {
+    const auto it = std::find_if(configs.begin(), configs.end(), [&](const SweepConfig& c) { return c.name == name; });
+    if (it == configs.end())
+      fail_input("no row '" + name + "' in the " + sweep_grid_name(a.grid) + " grid", {}, 0, "--only",
+                 "row names are in the first column of the CSV, e.g. textbook, balanced, omega=1.5");
+    kept.push_back(*it);
+  }
+  return kept;
+}
+
+// --dispatch auto: probed on the scene's own pass (pipeline/dispatch_probe.h).
+void choose_dispatch(FrameSession& session, const LoadedInput& in, const Scene& posed, const AssembleOptions& opts,
+                     const SweepArgs& a, SweepSettings& s) {
+  PreparedFrame probe;
+  probe.in = in;
+  probe.in.scene.bloom.enabled = false;  // the rows draw without bloom
+  probe.opts = opts;
+  probe.opts.graph = nullptr;  // as before: the probe times the pass without building a pruned grid
+  probe.post_src = assemble_post(in.scene.render.tonemap, true, opts);
+  StillFrame f;
+  f.in.scene = &posed;
+  f.in.time = s.time;
+  f.params.exposure = posed.render.exposure;
+  const DispatchChoice c = session.load(probe).choose(s.dispatch, a.compute_group, f, !a.quiet);
+  s.dispatch = c.dispatch;
+  s.group = c.group;
+}
+
+}  // namespace
+
+int run_sweep_command(const SweepArgs& a) {
+  // The shader render and bench build: specialized to the scene (and each row's quality).
+  AssembleOptions opts = load_assemble_options(a.load);
+  SweepSettings s = sweep_settings(a);
+  LoadedInput loaded = load_input_scene(a.input, {}, opts, {}, a.load.overrides.set);
   prepare_graph_shape(loaded.scene, opts);  // once: the rows of its cell size take it from here
   assemble_input(loaded, opts);
   const LoadedInput& in = loaded;
@@ -137,29 +179,8 @@ int run_sweep_command(const SweepArgs& a) {
     fail_input("sweep needs an SDF scene: a Shadertoy shader has no quality settings", a.input, 0, {},
                "wrap the map in a scene .toml");
   s.time = in.scene.render.time;
-  s.dispatch = a.dispatch;
-  const std::optional<ComputeGroup> group = a.compute_group;
-  s.group = group.value_or(ComputeGroup{});
   check_compute_input(s.dispatch, in);
-
-  std::vector<SweepConfig> configs = sweep_grid(in.scene.quality, s.grid, a.preset);
-  if (opts.graph) {  // the pruning grid's cells: half and twice the planned size
-    const GraphEvalPlan& plan = opts.graph->plan;
-    const glm::vec3 cell = plan.pruned() ? plan.levels[0].cell : glm::vec3(0.0f);
-    for (SweepConfig& c : cell_size_rows(in.scene.quality, std::max({cell.x, cell.y, cell.z}), a.preset))
-      configs.push_back(std::move(c));
-  }
-  if (!a.only.empty()) {
-    std::vector<SweepConfig> kept;
-    for (const std::string& name : a.only) {
-      const auto it = std::find_if(configs.begin(), configs.end(), [&](const SweepConfig& c) { return c.name == name; });
-      if (it == configs.end())
-        fail_input("no row '" + name + "' in the " + sweep_grid_name(a.grid) + " grid", {}, 0, "--only",
-                   "row names are in the first column of the CSV, e.g. textbook, balanced, omega=1.5");
-      kept.push_back(*it);
-    }
-    configs = std::move(kept);
-  }
+  const std::vector<SweepConfig> configs = sweep_rows(a, in, opts);
   // Outputs are checked before any work: the directory is made if missing.
   const fs::path dir(a.out);
   std::error_code ec;
@@ -174,24 +195,10 @@ int run_sweep_command(const SweepArgs& a) {
   ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
   ::setenv("__GL_SHADER_DISK_CACHE", "0", 1);
   FrameSession session;
-  const Context& ctx = session.context(backend);
+  const Context& ctx = session.context(a.backend);
   if (!a.time_by) s.clock = ctx.info().software() ? SweepClock::cpu : SweepClock::gpu;
   const Scene posed = animated(in.scene, s.time);
-  if (s.dispatch == Dispatch::automatic) {  // probed on the scene's own pass (pipeline/dispatch_probe.h)
-    PreparedFrame probe;
-    probe.in = in;
-    probe.in.scene.bloom.enabled = false;  // the rows draw without bloom
-    probe.opts = opts;
-    probe.opts.graph = nullptr;  // as before: the probe times the pass without building a pruned grid
-    probe.post_src = assemble_post(in.scene.render.tonemap, true, opts);
-    StillFrame f;
-    f.in.scene = &posed;
-    f.in.time = s.time;
-    f.params.exposure = posed.render.exposure;
-    const DispatchChoice c = session.load(probe).choose(s.dispatch, group, f, !a.quiet);
-    s.dispatch = c.dispatch;
-    s.group = c.group;
-  }
+  if (s.dispatch == Dispatch::automatic) choose_dispatch(session, in, posed, opts, a, s);
   const size_t n = configs.size();
   const SweepResult r = run_sweep(ctx, posed, configs, opts, s, [&](size_t i, const std::string& name) {
     if (a.quiet) return;

@@ -7,7 +7,7 @@
 
 #include "sweep/sweep.h"
 #include "sweep/sweep_grid.h"
-#include "cli/override_flags.h"
+#include "cli/load_flags.h"
 #include "gl/context.h"
 #include "pipeline/input.h"
 #include "render/compute_frame.h"
@@ -30,16 +30,14 @@ struct SweepArgs {
   SweepGrid grid = SweepGrid::quick;
   std::optional<SweepClock> time_by;  // the clock of the fronts and the plot; none: auto
   std::vector<std::string> only;    // row names to keep (empty: the whole grid)
-  std::string preset = "balanced";  // the rows vary the settings around this preset
   std::string out = ".";            // directory for <scene>.sweep.{csv,json,png}
   Backend backend = Backend::automatic;
-  std::string shader_dir;
-  std::vector<std::string> allow_include;
+  LoadFlags load = [] {  // no -D, --disable or Shadertoy options (cli/load_flags.h)
+    LoadFlags f;
+    f.preset = "balanced";  // the rows vary the settings around this preset
+    return f;
+  }();
   bool quiet = false;
-  bool no_specialize = false;       // time the generic shader, as bench --no-specialize
-  GraphEval graph_eval = GraphEval::auto_;  // --graph-eval
-  bool no_prune = false;                   // --no-prune
-  Overrides overrides;              // --set, --uniform (cli/override_flags.h)
   Dispatch dispatch = Dispatch::fragment;  // --dispatch fragment|compute|auto (cli/dispatch_flag.h)
   std::optional<ComputeGroup> compute_group;  // hidden --compute-group; none: 8x8, or auto's measured group
 };

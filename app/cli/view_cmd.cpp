@@ -37,17 +37,13 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
                                              "reloads on every save (docs/viewer.md)");
   cmd->add_option("input", a.input, "Scene .toml, graph file (.json) or Shadertoy .glsl/.frag/.json")->required();
   add_size_flag(cmd, "--size", a.size, "Window size WxH (default: the scene's, at most 1280x720)")->check(not_empty());
-  add_shader_dir_flag(cmd, a.shader_dir);
-  add_define_flag(cmd, a.defines);
   cmd->add_option("--debug-view", a.debug_view,
                   "Start in a debug view: 0 lit, 1 steps, 2 normals, 3 depth, 4 AO, 5 shadow, 6 material id")
       ->check(CLI::Range(0, 6));
-  cmd->add_option("--time", a.time,
-                  "Start time in seconds, any finite value as for render (default: the scene's [render] time)")
-      ->check(seconds_value())
-      ->each([&a](const std::string&) { a.time_set = true; });
-  cmd->add_option("--preset", a.preset, "Quality preset to start with, as render --preset (default: the scene's)")
-      ->check(one_of(quality_preset_names()));
+  cmd->add_option_function<double>(
+         "--time", [&a](double v) { a.time = v; },
+         "Start time in seconds, any finite value as for render (default: the scene's [render] time)")
+      ->check(seconds_value());
   cmd->add_option_function<std::string>(
          "--accumulate",
          [&a](const std::string& v) {
@@ -115,11 +111,11 @@ CLI::App* add_view_command(CLI::App& app, ViewArgs& a) {
                     "Trace the scene pass as a fragment pass (default), a compute dispatch, or auto; the window's "
                     "display pass stays fragment (docs/viewer.md#compute)");
   add_compute_group_flag(cmd, a.compute_group);
-  cmd->add_flag("--no-specialize", a.no_specialize,
-                "Build the generic shader: every feature compiled (docs/specialization.md)");
-  add_graph_flags(cmd, a.graph_eval, a.no_prune);
-  add_allow_include_flag(cmd, a.allow_include);
-  add_override_flags(cmd, a.overrides);
+  LoadFlagChoice load;
+  load.disable = load.shadertoy = false;
+  load.preset_help = "Quality preset to start with, as render --preset (default: the scene's)";
+  load.no_specialize_help = "Build the generic shader: every feature compiled (docs/specialization.md)";
+  add_load_flags(cmd, a.load, load);
   return cmd;
 }
 
@@ -201,21 +197,16 @@ int run_view(const ViewArgs& a) {
   refuse_image_inputs({a.input});  // before any window, as render refuses it (cli/glslviewer_flags.h)
   live::ViewerOptions o;
   o.input = a.input;
-  o.assemble = AssembleOptions{resolve_shader_dir(a.shader_dir), a.defines,
-                               parse_allow_include(a.allow_include)};
   // Folded as `render` is; what the panel drags stays a uniform while it is
-  // dragged (live/live_values.h).
-  o.assemble.specialize = a.no_specialize ? Specialization::generic : Specialization::folded;
-  o.assemble.graph_eval = a.graph_eval;
-  o.assemble.prune = !a.no_prune;
+  // dragged (live/live_values.h). Made the initializers at every build:
+  // --uniform's values, where the panel's sliders start.
+  o.assemble = load_assemble_options(a.load);
   // A graph's bounds follow its box: as uniforms, a saved transform that
   // moves it recompiles nothing (docs/viewer.md#graphs).
   o.assemble.bounds_uniforms = true;
-  // Made the initializers at every build: the panel's sliders start there.
-  o.assemble.uniforms = a.overrides.uniforms;
   const fs::path input = a.input;
   const AssembleOptions opts = o.assemble;
-  const SceneOverrides set = a.overrides.set;
+  const SceneOverrides set = a.load.overrides.set;
   // --set is applied to every read of the file: a save keeps the overrides.
   o.set = set;
   // A bad --uniform is a bad flag: exit 2 now, not an error in the window.
@@ -248,8 +239,8 @@ int run_view(const ViewArgs& a) {
     check_video_path(a.record_video);
     o.record.video = a.record_video;
   }
-  o.preset = a.preset;
-  if (a.time_set) o.time = a.time;
+  o.preset = a.load.preset;
+  if (a.time) o.time = *a.time;
   o.paused = a.paused;
   o.log_file = a.log;
   o.capture_dir = a.capture_dir;

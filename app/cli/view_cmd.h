@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "cli/override_flags.h"
+#include "cli/load_flags.h"
 #include "live/live_values.h"
 #include "io/sequence.h"
 #include "pipeline/input.h"
@@ -33,17 +33,14 @@ DragFlag parse_drag_flag(const std::string& text);
 struct ViewArgs {
   std::string input;
   ImageSize size;            // window --size WxH; 0x0: the scene's, at most 1280x720
-  std::string shader_dir;
-  std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE], parsed
+  LoadFlags load;            // no --disable or Shadertoy options; --set and --uniform apply again at every reload
   int debug_view = 0;
   int accumulate = -1;
   std::string record_dir, record_video;       // --record-dir, --record-video
   std::optional<FrameRange> record_frames;   // --record A..B
   double record_fps = 0.0;
   std::string audio_device = "default";  // --accumulate: -1 the scene's spp, 0 no limit (unlimited), N
-  std::string preset;
-  double time = 0.0;
-  bool time_set = false;     // false: the scene's [render] time
+  std::optional<double> time;  // none: the scene's [render] time
   bool paused = false;
   std::string log;           // --log FILE; empty: stderr
   std::string capture_dir;
@@ -57,12 +54,7 @@ struct ViewArgs {
   bool no_panel = false;
   Dispatch dispatch = Dispatch::fragment;     // --dispatch fragment|compute|auto
   std::optional<ComputeGroup> compute_group;  // hidden --compute-group WxH; none: 8x8, or auto's measured group
-  bool no_specialize = false;  // the generic shader, not one specialized to the scene
-  GraphEval graph_eval = GraphEval::auto_;  // --graph-eval
-  bool no_prune = false;                   // --no-prune
   bool verbose = false;        // -v: every compile error of a load that fails before the window
-  std::vector<std::string> allow_include;  // more directories #include may read
-  Overrides overrides;       // --set, --uniform: applied again at every reload
   std::string mesh_on_exit;  // --mesh-on-exit FILE; empty: none
   int mesh_resolution = 256;  // --mesh-resolution: M's and --mesh-on-exit's cells
   long mesh_frame = -1;      // --mesh-frame N (scripts): M after settled frame N

@@ -248,30 +248,15 @@ class Loader {
 
   ShaderProject load(const json& root) {
     ShaderProject p;
-    const json* shader = &root;
     std::string prefix;
-    if (root.is_array()) {
-      if (root.empty()) fail({}, "the file holds no shader");
-      if (root.size() > 1)
-        p.warnings.push_back(file_ + " holds " + std::to_string(root.size()) + " shaders; rendering the first");
-      shader = &root[0];
-      prefix = "[0].";
-    } else if (root.is_object() && root.contains("Shader")) {
-      shader = &root["Shader"];
-      prefix = "Shader.";
-    } else if (root.is_object() && root.contains("Error")) {
-      fail("Error", "the file is an error from the Shadertoy API: " + json_brief(root["Error"], 200), "download the shader again");
-    }
-    if (!shader->is_object() || !shader->contains("renderpass") || !(*shader)["renderpass"].is_array())
-      fail(prefix + "renderpass", "no 'renderpass' array: this is not Shadertoy JSON",
-           "expected {\"Shader\": {\"renderpass\": [...]}} or the site's export, an array of shaders");
-    if (shader->contains("info") && (*shader)["info"].is_object() && (*shader)["info"].contains("name") &&
-        (*shader)["info"]["name"].is_string())
-      p.name = (*shader)["info"]["name"].get<std::string>();
-    const json& passes = (*shader)["renderpass"];
+    const json& shader = shader_of(root, p, prefix);
+    if (shader.contains("info") && shader["info"].is_object() && shader["info"].contains("name") &&
+        shader["info"]["name"].is_string())
+      p.name = shader["info"]["name"].get<std::string>();
+    const json& passes = shader["renderpass"];
     std::vector<ProjectPass> buffers;
-    bool have_image = false, cube_seen = false;
-    ProjectPass image;
+    std::optional<ProjectPass> image;
+    bool cube_seen = false;
     for (size_t i = 0; i < passes.size(); ++i) {
       const std::string path = prefix + "renderpass[" + std::to_string(i) + "]";
       const json& rp = passes[i];
@@ -295,49 +280,25 @@ class Loader {
       }
       if (type != "image" && type != "buffer" && type != "cubemap")
         fail(path + ".type", "unknown pass type '" + type + "'", "image, buffer, common, sound or cubemap");
-      if (rp.contains("inputs")) {
-        if (!rp["inputs"].is_array()) fail(path + ".inputs", "'inputs' must be an array");
-        for (size_t k = 0; k < rp["inputs"].size(); ++k) {
-          const std::string ip = path + ".inputs[" + std::to_string(k) + "]";
-          int channel = 0;
-          ProjectInput in = input(rp["inputs"][k], ip, channel);
-          if (pass.inputs[channel].kind != InputKind::none)
-            fail(ip + ".channel", pass.name + " has two inputs on iChannel" + std::to_string(channel));
-          pass.inputs[channel] = std::move(in);
-        }
-      }
+      read_inputs(rp, path, pass);
       if (type == "image") {
-        if (have_image) fail(path + ".type", "more than one Image pass");
+        if (image) fail(path + ".type", "more than one Image pass");
         pass.kind = PassKind::image;
         image = std::move(pass);
-        have_image = true;
-        continue;
-      }
-      if (type == "cubemap") {  // Cube A: after the buffers, before the Image pass
+      } else if (type == "cubemap") {  // Cube A: after the buffers, before the Image pass
+        if (cube_seen) fail(path + ".type", "more than one cubemap pass", "Shadertoy has one, Cube A");
+        cube_seen = true;
         pass.kind = PassKind::cube;
         pass.output = kCubeA;
         if (!rp.contains("name")) pass.name = "Cube A";
         pass.where = file_ + " (" + pass.name + ")";
-        if (cube_seen) fail(path + ".type", "more than one cubemap pass", "Shadertoy has one, Cube A");
-        cube_seen = true;
         buffers.push_back(std::move(pass));
-        continue;
+      } else {
+        set_buffer_output(rp, path, pass);
+        buffers.push_back(std::move(pass));
       }
-      pass.kind = PassKind::buffer;
-      const json out = rp.contains("outputs") && rp["outputs"].is_array() && !rp["outputs"].empty() &&
-                               rp["outputs"][0].is_object() && rp["outputs"][0].contains("id")
-                           ? rp["outputs"][0]["id"]
-                           : json();
-      pass.output = buffer_of(out, "");
-      if (pass.output < 0 && pass.name.size() == 8 && pass.name.rfind("Buffer ", 0) == 0 && pass.name[7] >= 'A' &&
-          pass.name[7] <= 'D')
-        pass.output = pass.name[7] - 'A';
-      if (pass.output < 0) fail(path + ".outputs", pass.name + " writes no buffer A..D", "its output id is 257..260");
-      if (!rp.contains("name")) pass.name = "Buffer " + buffer_letter(pass.output);
-      pass.where = file_ + " (" + pass.name + ")";
-      buffers.push_back(std::move(pass));
     }
-    if (!have_image) fail(prefix + "renderpass", "the shader has no Image pass");
+    if (!image) fail(prefix + "renderpass", "the shader has no Image pass");
     // Shadertoy runs the buffers A, B, C, D, then Cube A, then the Image, whatever the file's order.
     std::stable_sort(buffers.begin(), buffers.end(),
                      [](const ProjectPass& a, const ProjectPass& b) { return a.output < b.output; });
@@ -346,11 +307,63 @@ class Loader {
         fail(prefix + "renderpass", "two passes write Buffer " + buffer_letter(buffers[i].output),
              "each buffer has one pass that draws it");
     p.passes = std::move(buffers);
-    p.passes.push_back(std::move(image));
+    p.passes.push_back(std::move(*image));
     return p;
   }
 
  private:
+  // The shader object of the API's {"Shader": ...}, or the first of the
+  // site's export array; `prefix` its JSON path ("Shader.", "[0].").
+  const json& shader_of(const json& root, ShaderProject& p, std::string& prefix) {
+    const json* shader = &root;
+    if (root.is_array()) {
+      if (root.empty()) fail({}, "the file holds no shader");
+      if (root.size() > 1)
+        p.warnings.push_back(file_ + " holds " + std::to_string(root.size()) + " shaders; rendering the first");
+      shader = &root[0];
+      prefix = "[0].";
+    } else if (root.is_object() && root.contains("Shader")) {
+      shader = &root["Shader"];
+      prefix = "Shader.";
+    } else if (root.is_object() && root.contains("Error")) {
+      fail("Error", "the file is an error from the Shadertoy API: " + json_brief(root["Error"], 200), "download the shader again");
+    }
+    if (!shader->is_object() || !shader->contains("renderpass") || !(*shader)["renderpass"].is_array())
+      fail(prefix + "renderpass", "no 'renderpass' array: this is not Shadertoy JSON",
+           "expected {\"Shader\": {\"renderpass\": [...]}} or the site's export, an array of shaders");
+    return *shader;
+  }
+
+  // A pass's "inputs", each on its channel, at most one per channel.
+  void read_inputs(const json& rp, const std::string& path, ProjectPass& pass) {
+    if (!rp.contains("inputs")) return;
+    if (!rp["inputs"].is_array()) fail(path + ".inputs", "'inputs' must be an array");
+    for (size_t k = 0; k < rp["inputs"].size(); ++k) {
+      const std::string ip = path + ".inputs[" + std::to_string(k) + "]";
+      int channel = 0;
+      ProjectInput in = input(rp["inputs"][k], ip, channel);
+      if (pass.inputs[channel].kind != InputKind::none)
+        fail(ip + ".channel", pass.name + " has two inputs on iChannel" + std::to_string(channel));
+      pass.inputs[channel] = std::move(in);
+    }
+  }
+
+  // A buffer pass's output, A..D: its output id, else its name "Buffer X".
+  void set_buffer_output(const json& rp, const std::string& path, ProjectPass& pass) {
+    pass.kind = PassKind::buffer;
+    const json out = rp.contains("outputs") && rp["outputs"].is_array() && !rp["outputs"].empty() &&
+                             rp["outputs"][0].is_object() && rp["outputs"][0].contains("id")
+                         ? rp["outputs"][0]["id"]
+                         : json();
+    pass.output = buffer_of(out, "");
+    if (pass.output < 0 && pass.name.size() == 8 && pass.name.rfind("Buffer ", 0) == 0 && pass.name[7] >= 'A' &&
+        pass.name[7] <= 'D')
+      pass.output = pass.name[7] - 'A';
+    if (pass.output < 0) fail(path + ".outputs", pass.name + " writes no buffer A..D", "its output id is 257..260");
+    if (!rp.contains("name")) pass.name = "Buffer " + buffer_letter(pass.output);
+    pass.where = file_ + " (" + pass.name + ")";
+  }
+
   const JsonLines lines_;
   const std::string file_;
 };

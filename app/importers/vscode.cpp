@@ -308,6 +308,95 @@ std::string keyboard_prelude() {
   return s;
 }
 
+// Channel `n` of file `f` (pass `i` of `files`) as the pass reads it: a
+// buffer (a shader file, or the file itself), a cubemap, an image or audio.
+void bind_channel(const std::vector<File>& files, size_t i, size_t n, ProjectInput& in,
+                  std::vector<std::string>& warnings) {
+  const File& f = files[i];
+  const Channel& c = f.ch[n];
+  const std::string key = "#iChannel" + std::to_string(n);
+  if (!c.line) {
+    if (c.type || c.min || c.mag || c.wrap)
+      warnings.push_back(f.where + ": " + key + " has settings but no " + key + " line binds it; they do nothing");
+    return;
+  }
+  const bool cube = c.type && *c.type == "CubeMap";
+  if (c.self || c.kind == FileKind::shader) {
+    if (cube) fail_input(key + "::Type \"CubeMap\": a shader's buffer is 2D", f.where, c.type_line, key + "::Type", kDoc);
+    in.kind = InputKind::buffer;
+    in.buffer = static_cast<int>(i);
+    if (!c.self) {
+      const auto other = std::find_if(files.begin(), files.end(), [&](const File& o) { return o.path == c.path; });
+      in.buffer = other == files.end() ? -1 : static_cast<int>(other - files.begin());
+    }
+    in.sampler = sampler_of(c, f, static_cast<int>(n), {TexFilter::linear, TexWrap::clamp, false, false}, warnings);
+    return;
+  }
+  if (c.kind == FileKind::video)
+    fail_input(key + ": '" + display_path(c.path) + "' is a video, which the extension does not play", f.where, c.line, key,
+               "an image, an audio file or a .glsl buffer");
+  in.src = c.path.string();
+  // The extension's textures: linear, repeat, flipped upright (three.js's flipY).
+  in.sampler = sampler_of(c, f, static_cast<int>(n), {TexFilter::linear, TexWrap::repeat, true, false}, warnings);
+  if (cube) {
+    if (c.path.string().find("{}") == std::string::npos)
+      fail_input(key + "::Type \"CubeMap\": the path needs the '{}' wildcard for its six faces", f.where, c.line, key,
+                 "e.g. \"file://sky_{}.png\" for sky_px.png .. sky_nz.png");
+    in.kind = InputKind::cubemap;  // the six faces are found from the wildcard where cubemaps are loaded
+    in.sampler.vflip = false;      // cube faces are not flipped (three.js CubeTexture, GL's face table)
+    return;
+  }
+  const std::string problem = input_file_problem(c.path);
+  if (!problem.empty()) fail_input(key + ": '" + display_path(c.path) + "' " + problem, f.where, c.line, key, kDoc);
+  in.kind = c.kind == FileKind::audio ? InputKind::music : InputKind::texture;
+  in.file = c.path;
+  if (in.kind == InputKind::music) in.sampler = {TexFilter::linear, TexWrap::clamp, false, false};
+}
+
+// #iKeyboard: the first free channel, its line made the #define that names
+// it. False when the file has no such line.
+bool bind_keyboard(File& f, ProjectPass& ps) {
+  if (!f.keyboard_line) return false;
+  size_t free = 0;
+  while (free < 4 && ps.inputs[free].kind != InputKind::none) ++free;
+  if (free == 4)
+    fail_input("#iKeyboard: all four channels are bound; the keyboard needs one", f.where, f.keyboard_line, "#iKeyboard",
+               "marchstudio binds the keyboard to a free iChannel; free one");
+  ps.inputs[free].kind = InputKind::keyboard;
+  std::vector<std::string> lines = line_strings(f.code);
+  lines[static_cast<size_t>(f.keyboard_line) - 1] = "#define iKeyboard iChannel" + std::to_string(free);
+  f.code.clear();
+  for (size_t k = 0; k < lines.size(); ++k) f.code += lines[k] + (k + 1 < lines.size() ? "\n" : "");
+  return true;
+}
+
+// The file that reads the main file (itself included), and the line that
+// does: the main file is then a buffer too, shown by a display pass.
+const File* reader_of_main(const std::vector<File>& files, int& line) {
+  const File& main = files.back();
+  for (const File& f : files)
+    for (const Channel& c : f.ch)
+      if (c.line && ((c.self && &f == &main) || (!c.self && c.path == main.path))) {
+        line = c.line;
+        return &f;
+      }
+  return nullptr;
+}
+
+// The Image pass that shows the main file's buffer (the last of `buffers`).
+ProjectPass display_pass(const File& main, int buffers, bool any_main) {
+  ProjectPass show;
+  show.kind = PassKind::image;
+  show.name = "Image";
+  show.where = main.where + " (display)";
+  show.code = "void mainImage(out vec4 c, in vec2 f) { c = texelFetch(iChannel0, ivec2(f), 0); }\n";
+  if (any_main) show.code += main_suffix(false);
+  show.inputs[0].kind = InputKind::buffer;
+  show.inputs[0].buffer = buffers - 1;
+  show.inputs[0].sampler = {TexFilter::nearest, TexWrap::clamp, false, false};
+  return show;
+}
+
 }  // namespace
 
 bool looks_like_vscode(std::string_view source) {
@@ -320,20 +409,9 @@ ShaderProject load_vscode(const std::string& text, const fs::path& file, const s
   Loader l{roots, {}, {}};
   l.visit(file, text, {}, 0);
   std::vector<File>& files = l.order;  // the main file last
-  const auto index_of = [&](const fs::path& p) {
-    for (size_t i = 0; i < files.size(); ++i)
-      if (files[i].path == p) return static_cast<int>(i);
-    return -1;
-  };
-  // The main file is a buffer too when something reads it (itself
-  // included); a display pass then shows it.
   const File& main = files.back();
-  const File* reads_main = nullptr;
   int reads_main_line = 0;
-  for (const File& f : files)
-    for (const Channel& c : f.ch)
-      if (c.line && ((c.self && &f == &main) || (!c.self && c.path == main.path)) && !reads_main)
-        reads_main = &f, reads_main_line = c.line;
+  const File* reads_main = reader_of_main(files, reads_main_line);
   const bool any_main = std::any_of(files.begin(), files.end(), [](const File& f) { return f.uses_main; });
   const size_t buffers = files.size() - 1 + (reads_main ? 1 : 0);
   if (buffers > 4) {
@@ -355,72 +433,13 @@ ShaderProject load_vscode(const std::string& text, const fs::path& file, const s
     ps.name = is_buffer ? "Buffer " + buffer_letter(ps.output) : "Image";
     ps.file = f.path;
     ps.where = f.where;
-    for (size_t n = 0; n < 4; ++n) {
-      const Channel& c = f.ch[n];
-      ProjectInput& in = ps.inputs[n];
-      const std::string key = "#iChannel" + std::to_string(n);
-      if (!c.line) {
-        if (c.type || c.min || c.mag || c.wrap)
-          p.warnings.push_back(f.where + ": " + key + " has settings but no " + key + " line binds it; they do nothing");
-        continue;
-      }
-      const bool cube = c.type && *c.type == "CubeMap";
-      if (c.self || c.kind == FileKind::shader) {
-        if (cube) fail_input(key + "::Type \"CubeMap\": a shader's buffer is 2D", f.where, c.type_line, key + "::Type", kDoc);
-        in.kind = InputKind::buffer;
-        in.buffer = c.self ? static_cast<int>(i) : index_of(c.path);
-        in.sampler = sampler_of(c, f, static_cast<int>(n), {TexFilter::linear, TexWrap::clamp, false, false}, p.warnings);
-        continue;
-      }
-      if (c.kind == FileKind::video)
-        fail_input(key + ": '" + display_path(c.path) + "' is a video, which the extension does not play", f.where, c.line, key,
-                   "an image, an audio file or a .glsl buffer");
-      in.src = c.path.string();
-      // The extension's textures: linear, repeat, flipped upright (three.js's flipY).
-      in.sampler = sampler_of(c, f, static_cast<int>(n), {TexFilter::linear, TexWrap::repeat, true, false}, p.warnings);
-      if (cube) {
-        if (c.path.string().find("{}") == std::string::npos)
-          fail_input(key + "::Type \"CubeMap\": the path needs the '{}' wildcard for its six faces", f.where, c.line, key,
-                     "e.g. \"file://sky_{}.png\" for sky_px.png .. sky_nz.png");
-        in.kind = InputKind::cubemap;  // the six faces are found from the wildcard where cubemaps are loaded
-        in.sampler.vflip = false;      // cube faces are not flipped (three.js CubeTexture, GL's face table)
-        continue;
-      }
-      const std::string problem = input_file_problem(c.path);
-      if (!problem.empty()) fail_input(key + ": '" + display_path(c.path) + "' " + problem, f.where, c.line, key, kDoc);
-      in.kind = c.kind == FileKind::audio ? InputKind::music : InputKind::texture;
-      in.file = c.path;
-      if (in.kind == InputKind::music) in.sampler = {TexFilter::linear, TexWrap::clamp, false, false};
-    }
-    if (f.keyboard_line) {
-      size_t free = 0;
-      while (free < 4 && ps.inputs[free].kind != InputKind::none) ++free;
-      if (free == 4)
-        fail_input("#iKeyboard: all four channels are bound; the keyboard needs one", f.where, f.keyboard_line, "#iKeyboard",
-                   "marchstudio binds the keyboard to a free iChannel; free one");
-      ps.inputs[free].kind = InputKind::keyboard;
-      std::vector<std::string> lines = line_strings(f.code);
-      lines[static_cast<size_t>(f.keyboard_line) - 1] = "#define iKeyboard iChannel" + std::to_string(free);
-      f.code.clear();
-      for (size_t k = 0; k < lines.size(); ++k) f.code += lines[k] + (k + 1 < lines.size() ? "\n" : "");
-      keyboard = true;
-    }
+    for (size_t n = 0; n < 4; ++n) bind_channel(files, i, n, ps.inputs[n], p.warnings);
+    keyboard = bind_keyboard(f, ps) || keyboard;
     ps.code = f.uses_main ? std::regex_replace(f.code, std::regex(R"(\bmain\b)"), "msVsMain") : f.code;
     if (any_main) ps.code += main_suffix(f.uses_main);
     p.passes.push_back(std::move(ps));
   }
-  if (reads_main) {
-    ProjectPass show;
-    show.kind = PassKind::image;
-    show.name = "Image";
-    show.where = main.where + " (display)";
-    show.code = "void mainImage(out vec4 c, in vec2 f) { c = texelFetch(iChannel0, ivec2(f), 0); }\n";
-    if (any_main) show.code += main_suffix(false);
-    show.inputs[0].kind = InputKind::buffer;
-    show.inputs[0].buffer = static_cast<int>(files.size()) - 1;
-    show.inputs[0].sampler = {TexFilter::nearest, TexWrap::clamp, false, false};
-    p.passes.push_back(std::move(show));
-  }
+  if (reads_main) p.passes.push_back(display_pass(main, static_cast<int>(files.size()), any_main));
   if (keyboard || any_main) {
     p.common = (any_main ? main_prelude() : std::string()) + (keyboard ? keyboard_prelude() : std::string());
     p.common_where = main.where + (keyboard ? " (#iKeyboard functions)" : " (main() entry point)");

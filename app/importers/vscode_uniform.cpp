@@ -68,35 +68,46 @@ std::string format_int_range(double v) {
   return o.str() + " is out of range for int (-2147483648..2147483647)";
 }
 
-}  // namespace
-
-std::string vscode_uniform_line(const std::string& args, const std::string& where, int line) {
-  const auto fail = [&](const std::string& what, const std::string& hint = {}) {
+// The one-line error of an #iUniform line, blamed on its file and line.
+struct LineError {
+  const std::string& where;
+  int line;
+  [[noreturn]] void operator()(const std::string& what, const std::string& hint = {}) const {
     fail_input(what, where, line, "#iUniform",
                hint.empty() ? "the extension's form: #iUniform float name = 1.0 in { 0.0, 5.0 } (docs/vscode.md)" : hint);
-  };
-  std::istringstream in(args);
-  std::string type, name;
-  in >> type >> name;
-  const size_t eq_name = name.find('=');
-  std::string rest;
-  std::getline(in, rest);
-  if (eq_name != std::string::npos) rest = name.substr(eq_name) + rest, name = name.substr(0, eq_name);
-  if (type.empty() || name.empty()) fail("expected a type and a name");
-  int components = 0;
-  bool is_int = false, color = false;
-  if (type == "float") components = 1;
-  else if (type == "int") components = 1, is_int = true;
-  else if (type == "vec2" || type == "vec3" || type == "vec4") components = type.back() - '0';
-  else if (type == "color3") components = 3, color = true;
-  else if (type.rfind("ivec", 0) == 0)
-    fail("'" + type + "': marchstudio's uniforms are float, int, vec2, vec3 and vec4", "declare it as vec" + type.substr(4));
-  else fail("'" + type + "' is not a type #iUniform takes", "float, int, vec2, vec3, vec4 or color3");
-  for (char c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') fail("'" + name + "' is not a GLSL name");
+  }
+};
 
-  // Split the rest at its keywords: "= v", "in { a, b }", "step s", "sequencer {...}".
+// What follows the name, split at its keywords: "= v", "in { a, b }",
+// "step s", "sequencer {...}".
+struct UniformTail {
   std::string def, lo_text, hi_text;
+};
+
+// "in { min, max }" at the start of `rest`: min and max, split at the comma
+// outside parentheses; `rest` keeps what follows the '}'.
+void read_range(std::string& rest, UniformTail& t, const LineError& fail) {
+  const size_t open = rest.find('{'), close = rest.find('}');
+  if (open == std::string::npos || close == std::string::npos || close < open) fail("expected 'in { min, max }'");
+  const std::string range = rest.substr(open + 1, close - open - 1);
+  int depth = 0;
+  size_t split = std::string::npos;
+  for (size_t i = 0; i < range.size(); ++i) {
+    if (range[i] == '(') ++depth;
+    else if (range[i] == ')') --depth;
+    else if (range[i] == ',' && depth == 0) {
+      if (split != std::string::npos) fail("expected two values in { min, max }");
+      split = i;
+    }
+  }
+  if (split == std::string::npos) fail("expected two values in { min, max }");
+  t.lo_text = range.substr(0, split);
+  t.hi_text = range.substr(split + 1);
+  rest = trim(rest.substr(close + 1));
+}
+
+UniformTail read_tail(std::string rest, const LineError& fail) {
+  UniformTail t;
   rest = trim(rest);
   if (!rest.empty() && rest[0] == '=') {
     rest = trim(rest.substr(1));
@@ -108,41 +119,55 @@ std::string vscode_uniform_line(const std::string& args, const std::string& wher
     } else {
       while (end < rest.size() && !std::isspace(static_cast<unsigned char>(rest[end])) && rest[end] != '{') ++end;
     }
-    def = trim(rest.substr(0, end));
+    t.def = trim(rest.substr(0, end));
     rest = trim(rest.substr(end));
   }
-  if (rest.rfind("in", 0) == 0) {
-    const size_t open = rest.find('{'), close = rest.find('}');
-    if (open == std::string::npos || close == std::string::npos || close < open) fail("expected 'in { min, max }'");
-    const std::string range = rest.substr(open + 1, close - open - 1);
-    // The comma between min and max is the one outside parentheses.
-    int depth = 0;
-    size_t split = std::string::npos;
-    for (size_t i = 0; i < range.size(); ++i) {
-      if (range[i] == '(') ++depth;
-      else if (range[i] == ')') --depth;
-      else if (range[i] == ',' && depth == 0) {
-        if (split != std::string::npos) fail("expected two values in { min, max }");
-        split = i;
-      }
-    }
-    if (split == std::string::npos) fail("expected two values in { min, max }");
-    lo_text = range.substr(0, split);
-    hi_text = range.substr(split + 1);
-    rest = trim(rest.substr(close + 1));
-  }
+  if (rest.rfind("in", 0) == 0) read_range(rest, t, fail);
   if (!rest.empty() && rest.rfind("step", 0) != 0 && rest.rfind("sequ", 0) != 0)
     fail("unexpected '" + rest + "'");
   // `step` and `sequencer` tune the extension's own panel; marchstudio's slider is continuous.
+  return t;
+}
+
+// The type's components, and whether it is an int or a colour.
+int type_components(const std::string& type, bool& is_int, bool& color, const LineError& fail) {
+  if (type == "float") return 1;
+  if (type == "int") return is_int = true, 1;
+  if (type == "vec2" || type == "vec3" || type == "vec4") return type.back() - '0';
+  if (type == "color3") return color = true, 3;
+  if (type.rfind("ivec", 0) == 0)
+    fail("'" + type + "': marchstudio's uniforms are float, int, vec2, vec3 and vec4", "declare it as vec" + type.substr(4));
+  fail("'" + type + "' is not a type #iUniform takes", "float, int, vec2, vec3, vec4 or color3");
+}
+
+}  // namespace
+
+std::string vscode_uniform_line(const std::string& args, const std::string& where, int line) {
+  const LineError fail{where, line};
+  std::istringstream in(args);
+  std::string type, name;
+  in >> type >> name;
+  const size_t eq_name = name.find('=');
+  std::string rest;
+  std::getline(in, rest);
+  if (eq_name != std::string::npos) rest = name.substr(eq_name) + rest, name = name.substr(0, eq_name);
+  if (type.empty() || name.empty()) fail("expected a type and a name");
+  bool is_int = false, color = false;
+  const int components = type_components(type, is_int, color, fail);
+  for (char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') fail("'" + name + "' is not a GLSL name");
+  const UniformTail t = read_tail(rest, fail);
+  const std::string& def = t.def;
 
   std::vector<double> value;
   if (!def.empty() && (!parse_value(def, value) || (value.size() != 1 && static_cast<int>(value.size()) != components)))
     fail("'" + def + "' is not a value of type " + type);
   double lo = 0, hi = 1;
-  const bool ranged = !lo_text.empty();
+  const bool ranged = !t.lo_text.empty();
   if (ranged) {
     std::vector<double> l, h;
-    if (!parse_value(lo_text, l) || !parse_value(hi_text, h)) fail("the range { " + trim(lo_text) + ", " + trim(hi_text) + " } is not two values");
+    if (!parse_value(t.lo_text, l) || !parse_value(t.hi_text, h))
+      fail("the range { " + trim(t.lo_text) + ", " + trim(t.hi_text) + " } is not two values");
     for (const std::vector<double>* v : {&l, &h})
       for (double x : *v)
         if (x != (*v)[0])

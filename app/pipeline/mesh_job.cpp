@@ -10,7 +10,6 @@
 #include <utility>
 
 #include "core/clock.h"
-#include "core/deadline.h"
 #include "core/error.h"
 #include "core/format.h"
 #include "core/memory_budget.h"
@@ -20,6 +19,7 @@
 #include "mesh/sparse_field.h"
 #include "mesh/untangle.h"
 #include "mesh/vertex_normals.h"
+#include "pipeline/guarded_job.h"
 #include "pipeline/input.h"
 #include "pipeline/nonfinite.h"
 #include "render/field_sampler.h"
@@ -192,11 +192,9 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   // From here on the export has job.frame.timeout seconds: checked between
   // stages, and a watchdog ends the process if a dispatch never returns.
   const std::string what = job.frame.label.empty() ? "the mesh export" : job.frame.label;
-  const Deadline deadline = Deadline::after(job.frame.timeout);
-  std::optional<Watchdog> watchdog;
-  if (deadline.limited()) watchdog.emplace().arm(deadline, what);
+  GuardedJob timeout(job.frame.timeout, what);
   const MeshProgress step = [&](const char* stage, double fraction) {
-    deadline.check(what);
+    timeout.check();
     if (progress) progress(stage, fraction);
   };
   MeshReport r;
@@ -252,7 +250,7 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   r.readback_bytes = sampler.readback_bytes();
   step("writing", 0.9);
   // The write is atomic, and not cut short by the watchdog: no temporary is left.
-  if (watchdog) watchdog->disarm();
+  timeout.finish();
   const auto w = Clock::now();
   write_files(job, scene, band, mesh, r);
   r.write_s = seconds_since(w);

@@ -21,6 +21,7 @@
 #include "pipeline/dispatch_probe.h"
 #include "pipeline/fingerprint.h"
 #include "pipeline/frame_session.h"
+#include "pipeline/guarded_job.h"
 #include "pipeline/nonfinite.h"
 #include "pipeline/prepare.h"
 #include "pipeline/progress.h"
@@ -190,14 +191,13 @@ struct LoopTimes {
 // One frame drawn and read back, under its own --timeout; the image with
 // its AOV channels and the NaN/Inf pixels counted.
 Image draw_frame(const SequenceJob& job, SequencePlan& plan, FrameSession& session, int f, const Scene& posed,
-                 Watchdog* watchdog, FrameWriter& writer, long long& nonfinite) {
+                 GuardedJob& guard, FrameWriter& writer, long long& nonfinite) {
   const FrameJob& fj = job.frame;
   FrameParams& fp = plan.p.fp;
   // A frame that never finishes ends the run, but the frames already
   // handed to the writers are written first (also by the watchdog).
-  const Deadline deadline = Deadline::after(fj.timeout);
-  if (watchdog) watchdog->arm(deadline, "frame " + std::to_string(f), [&writer] { writer.finish(); });
-  fp.deadline = deadline.limited() ? &deadline : nullptr;
+  guard.restart("frame " + std::to_string(f), [&writer] { writer.finish(); });
+  fp.deadline = guard.limit();
   fp.exposure = posed.render.exposure;
   Image img;
   try {
@@ -207,18 +207,17 @@ Image draw_frame(const SequenceJob& job, SequencePlan& plan, FrameSession& sessi
     nonfinite = count_nonfinite_pixels(img, fp.aovs ? &still.aovs : nullptr) + still.flagged;
     if (fp.aovs) img = append_channels(img, select_channels(still.aovs, fj.aov_channels));
   } catch (const Error& e) {
-    if (watchdog) watchdog->disarm();  // its hook names `writer`, which unwinding destroys
+    guard.disarm();  // its hook names `writer`, which unwinding destroys
     fp.deadline = nullptr;
     if (e.info().key == "--timeout") fail_timeout("frame " + std::to_string(f), fj.timeout);
     throw;
   } catch (...) {
-    if (watchdog) watchdog->disarm();
+    guard.disarm();
     fp.deadline = nullptr;
     throw;
   }
-  if (watchdog) watchdog->disarm();
   fp.deadline = nullptr;
-  if (deadline.expired()) fail_timeout("frame " + std::to_string(f), fj.timeout);
+  guard.finish();  // past the frame's deadline: the timeout error, the frame not written
   return img;
 }
 
@@ -236,7 +235,7 @@ void reshape_graph(FrameSession& session, const Scene& posed, const AssembleOpti
 
 // The frames to render, drawn and handed to the writers in order.
 LoopTimes draw_frames(const SequenceJob& job, SequencePlan& plan, Progress& progress, const StopSignals& signals,
-                      Watchdog* watchdog, const Deadline& loading) {
+                      GuardedJob& guard) {
   const FrameJob& fj = job.frame;
   const std::vector<int>& todo = plan.scan.todo;
   const LoadedInput& in = plan.p.in;
@@ -271,7 +270,7 @@ LoopTimes draw_frames(const SequenceJob& job, SequencePlan& plan, Progress& prog
   fs::path previous_state = sp.resume_from >= 0 ? checkpoint_path(job.pattern.path(sp.resume_from), sp.key) : fs::path{};
   progress.start();
   const Clock::time_point loop_start = Clock::now();
-  loading.check("loading and compiling");
+  guard.check();  // still loading and compiling's budget
   const NonfiniteGuard guard_base{fj.input.string(), fj.strict, {}, "it is not written"};
   for (int f : todo) {
     if ((t.stop_signal = signals.signal()) != 0) break;
@@ -290,7 +289,7 @@ LoopTimes draw_frames(const SequenceJob& job, SequencePlan& plan, Progress& prog
     }
     const Clock::time_point t0 = Clock::now();
     long long nonfinite = 0;  // the NaN/Inf guard (pipeline/nonfinite.h)
-    Image img = draw_frame(job, plan, session, f, posed, watchdog, writer, nonfinite);
+    Image img = draw_frame(job, plan, session, f, posed, guard, writer, nonfinite);
     if (nonfinite > 0 && fj.strict) writer.finish();  // the frames before it are good: written, so a rerun resumes after them
     NonfiniteGuard guard = guard_base;
     guard.where = "frame " + std::to_string(f);
@@ -310,7 +309,7 @@ LoopTimes draw_frames(const SequenceJob& job, SequencePlan& plan, Progress& prog
     }
     t.wait += writer.push(std::move(w));
   }
-  if (watchdog) watchdog->disarm();
+  guard.disarm();
   writer.finish();
   t.loop = seconds_since(loop_start);
   t.writer_busy = writer.busy_seconds();
@@ -323,9 +322,7 @@ int render_sequence(const SequenceJob& job) {
   const FrameJob& fj = job.frame;
   const bool display = is_display_format(image_format_for(job.pattern.path(job.range.first)));
   // --timeout: loading and compiling get one budget, then each frame its own.
-  const Deadline loading = Deadline::after(fj.timeout);
-  std::optional<Watchdog> watchdog;
-  if (loading.limited()) watchdog.emplace().arm(loading, "loading and compiling");
+  GuardedJob guard(fj.timeout, "loading and compiling");
   SequencePlan plan = plan_sequence(job, display);
   Progress progress(static_cast<int>(plan.scan.todo.size()), ::isatty(2) == 1);
   announce(job, plan, progress);
@@ -333,8 +330,8 @@ int render_sequence(const SequenceJob& job) {
   LoopTimes t;
   // From here to the end, encoding included: Ctrl-C and SIGTERM stop cleanly.
   StopSignals signals;
-  if (!plan.scan.todo.empty()) t = draw_frames(job, plan, progress, signals, watchdog ? &*watchdog : nullptr, loading);
-  if (watchdog) watchdog->disarm();
+  if (!plan.scan.todo.empty()) t = draw_frames(job, plan, progress, signals, guard);
+  guard.disarm();
   progress.finish();
   const int done = progress.done();
   char summary[256];

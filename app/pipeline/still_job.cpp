@@ -6,7 +6,6 @@
 #include <optional>
 
 #include "core/clock.h"
-#include "core/deadline.h"
 #include "core/error.h"
 #include "io/direct_codec.h"
 #include "io/image_backend.h"
@@ -14,6 +13,7 @@
 #include "io/temp_cleanup.h"
 #include "pipeline/dispatch_probe.h"
 #include "pipeline/fingerprint.h"
+#include "pipeline/guarded_job.h"
 #include "pipeline/nonfinite.h"
 #include "pipeline/prepare.h"
 #include "pipeline/tiled_render.h"
@@ -85,9 +85,7 @@ void print_job_shader(const FrameJob& job) {
 void render_still_job(const FrameJob& job, FrameSession& session) {
   // From here on the image has job.timeout seconds; the watchdog ends the
   // process if a draw (or the driver's compile) never returns.
-  const Deadline deadline = Deadline::after(job.timeout);
-  std::optional<Watchdog> watchdog;
-  if (deadline.limited()) watchdog.emplace().arm(deadline, "the render");
+  GuardedJob guard(job.timeout, "the render");
   const fs::path& input = job.input;
   const fs::path& output = job.output;
   const bool aovs = job.aovs();
@@ -96,7 +94,7 @@ void render_still_job(const FrameJob& job, FrameSession& session) {
   FrameParams& fp = p.fp;
   const StillClock when = still_clock(job, in);
   report_input_warnings(in.warnings, input.string(), job.strict);
-  fp.deadline = deadline.limited() ? &deadline : nullptr;
+  fp.deadline = guard.limit();
   // Before the (slow) context: past the memory budget a still is drawn in
   // tiles (pipeline/tiled_render.h), and one with buffers is refused.
   const int gpu_targets = frame_targets(aovs) + buffer_targets(in);
@@ -141,7 +139,7 @@ void render_still_job(const FrameJob& job, FrameSession& session) {
     session.bounds().check(input.string(), posed, p.opts, [&](const Program& prog) {
       set_scene_uniforms(prog, posed, fp.width, fp.height, when.time, when.frame);
     }, job.strict);
-  const NonfiniteGuard guard{input.string(), job.strict, {}, "nothing written"};
+  const NonfiniteGuard nonfinite{input.string(), job.strict, {}, "nothing written"};
   const ImageMetadata meta =
       frame_metadata(input, when.time, fp.spp,
                      frame_fingerprint(job_fingerprint(in, fp, p.post_src, job.aov_channels, in.scene.shadertoy.fps),
@@ -149,7 +147,7 @@ void render_still_job(const FrameJob& job, FrameSession& session) {
   // auto: the probe's or the cache's choice for this device (pipeline/dispatch_probe.h).
   if (job.dispatch == Dispatch::automatic) session.choose(job.dispatch, job.compute_group, still, job.verbose);
   if (tiling.tiled()) {  // rendered and written band by band
-    render_tiled_file({output, job.aov_channels, meta, watchdog ? &*watchdog : nullptr, &deadline, guard}, session,
+    render_tiled_file({output, job.aov_channels, meta, guard.watchdog(), &guard.deadline(), nonfinite}, session,
                       still, tiling);
     if (job.verbose)
       std::fprintf(stderr, "marchstudio: context %.1f ms, compile %.1f ms, render and write %.1f ms (tiles of %dx%d)\n",
@@ -158,12 +156,11 @@ void render_still_job(const FrameJob& job, FrameSession& session) {
   }
   Still out = session.draw(still);
   Image img = std::move(out.color);
-  guard_nonfinite(guard, count_nonfinite_pixels(img, aovs ? &out.aovs : nullptr) + out.flagged,
+  guard_nonfinite(nonfinite, count_nonfinite_pixels(img, aovs ? &out.aovs : nullptr) + out.flagged,
                   static_cast<long long>(fp.width) * fp.height);
   if (aovs) img = append_channels(img, select_channels(out.aovs, job.aov_channels));
   const double t_render = clock.lap();
-  deadline.check("the render");
-  if (watchdog) watchdog->disarm();  // the write is atomic and must not be cut short
+  guard.finish();  // the write is atomic and must not be cut short
   {
     const RemoveTempOnSignal on_signal(output);  // Ctrl-C or SIGTERM while writing: no temporary left
     write_image(img, output, meta);

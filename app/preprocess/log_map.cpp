@@ -4,7 +4,7 @@
 #include <regex>
 #include <set>
 
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "preprocess/glsl_scan.h"
 
 namespace ms {

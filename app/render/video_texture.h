@@ -24,7 +24,7 @@ class VideoTextures {
 
   // A channel that shows `video` with `sampler`; the first channel of a
   // stream sets its vflip and sRGB (a project's streams are made per file,
-  // vflip and sRGB: render/project_passes.cpp).
+  // vflip and sRGB: pipeline/project_passes.cpp).
   void add(const std::shared_ptr<VideoStream>& video, const Sampler& sampler);
   // Each texture to the frame at `t`; waits on ffmpeg within `deadline`.
   void update(double t, const Deadline* deadline);

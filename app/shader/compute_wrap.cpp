@@ -87,20 +87,15 @@ size_t close_of(const std::string& scan, size_t open, std::vector<size_t>& arg_s
   return std::string::npos;
 }
 
-}  // namespace
+// One replacement in the source: `len` bytes at `pos` become `with`.
+struct Edit {
+  size_t pos, len;
+  std::string with;
+};
 
-std::string first_derivative_call(const std::string& glsl) {
-  const std::string text = strip_comments(glsl);
-  std::smatch m;
-  if (std::regex_search(text, m, derivative_re())) return m[1].str() + m[2].str();
-  return {};
-}
-
-ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group, bool mipmapped_inputs) {
-  const std::string what = frag.files.empty() ? std::string() : frag.files[0];
-  // Comments blanked in a copy of the same length: the matches' positions
-  // hold in the original text.
-  const std::string scan = strip_comments(frag.text);
+// What no wrapper can fix, refused before any edit: a derivative call, a
+// work group of no or too many invocations.
+void check_computable(const ShaderSource& frag, const std::string& scan, ComputeGroup group) {
   std::smatch dm;
   if (std::regex_search(scan, dm, derivative_re())) {
     const SourceLocation at = location_at(frag, static_cast<size_t>(dm.position()));
@@ -113,17 +108,14 @@ ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group, bool mip
     fail_input("--compute-group " + std::to_string(group.x) + "x" + std::to_string(group.y) +
                    " must have 1..1024 invocations",
                {}, 0, "--compute-group");
-  std::string text;
-  text.reserve(frag.text.size() + 2048);
+}
+
+// The outputs become plain variables, main() msSceneMain(), gl_FragCoord
+// the invocation's pixel. Returns how many main()s there were.
+int fragment_edits(const std::string& scan, std::vector<Edit>& edits) {
   static const std::regex out_re(R"(layout\s*\(\s*location\s*=\s*([0-9]+)\s*\)\s*out\s+vec4\s+(\w+)\s*;)");
   static const std::regex main_re(R"(\bvoid\s+main\s*\(\s*(void)?\s*\))");
   static const std::regex coord_re(R"(\bgl_FragCoord\b)");
-  // One pass over the matches of the three patterns, in text order.
-  struct Edit {
-    size_t pos, len;
-    std::string with;
-  };
-  std::vector<Edit> edits;
   for (auto it = std::sregex_iterator(scan.begin(), scan.end(), out_re); it != std::sregex_iterator(); ++it)
     edits.push_back({static_cast<size_t>(it->position()), static_cast<size_t>(it->length()),
                      "vec4 " + (*it)[2].str() + " = vec4(0.0);"});
@@ -132,11 +124,15 @@ ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group, bool mip
     edits.push_back({static_cast<size_t>(it->position()), static_cast<size_t>(it->length()), "void msSceneMain()"});
   for (auto it = std::sregex_iterator(scan.begin(), scan.end(), coord_re); it != std::sregex_iterator(); ++it)
     edits.push_back({static_cast<size_t>(it->position()), static_cast<size_t>(it->length()), "msComputeCoord"});
-  // Implicit-LOD lookups take their LOD from derivatives, which a compute
-  // shader lacks: each becomes its explicit-LOD form at LOD 0. On textures of
-  // one level whose samplers minify and magnify alike (every non-mipmapped
-  // input, render/graph.cpp) that is the same texel; with a mip chain it is
-  // not, so a pass with a mipmapped input is refused instead.
+  return mains;
+}
+
+// Implicit-LOD lookups take their LOD from derivatives, which a compute
+// shader lacks: each becomes its explicit-LOD form at LOD 0. On textures of
+// one level whose samplers minify and magnify alike (every non-mipmapped
+// input, render/graph.cpp) that is the same texel; with a mip chain it is
+// not, so a pass with a mipmapped input is refused instead.
+void lod_edits(const ShaderSource& frag, const std::string& scan, bool mipmapped_inputs, std::vector<Edit>& edits) {
   static const std::regex tex_re(R"(\b(texture|textureOffset|textureProj|textureProjOffset)\s*\()");
   for (auto it = std::sregex_iterator(scan.begin(), scan.end(), tex_re); it != std::sregex_iterator(); ++it) {
     const size_t pos = static_cast<size_t>(it->position());
@@ -156,30 +152,26 @@ ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group, bool mip
     else if (!offset && args.size() == 1) edits.push_back({close, 0, ", 0.0"});
     // (s, P, bias): the bias is the LOD, which on one level picks level 0 too.
   }
-  if (mains != 1) fail_input("--dispatch compute: the shader has no single main()", what, 0, "--dispatch");
+}
+
+// `text` with the edits made, in text order.
+std::string apply_edits(const std::string& text, std::vector<Edit> edits) {
   std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.pos < b.pos; });
+  std::string out;
+  out.reserve(text.size() + 2048);
   size_t at = 0;
   for (const Edit& e : edits) {
-    text.append(frag.text, at, e.pos - at);
-    text += e.with;
+    out.append(text, at, e.pos - at);
+    out += e.with;
     at = e.pos + e.len;
   }
-  text.append(frag.text, at, std::string::npos);
+  out.append(text, at, std::string::npos);
+  return out;
+}
 
-  // The prologue after #version (then #line 2 0: source 0's lines stay where
-  // they were), the epilogue at the end.
-  const size_t eol = text.find('\n');
-  if (text.compare(0, 8, "#version") != 0 || eol == std::string::npos)
-    fail_input("--dispatch compute: the shader does not start with #version", what, 0, "--dispatch");
-  const std::string prologue =
-      "#define MS_COMPUTE 1\n"
-      "#define MS_GROUP_X " + std::to_string(group.x) + "\n"
-      "#define MS_GROUP_Y " + std::to_string(group.y) + "\n"
-      "#define MS_STRIPE " + std::to_string(group.stripe) + "\n"
-      "vec4 msComputeCoord;  // the fragment coordinate of the invocation's pixel\n"
-      "#line 2 0\n";
-  text.insert(eol + 1, prologue);
-  text +=
+// After the fragment source: main() runs the scene's for one invocation's
+// pixel and stores (or adds) its outputs.
+const char* const kEpilogue =
       "\n// ---- marchstudio: the compute wrapper (shader/compute_wrap.h) ----\n"
       "layout(local_size_x = MS_GROUP_X, local_size_y = MS_GROUP_Y) in;\n"
       "layout(rgba32f, binding = 0) uniform image2D msOut0;\n"
@@ -226,6 +218,42 @@ ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group, bool mip
       "  imageStore(msOut3, px, c3);\n"
       "#endif\n"
       "}\n";
+
+}  // namespace
+
+std::string first_derivative_call(const std::string& glsl) {
+  const std::string text = strip_comments(glsl);
+  std::smatch m;
+  if (std::regex_search(text, m, derivative_re())) return m[1].str() + m[2].str();
+  return {};
+}
+
+ShaderSource wrap_compute(const ShaderSource& frag, ComputeGroup group, bool mipmapped_inputs) {
+  const std::string what = frag.files.empty() ? std::string() : frag.files[0];
+  // Comments blanked in a copy of the same length: the matches' positions
+  // hold in the original text.
+  const std::string scan = strip_comments(frag.text);
+  check_computable(frag, scan, group);
+  std::vector<Edit> edits;
+  const int mains = fragment_edits(scan, edits);
+  lod_edits(frag, scan, mipmapped_inputs, edits);
+  if (mains != 1) fail_input("--dispatch compute: the shader has no single main()", what, 0, "--dispatch");
+  std::string text = apply_edits(frag.text, std::move(edits));
+
+  // The prologue after #version (then #line 2 0: source 0's lines stay where
+  // they were), the epilogue at the end.
+  const size_t eol = text.find('\n');
+  if (text.compare(0, 8, "#version") != 0 || eol == std::string::npos)
+    fail_input("--dispatch compute: the shader does not start with #version", what, 0, "--dispatch");
+  const std::string prologue =
+      "#define MS_COMPUTE 1\n"
+      "#define MS_GROUP_X " + std::to_string(group.x) + "\n"
+      "#define MS_GROUP_Y " + std::to_string(group.y) + "\n"
+      "#define MS_STRIPE " + std::to_string(group.stripe) + "\n"
+      "vec4 msComputeCoord;  // the fragment coordinate of the invocation's pixel\n"
+      "#line 2 0\n";
+  text.insert(eol + 1, prologue);
+  text += kEpilogue;
   ShaderSource out = frag;
   out.text = std::move(text);
   return out;

@@ -16,7 +16,7 @@
 #include "io/image_io.h"
 #include "io/sequence.h"
 #include "scene/quality.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "scene/toml_guard.h"
 #include "scene/toml_read.h"
 #include "preprocess/glsl_scan.h"
@@ -180,38 +180,23 @@ std::vector<fs::path> expand_input(const Reader& r, int line, const std::string&
   return out;
 }
 
-// One [[case]] table, expanded over its glob and its backend list.
-void read_case(const Reader& r, const toml::table& own, const toml::table* defaults, std::size_t index,
-               const fs::path& base, std::vector<SuiteCase>& out) {
-  CaseTables ct{&own, defaults, "case[" + std::to_string(index) + "]"};
-  check_keys(r, own, ct.path, kCaseKeys, "[[case]]");
-  const bool has_scene = own.contains("scene"), has_shader = own.contains("shader");
-  if (has_scene == has_shader)
-    r.fail(Reader::line_of(own, has_shader ? "shader" : ""), ct.path,
-           has_scene ? "'scene' and 'shader' exclude each other" : "a case needs 'scene' or 'shader'",
-           "scene = \"scenes/x.toml\" or shader = \"x.glsl\": anything `marchstudio render` takes");
-  const std::string input_key = has_scene ? "scene" : "shader";
-  std::string input, name_template = "{name}";
-  r.read(own, ct.path, input_key, input);
-  r.read(own, ct.path, "name", name_template);
-  const std::vector<std::string> exclude = read_strings(r, own, ct.path, "exclude");
-  if (!exclude.empty() && !is_glob(input))
-    r.fail(ct.line("exclude"), ct.path + ".exclude", "'exclude' needs a glob in '" + input_key + "'");
+// A key of the case or its defaults, read when given: true when it was.
+template <class... Args>
+bool read_key(const Reader& r, const CaseTables& ct, std::string_view key, Args&&... args) {
+  const auto [t, p] = ct.at(key);
+  return t && r.read(*t, p, key, std::forward<Args>(args)...);
+}
 
-  SuiteCase c;
-  c.line = Reader::line_of(own);
-  auto get = [&](std::string_view key, auto&&... args) {
-    const auto [t, p] = ct.at(key);
-    return t && r.read(*t, p, key, args...);
-  };
+// What the case draws: size, time, frame or frames, fps, spp, renderer, preset.
+void read_frame_keys(const Reader& r, const CaseTables& ct, SuiteCase& c) {
   std::pair<int, int> size{0, 0};
   if (const auto [t, p] = ct.at("size"); t) read_int_pair(r, *t, p, "size", Range::closed(1, 16384), size);
   c.width = size.first;
   c.height = size.second;
   float time = 0;
-  if (get("time", Range::any(), time)) c.time = time;
+  if (read_key(r, ct, "time", Range::any(), time)) c.time = time;
   int frame = 0;
-  if (get("frame", Range::at_least(0), frame)) c.frame = frame;
+  if (read_key(r, ct, "frame", Range::at_least(0), frame)) c.frame = frame;
   if (const auto [t, p] = ct.at("frames"); t) {
     std::pair<int, int> f;
     if (t->get("frames")->is_string()) {
@@ -225,9 +210,9 @@ void read_case(const Reader& r, const toml::table& own, const toml::table* defau
     c.frames = f;
   }
   if (const auto [t, p] = ct.at("fps"); t) read_double(r, *t, p, "fps", Range::above(0), c.fps);
-  get("spp", Range::closed(1, 1024), c.spp);
-  get("renderer", c.renderer);
-  if (get("preset", c.preset)) {
+  read_key(r, ct, "spp", Range::closed(1, 1024), c.spp);
+  read_key(r, ct, "renderer", c.renderer);
+  if (read_key(r, ct, "preset", c.preset)) {
     const auto& names = quality_preset_names();
     if (std::find(names.begin(), names.end(), c.preset) == names.end()) {
       const Views views(names.begin(), names.end());
@@ -236,6 +221,10 @@ void read_case(const Reader& r, const toml::table& own, const toml::table* defau
              did_you_mean(c.preset, views).empty() ? "use fast, balanced, reference or textbook" : did_you_mean(c.preset, views));
     }
   }
+}
+
+// How the case loads: disable, defines, allow_include, specialize, deterministic.
+void read_load_keys(const Reader& r, const CaseTables& ct, const fs::path& base, SuiteCase& c) {
   if (const auto [t, p] = ct.at("disable"); t) c.disable = read_strings(r, *t, p, "disable", kEffects);
   if (const auto [t, p] = ct.at("defines"); t) {
     const toml::table* d = r.table(*t, p, "defines");
@@ -260,11 +249,14 @@ void read_case(const Reader& r, const toml::table& own, const toml::table* defau
         r.fail(ct.line("allow_include"), join_key(p, "allow_include"), quote(dir.string()) + " is not a directory");
       c.allow_include.push_back(fs::canonical(dir, ec));
     }
-  get("specialize", Range::any(), c.specialize);
-  get("deterministic", Range::any(), c.deterministic);
+  read_key(r, ct, "specialize", Range::any(), c.specialize);
+  read_key(r, ct, "deterministic", Range::any(), c.deterministic);
+}
 
-  std::string reference;
-  get("reference", reference);
+// What the case checks: the image checks against `reference`, the cost and
+// frame-time budgets; a case must check something.
+void read_check_keys(const Reader& r, const CaseTables& ct, SuiteCase& c, std::string& reference) {
+  read_key(r, ct, "reference", reference);
   const bool case_check = ct.at("metric").first || ct.at("threshold").first || ct.at("warn").first ||
                           ct.at("pixel_threshold").first;
   std::vector<const toml::table*> checks;
@@ -284,6 +276,55 @@ void read_case(const Reader& r, const toml::table& own, const toml::table* defau
       r.fail(c.line, ct.path, "the case checks nothing",
              "give it a reference image, a [case.cost] or a [case.frame_time] budget");
   }
+}
+
+// One expanded case's reference, its {name} and {backend} filled in, and
+// checked against the case: a format that exists, a frame field only for
+// an animated case, no EXR for flip.
+void set_reference(const Reader& r, const CaseTables& ct, const fs::path& base, const std::string& reference,
+                   const std::string& be, SuiteCase& e) {
+  const int line = ct.line("reference");
+  const std::string key = ct.path + ".reference";
+  e.reference = (base / fill(r, line, key, reference, e.input.stem().string(), be)).lexically_normal();
+  try {
+    image_format_for(e.reference);
+    if (e.animated()) FramePattern{e.reference.string()};
+  } catch (const Error& err) {
+    r.fail(line, key, err.info().what, err.info().hint);
+  }
+  if (!e.animated() && has_frame_field(e.reference.filename().string()))
+    r.fail(line, key, "the reference has a frame field but the case has no 'frames'");
+  const bool flip =
+      std::any_of(e.checks.begin(), e.checks.end(), [](const ImageCheck& k) { return k.metric == Metric::flip; });
+  if (flip && !is_display_format(image_format_for(e.reference)))
+    r.fail(line, key, "flip compares display images, and an EXR reference holds linear values",
+           "use a .png reference for flip (HDR-FLIP is not implemented)");
+}
+
+// One [[case]] table, expanded over its glob and its backend list.
+void read_case(const Reader& r, const toml::table& own, const toml::table* defaults, std::size_t index,
+               const fs::path& base, std::vector<SuiteCase>& out) {
+  CaseTables ct{&own, defaults, "case[" + std::to_string(index) + "]"};
+  check_keys(r, own, ct.path, kCaseKeys, "[[case]]");
+  const bool has_scene = own.contains("scene"), has_shader = own.contains("shader");
+  if (has_scene == has_shader)
+    r.fail(Reader::line_of(own, has_shader ? "shader" : ""), ct.path,
+           has_scene ? "'scene' and 'shader' exclude each other" : "a case needs 'scene' or 'shader'",
+           "scene = \"scenes/x.toml\" or shader = \"x.glsl\": anything `marchstudio render` takes");
+  const std::string input_key = has_scene ? "scene" : "shader";
+  std::string input, name_template = "{name}";
+  r.read(own, ct.path, input_key, input);
+  r.read(own, ct.path, "name", name_template);
+  const std::vector<std::string> exclude = read_strings(r, own, ct.path, "exclude");
+  if (!exclude.empty() && !is_glob(input))
+    r.fail(ct.line("exclude"), ct.path + ".exclude", "'exclude' needs a glob in '" + input_key + "'");
+
+  SuiteCase c;
+  c.line = Reader::line_of(own);
+  read_frame_keys(r, ct, c);
+  read_load_keys(r, ct, base, c);
+  std::string reference;
+  read_check_keys(r, ct, c, reference);
 
   std::vector<std::string> backends = {"auto"};
   if (const auto [t, p] = ct.at("backend"); t) backends = read_strings(r, *t, p, "backend", kBackends);
@@ -305,25 +346,7 @@ void read_case(const Reader& r, const toml::table& own, const toml::table* defau
       if (!std::regex_match(e.name, name_ok))
         r.fail(ct.line("name"), ct.path + ".name", "case name " + quote(e.name) + " is not [A-Za-z0-9_.-]{1,100}",
                "it names the report's image files");
-      if (!reference.empty()) {
-        const int line = ct.line("reference");
-        const std::string key = ct.path + ".reference";
-        e.reference = (base / fill(r, line, key, reference, in.stem().string(), be)).lexically_normal();
-        try {
-          image_format_for(e.reference);
-          if (e.animated()) FramePattern{e.reference.string()};
-        } catch (const Error& err) {
-          r.fail(line, key, err.info().what, err.info().hint);
-        }
-        if (!e.animated() && has_frame_field(e.reference.filename().string()))
-          r.fail(line, key, "the reference has a frame field but the case has no 'frames'");
-        const bool flip = std::any_of(e.checks.begin(), e.checks.end(), [](const ImageCheck& k) {
-          return k.metric == Metric::flip;
-        });
-        if (flip && !is_display_format(image_format_for(e.reference)))
-          r.fail(line, key, "flip compares display images, and an EXR reference holds linear values",
-                 "use a .png reference for flip (HDR-FLIP is not implemented)");
-      }
+      if (!reference.empty()) set_reference(r, ct, base, reference, be, e);
       out.push_back(std::move(e));
     }
 }

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/suggest.h"
+#include "core/suggest.h"
 
 namespace ms {
 

@@ -1,6 +1,7 @@
 #include "sweep/sweep_grid.h"
 
 #include <cstdio>
+#include <string_view>
 #include <variant>
 
 #include "core/error.h"
@@ -30,6 +31,18 @@ struct Rows {
   }
 };
 
+// The baseline every sweep shows first (scene/quality.h).
+constexpr const char* kBaselinePreset = "textbook";
+
+// The [quality] keys that define the tracer: the baseline's and the
+// reference's are the preset's whatever the scene says.
+bool defines_tracer(std::string_view key) {
+  for (std::string_view k : {"max_steps", "max_distance", "hit_tolerance", "hit_epsilon", "omega", "bounds",
+                             "analytic_planes"})
+    if (key == k) return true;
+  return false;
+}
+
 // Pixel-footprint tolerance f, or the fixed epsilon when f is 0.
 std::string tolerance_label(float f) { return f == 0.0f ? "eps1e-4" : "fp" + num(f); }
 
@@ -45,23 +58,21 @@ const char* sweep_grid_name(SweepGrid g) { return g == SweepGrid::quick ? "quick
 
 Quality sweep_preset_quality(const Quality& scene, const std::string& preset) {
   Quality q = with_preset(scene, preset);
-  if (preset != "textbook" && preset != "reference") return q;
+  const bool reference = preset == "reference";
+  if (preset != "textbook" && !reference) return q;
   const Quality p = preset_quality(preset);
-  q.max_steps = p.max_steps;
-  q.max_distance = p.max_distance;
-  q.hit_tolerance = p.hit_tolerance;
-  q.hit_epsilon = p.hit_epsilon;
-  q.omega = p.omega;
-  q.bounds = p.bounds;
-  q.analytic_planes = p.analytic_planes;
-  if (preset == "reference") q.shadow_steps = p.shadow_steps;
+  for (const Field<Quality>& f : kQualityFields)
+    if (defines_tracer(f.key) || (reference && f.key == "shadow_steps"))
+      std::visit([&](auto m) { q.*m = p.*m; }, f.member);
   return q;
 }
 
 std::vector<SweepConfig> sweep_grid(const Quality& scene, SweepGrid grid, const std::string& base_preset) {
   Rows rows;
-  for (const char* p : {"textbook", "fast", "balanced", "reference"})
-    rows.add({p, "preset", sweep_preset_quality(scene, p), {}});
+  // Every preset of the table, the baseline first.
+  rows.add({kBaselinePreset, "preset", sweep_preset_quality(scene, kBaselinePreset), {}});
+  for (const std::string& p : quality_preset_names())
+    if (p != kBaselinePreset) rows.add({p, "preset", sweep_preset_quality(scene, p), {}});
   const Quality base = sweep_preset_quality(scene, base_preset);
   auto vary = [&](const std::string& axis, const std::string& label, auto&& change,
                   std::vector<std::pair<std::string, std::string>> tunables = {}) {

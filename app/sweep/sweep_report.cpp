@@ -2,10 +2,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <type_traits>
+#include <variant>
 
 #include <nlohmann/json.hpp>
 
 #include "core/format.h"
+#include "scene/quality_fields.h"
 
 namespace ms {
 namespace {
@@ -26,13 +29,20 @@ Json jnum(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
 std::string tun(const SweepConfig& c, const char* name, const char* fallback) { return tunable(c, name, fallback); }
 
+// Every [quality] key (scene/quality_fields.h), so a new one is reported too.
 Json quality_json(const Quality& q) {
-  return {{"max_steps", q.max_steps},         {"max_distance", q.max_distance}, {"hit_tolerance", q.hit_tolerance},
-          {"hit_epsilon", q.hit_epsilon},     {"lipschitz", q.lipschitz},       {"omega", q.omega},
-          {"bounds", q.bounds},               {"analytic_planes", q.analytic_planes},
-          {"shadow_steps", q.shadow_steps},   {"ao_taps", q.ao_taps},           {"bounces", q.bounces},
-          {"shadows", q.shadows},             {"ao", q.ao},                     {"reflections", q.reflections},
-          {"checker_filter", q.checker_filter}};
+  Json j = Json::object();
+  for (const Field<Quality>& f : kQualityFields)
+    std::visit(
+        [&](auto m) {
+          const auto& v = q.*m;
+          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, glm::vec3>)
+            j[std::string(f.key)] = Json::array({v.x, v.y, v.z});
+          else
+            j[std::string(f.key)] = v;
+        },
+        f.member);
+  return j;
 }
 
 Json error_json(const SweepError& e, bool aovs) {

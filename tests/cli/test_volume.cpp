@@ -9,7 +9,7 @@
 #include <string>
 
 #include "io/image_io.h"
-#include "render/project_passes.h"
+#include "pipeline/project_passes.h"
 #include "run.h"
 #include "shadertoy_json.h"
 

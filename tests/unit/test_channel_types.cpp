@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <set>
 
-#include "render/project_passes.h"
+#include "pipeline/project_passes.h"
 #include "importers/project_json.h"
 #include "importers/shadertoy_media.h"
 

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/suggest.h"
+#include "core/suggest.h"
 
 namespace {
 

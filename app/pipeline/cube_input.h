@@ -1,5 +1,5 @@
 // A cubemap input's faces, found and read before any GL context
-// (render/project_passes.h calls this for each cubemap channel): six
+// (pipeline/project_passes.h calls this for each cubemap channel): six
 // Shadertoy face files by name (io/cube_faces.h), or one equirectangular
 // EXR or HDR converted to six faces, or a stand-in for missing media.
 #pragma once

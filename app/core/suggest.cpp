@@ -1,4 +1,4 @@
-#include "scene/suggest.h"
+#include "core/suggest.h"
 
 #include <algorithm>
 #include <vector>

@@ -1,9 +1,9 @@
-#include "render/cube_input.h"
+#include "pipeline/cube_input.h"
 
 #include "core/error.h"
 #include "io/image_io.h"
 #include "io/input_file.h"
-#include "render/project_passes.h"
+#include "pipeline/project_passes.h"
 #include "preprocess/confine.h"
 
 namespace ms {
