@@ -12,7 +12,7 @@
 #include "core/error.h"
 #include "scene/graph_animation.h"
 #include "scene/schema.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 
 namespace ms {
 namespace {

@@ -8,7 +8,7 @@
 #include "scene/animation.h"
 #include "scene/graph_build.h"
 #include "scene/graph_scene.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 
 namespace ms {
 namespace {

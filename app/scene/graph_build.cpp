@@ -14,7 +14,7 @@
 #include "scene/graph_read.h"
 #include "scene/graph_unary.h"
 #include "scene/graph_vocab.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "scene/toml_read.h"
 
 namespace ms {

@@ -23,7 +23,7 @@
 #include "scene/quality.h"
 #include "scene/quality_fields.h"
 #include "scene/schema.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "scene/toml_guard.h"
 #include "scene/toml_read.h"
 

@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "scene/suggest.h"
+#include "core/suggest.h"
 
 namespace ms {
 namespace {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "io/input_file.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 
 namespace ms {
 namespace fs = std::filesystem;
@@ -29,7 +29,7 @@ fs::path relative_to(const fs::path& scene_file, const std::string& p) {
 
 // Shadertoy's own media name ("/media/a/<hash>.png"): not a path here, but
 // a file name looked up in the media directory when the passes are built
-// (render/project_passes.h), as a JSON's src is.
+// (pipeline/project_passes.h), as a JSON's src is.
 bool shadertoy_media_name(const std::string& src) { return src.rfind("/media/a/", 0) == 0; }
 
 // A file a key names: relative to the scene, a readable regular file.

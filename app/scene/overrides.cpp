@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "scene/toml_read.h"
 
 namespace ms {

@@ -5,7 +5,7 @@
 
 #include "core/error.h"
 #include "scene/quality_fields.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 
 namespace ms {
 

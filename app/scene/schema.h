@@ -13,7 +13,7 @@
 #include "scene/load_geometry.h"
 #include "scene/quality_fields.h"
 #include "scene/scene.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "scene/toml_read.h"
 
 namespace ms {

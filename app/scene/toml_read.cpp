@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "core/error.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 
 namespace ms {
 

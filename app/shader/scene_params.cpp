@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "scene/suggest.h"
+#include "core/suggest.h"
 #include "scene/toml_read.h"
 #include "shader/assemble.h"
 
