@@ -32,6 +32,7 @@ TEST=(
   python3-openvdb                   # tests read the .vdb back with pyopenvdb (skipped without)
   python3-numpy python3-skimage     # tools/: the mesh baseline script (marching cubes)
   ccache                            # .ci/run compiles through it when present (a rerun in one workspace)
+  python3-dev python3-venv python3-pytest   # the Python package: its headers, nanobind's venv, its tests (docs/python.md)
 )
 case "${1:-}" in
   "") PACKAGES=("${BUILD[@]}" "${TEST[@]}") ;;
