@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs marchstudio's build and test dependencies from Debian 12's packages.
 # Runs apt-get directly as root, through sudo otherwise.
-#   tools/install-deps.sh               what the build and every test need
+#   tools/install-deps.sh               what the build and every test need, and
+#                                       nanobind in build/python-venv (the Python package)
 #   tools/install-deps.sh --build-only  what building marchstudio needs
 #                                       (-DBUILD_TESTING=OFF, cpack included)
 set -euo pipefail
@@ -32,6 +33,7 @@ TEST=(
   python3-openvdb                   # tests read the .vdb back with pyopenvdb (skipped without)
   python3-numpy python3-skimage     # tools/: the mesh baseline script (marching cubes)
   ccache                            # .ci/run compiles through it when present (a rerun in one workspace)
+  python3-dev python3-venv python3-pytest   # the Python package: its headers, nanobind's venv, its tests (docs/python.md)
 )
 case "${1:-}" in
   "") PACKAGES=("${BUILD[@]}" "${TEST[@]}") ;;
@@ -41,4 +43,12 @@ esac
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${PACKAGES[@]}" >/dev/null
+if [ "${1:-}" = "" ]; then
+  # The Python package's build needs nanobind, which Debian 12 does not
+  # package: from PyPI into a venv under build/ that sees Debian's numpy
+  # and pytest; the CMake build finds it there (docs/python.md#install).
+  root=$(cd "$(dirname "$0")/.." && pwd)
+  [ -x "$root/build/python-venv/bin/python3" ] || /usr/bin/python3 -m venv --system-site-packages "$root/build/python-venv"
+  "$root/build/python-venv/bin/pip" install -q --disable-pip-version-check 'nanobind>=2,<4'
+fi
 echo "marchstudio: dependencies installed"

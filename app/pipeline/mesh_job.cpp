@@ -143,12 +143,13 @@ TriMesh mesh_of(FieldSampler& sampler, const SparseField& sparse, const Scene& s
 // output path, the scene (one with a field), its box.
 const LoadedInput& checked_input(const MeshJob& job, LoadedInput& in, MeshReport& r) {
   r.output = job.output.string();
-  const std::optional<MeshFormat> format = mesh_format_for(job.output);
+  const bool no_file = job.output.empty() && job.mesh_out;
+  const std::optional<MeshFormat> format = no_file ? MeshFormat::obj : mesh_format_for(job.output);
   if (!format)
     fail_input("cannot tell the mesh format of '" + job.output.string() + "'", {}, 0, "-o",
                "name the output .obj, .ply, .stl, .glb or .vdb");
   r.format = *format;
-  output_kind(job.output, "-o");
+  if (!no_file) output_kind(job.output, "-o");
   in = load_input_scene(job.frame.input, job.frame.disable, job.frame.assemble_options(), job.frame.preset,
                         job.frame.set);
   if (job.frame.verbose) report_scene_notes(in.scene, job.frame.input.string());
@@ -252,7 +253,8 @@ MeshReport mesh_scene(const MeshJob& job, FrameSession& session, const MeshProgr
   // The write is atomic, and not cut short by the watchdog: no temporary is left.
   timeout.finish();
   const auto w = Clock::now();
-  write_files(job, scene, band, mesh, r);
+  if (!job.output.empty()) write_files(job, scene, band, mesh, r);
+  if (job.mesh_out && mesh) *job.mesh_out = std::move(*mesh);
   r.write_s = seconds_since(w);
   r.seconds = seconds_since(start);
   return r;

@@ -44,6 +44,9 @@ struct MeshJob {
   std::optional<MeshBox> bounds;   // none: the scene's [bounds]
   bool planes = false;             // the declared planes, cut by the box, are part of the solid
   int band = 3;                    // a level set's half-width in voxels
+  // When given, the mesh is moved here once written; with `output` empty
+  // too, nothing is written (the Python package's arrays). Not for .vdb.
+  TriMesh* mesh_out = nullptr;
 };
 
 struct MeshReport {

@@ -1,0 +1,124 @@
+"""fogleman/sdf's 2D shapes as the graph's profiles (`sd2*`): each lives
+under extrude() or revolve(), where the graph takes its 2D transforms
+(`translate` [x, y], `rotate` in degrees, `scale`)."""
+import math
+
+import numpy as np
+
+from .core import SDF, ORIGIN, X, num, plain, refuse, vec
+from .d3 import SDF3
+
+
+class SDF2(SDF):
+    dim = 2
+
+    def _is_placed(self):
+        return self._s != 1.0 or bool(np.any(self._t)) or self._turn != 0.0
+
+    def _placement(self):
+        out = {}
+        if self._turn:
+            out['rotate'] = plain(float(self._turn))
+        if self._s != 1.0:
+            out['scale'] = plain(float(self._s))
+        if np.any(self._t):
+            out['translate'] = plain([float(x) for x in self._t])
+        return out
+
+    def translate(self, offset):
+        c = self._copy()
+        c._t = self._t + vec(offset, 3 if np.size(offset) == 3 else 2, 'offset')[:2]
+        return c
+
+    def scale(self, factor):
+        f = vec(factor, 2, 'factor')
+        if np.any(f <= 0) or not np.allclose(f, f[0]):
+            raise ValueError(f"marchstudio.sdf: a 2D scale must be one factor > 0, not {factor!r}")
+        c = self._copy()
+        c._s = self._s * float(f[0])
+        c._t = self._t * float(f[0])
+        return c
+
+    def rotate(self, angle):
+        deg = math.degrees(num(angle, 'angle'))
+        c = self._copy()
+        a = math.radians(deg)
+        r = np.array(((math.cos(a), -math.sin(a)), (math.sin(a), math.cos(a))))
+        c._turn = self._turn + deg
+        c._t = r @ self._t
+        return c
+
+    def extrude(self, h):
+        return SDF3(dict(op='extrude', h=num(h, 'h')), [self])
+
+    def revolve(self, offset=0):
+        # ours sweeps round y, fogleman's round z
+        return SDF3(dict(op='revolve', offset=num(offset, 'offset')), [self])._turned(X, 90.0)
+
+    def extrude_to(self, *args, **kwargs):
+        refuse('extrude_to', 'extrude() one profile; blend() two extrusions for a mix')
+
+
+def _at(node, center=ORIGIN):
+    s = SDF2(node)
+    c = vec(center, 3 if np.size(center) == 3 else 2, 'center')[:2]
+    return s.translate(c) if np.any(c) else s
+
+
+def circle(radius=1, center=ORIGIN):
+    return _at(dict(sdf='sd2Circle', r=num(radius, 'radius')), center)
+
+
+def rectangle(size=1, center=ORIGIN, a=None, b=None):
+    if a is not None and b is not None:
+        a, b = vec(a, 2, 'a'), vec(b, 2, 'b')
+        size, center = b - a, (a + b) / 2
+    return _at(dict(sdf='sd2Box', b=vec(size, 2, 'size') / 2), center)
+
+
+def rounded_rectangle(size, radius, center=ORIGIN):
+    if np.size(radius) != 1:
+        refuse('rounded_rectangle (a radius per corner)', 'give one radius')
+    return _at(dict(sdf='sd2RoundBox', b=vec(size, 2, 'size') / 2, r=num(radius, 'radius')), center)
+
+
+def equilateral_triangle():
+    return SDF2(dict(sdf='sd2EquilateralTriangle', r=2 / math.sqrt(3)))
+
+
+def hexagon(r):
+    return SDF2(dict(sdf='sd2Hexagon', r=num(r, 'r')))
+
+
+def rounded_x(w, r):
+    h = num(w, 'w') / 2
+    cross = SDF2(dict(op='opUnion'), [SDF2(dict(sdf='ud2Segment', a=[-h, -h], b=[h, h])),
+                                       SDF2(dict(sdf='ud2Segment', a=[-h, h], b=[h, -h]))])
+    return SDF2(dict(op='round', r=num(r, 'r')), [cross])
+
+
+def polygon(points):
+    p = np.asarray(points, dtype=float)
+    if p.shape != (3, 2):
+        refuse('polygon (more than three points)', 'union triangle polygons of a triangulation')
+    return SDF2(dict(sdf='sd2Triangle', a=p[0], b=p[1], c=p[2]))
+
+
+def line(normal=None, point=ORIGIN):
+    refuse('line', 'there is no 2D half-plane; cut the extruded solid with plane() instead')
+
+
+def sdf2(*args, **kwargs):
+    refuse('sdf2', 'a Python function is not a graph node; build the profile from the functions here')
+
+
+def extrude(other, h):
+    return other.extrude(h)
+
+
+def extrude_to(a, b, h, e=None):
+    return a.extrude_to(b, h, e)
+
+
+def revolve(other, offset=0):
+    return other.revolve(offset)
