@@ -40,7 +40,7 @@ def node_name(node, name):
 # Rows that are a node's keys, not a node, and refused rows with a way out.
 KEYS = {'translate': '`translate` key', 'scale': '`scale` key (uniform)', 'scale (tuple)': '`scale` modifier',
         'rotate': '`rotate` key, radians to degrees', 'orient': '`rotate` key'}
-NOTES = {'tetrahedron': 'four `sdPlane` cut by an `sdBox`', 'polygon': 'three points: `sd2Triangle`',
+NOTES = {'tetrahedron': 'four `sdPlane` cut by an `sdBox`', 'polygon': 'three points: `sd2Triangle`; 4 to 32: `sd2Polygon`',
          'slab': '`k` refused', 'rounded_rectangle': 'a radius per corner refused',
          'repeat': '`padding` not needed', 'twist': '`k` negated, `axis` z',
          'scale (tuple)': 'a tuple `factor`', 'scale': 'a number `factor`'}

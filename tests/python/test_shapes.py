@@ -62,6 +62,7 @@ CALLS = {
     'equilateral_triangle': lambda: equilateral_triangle().extrude(0.2),
     'hexagon': lambda: hexagon(1).extrude(0.2),
     'rounded_x': lambda: rounded_x(2, 0.2).extrude(0.2),
+    'polygon': lambda: polygon([(-1, -0.4), (0.2, -0.4), (0.2, -0.9), (1, 0), (0.2, 0.9), (0.2, 0.4), (-1, 0.4)]).extrude(0.2),
 }
 
 
@@ -145,7 +146,7 @@ def test_k_applies_to_the_right_operand_as_fogleman():
     (lambda: transition_linear(sphere(), box()), 'transition_linear'),
     (lambda: circle().extrude_to(rectangle(), 1), 'extrude_to'),
     (lambda: line(), 'line'),
-    (lambda: polygon([(0, 0), (1, 0), (1, 1), (0, 1)]), 'polygon'),
+    (lambda: polygon([(math.cos(i / 6), math.sin(i / 6)) for i in range(33)]), 'polygon'),
     (lambda: slab(z0=0, k=0.1), 'slab'),
 ])
 def test_what_the_graph_cannot_express_says_so(call, word):
@@ -160,6 +161,13 @@ def test_bad_arguments_are_value_errors():
         sphere().scale(0)
     with pytest.raises(ValueError, match='2D'):
         marchstudio.Scene(circle())
+
+
+def test_polygon_takes_its_points_once_as_sd2polygon():
+    n = polygon([(0, 0), (1, 0), (1, 1), (1, 1), (0, 1), (0, 0)]).to_node()
+    assert n == {'sdf': 'sd2Polygon', 'v': [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]}
+    with pytest.raises(ValueError, match='3 or more'):
+        polygon([(0, 0), (1, 0), (0, 0)])
 
 
 def test_triangle_polygon_is_sd2triangle():

@@ -99,9 +99,20 @@ def rounded_x(w, r):
 
 def polygon(points):
     p = np.asarray(points, dtype=float)
-    if p.shape != (3, 2):
-        refuse('polygon (more than three points)', 'union triangle polygons of a triangulation')
-    return SDF2(dict(sdf='sd2Triangle', a=p[0], b=p[1], c=p[2]))
+    if p.ndim != 2 or p.shape[1] != 2:
+        raise ValueError('polygon: points must be (x, y) pairs, not an array of shape %s' % (p.shape,))
+    # The graph takes each vertex once: a point repeating the one before it
+    # (or the first, closing the loop) adds nothing to the shape.
+    keep = [q for i, q in enumerate(p) if i == 0 or not np.array_equal(q, p[i - 1])]
+    if len(keep) > 1 and np.array_equal(keep[-1], keep[0]):
+        keep.pop()
+    if len(keep) < 3:
+        raise ValueError('polygon: needs 3 or more distinct points, not %d' % len(keep))
+    if len(keep) == 3:
+        return SDF2(dict(sdf='sd2Triangle', a=keep[0], b=keep[1], c=keep[2]))
+    if len(keep) > 32:
+        refuse('polygon (more than 32 points)', 'union polygons of up to 32 points each')
+    return SDF2(dict(sdf='sd2Polygon', v=[[float(x), float(y)] for x, y in keep]))
 
 
 def line(normal=None, point=ORIGIN):
