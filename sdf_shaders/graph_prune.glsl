@@ -228,8 +228,12 @@ void main() {
   if (overflow && uGrid > 0) cell = uvec4(floatBitsToUint(st[0].v.x), 0u, 0u, uLevel == 0 ? 2u : 3u);
   if (!overflow && uLevel == 1) {
     uvec4 pool = msGraphCell[0];  // where the pool starts, its size
-    uint at = atomicAdd(msPoolUsed, len);
-    if (at + len <= pool.y) {
+    // A cell pruned again for a new pose writes over its old list where the
+    // new one fits there (nothing else reads it), so poses leak no room.
+    uvec4 old = msGraphCell[MS_GRID_HEADER + h0.x + cellIndex];
+    bool inPlace = uSubset != 0 && old.w == 0u && old.x >= pool.x && len <= old.y;
+    uint at = inPlace ? old.x - pool.x : atomicAdd(msPoolUsed, len);
+    if (inPlace || at + len <= pool.y) {
       for (uint j = 0u; j < len; ++j) msGraphProg[pool.x + at + j] = gList[j];
       cell = uvec4(pool.x + at, len, 0u, 0u);
     }

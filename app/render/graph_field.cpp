@@ -58,6 +58,7 @@ GraphField::GraphField(const GraphParts& parts, std::shared_ptr<const Program> p
   if (!from_cache_) run_pass(*prune_);
   pruned_cells_ = cells;
   measure();
+  overflowed_whole_ = overflowed_;
   build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   // A refused entry is replaced whatever the pass took: it was kept once,
   // and left as it is it would be refused again on every run.
@@ -145,8 +146,11 @@ bool GraphField::repose(const GraphParts& next) {
     upper.fine_far.push_back(fine[4 * i + 3] == 2u);
   }
   std::optional<ReposeCells> cells = repose_cells(parts_, next, upper);
-  // A pool three quarters taken by earlier poses starts again from empty.
-  if (cells && head[0] > plan_.pool / 4 * 3) cells.reset();
+  // A cell whose new list neither fits in its old one's room nor finds
+  // room in the pool keeps its coarse cell's list, exact but longer: once
+  // a hundredth of the cells more than after the last whole pass have, the
+  // pool starts again from empty.
+  if (cells && overflowed_ > overflowed_whole_ + static_cast<int>(cell_count(plan_) / 100)) cells.reset();
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[0]);
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(n.nodes.size() * sizeof(std::uint32_t)), n.nodes.data());
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[1]);
@@ -163,6 +167,7 @@ bool GraphField::repose(const GraphParts& next) {
   from_cache_ = false;
   cache_note_.clear();
   measure();
+  if (!cells) overflowed_whole_ = overflowed_;
   build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return true;
 }

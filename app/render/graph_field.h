@@ -66,6 +66,7 @@ class GraphField {
   // keeps its coarse cell's list), -1 before a pruning pass; and how many overflowed.
   double mean_list_ = -1.0;
   int overflowed_ = 0;
+  int overflowed_whole_ = 0;  // after the last pass over every cell
   std::string cache_note_;  // "; the cache's entry ... not used ...", or empty
   const GraphEvalPlan& plan_ = parts_.plan;
   std::size_t program_ = 0;
