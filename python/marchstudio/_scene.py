@@ -37,6 +37,8 @@ class Scene:
     """A scene file (.toml, a graph .json, a Shadertoy shader) or a shape of
     marchstudio.sdf, which is written to a graph file kept for the scene's life."""
 
+    PREVIEW_SIZE = (320, 180)  # _repr_png_'s picture, width x height
+
     def __init__(self, source, backend='auto'):
         from .sdf.core import SDF
         if backend not in _BACKENDS:
@@ -79,6 +81,35 @@ class Scene:
         returns the mesh report as a dict."""
         report, _, _ = _ext.mesh(self.path, os.fspath(path), *_grid(resolution, voxel), _bounds(bounds),
                                  _time(time), self.backend, False)
+        return json.loads(report)
+
+    def _repr_png_(self):
+        """Jupyter's picture: the PNG file a 320x180 render writes, as bytes."""
+        w, h = self.PREVIEW_SIZE
+        return _ext.render_png(self.path, w, h, self.backend)
+
+    def bench(self, size=None, frames=30, warmup=3, spp=0):
+        """`marchstudio bench --json`'s figures as a dict (docs/bench.md):
+        compile and frame times, steps and map() calls per pixel. Timed in
+        this process's GL context, the one renders use."""
+        w, h = (0, 0) if size is None else _size(size)
+        if not 1 <= int(frames) or not 0 <= int(warmup):
+            raise ValueError(f"marchstudio: frames must be >= 1 and warmup >= 0, not {frames!r}, {warmup!r}")
+        if not 0 <= int(spp) <= 1024:
+            raise ValueError(f"marchstudio: spp must be 1..1024 (0: the scene's), not {spp!r}")
+        return json.loads(_ext.bench(self.path, w, h, int(frames), int(warmup), int(spp), self.backend))
+
+    def level_set(self, path, resolution=None, voxel=None, bounds=None, time=None, band=3):
+        """Writes the narrow band of the distance field, `band` voxels each
+        side, as an OpenVDB level set (`path` ends in .vdb), atomically,
+        through the mesh job (`marchstudio mesh -o x.vdb --band N`); returns
+        the mesh report (its band_voxels: the active voxels written)."""
+        if path is None or not os.fspath(path).lower().endswith('.vdb'):
+            raise ValueError(f"marchstudio: level_set writes a .vdb file: give its path, not {path!r}")
+        if not 1 <= int(band) <= 64:
+            raise ValueError(f"marchstudio: band must be 1..64 voxels, not {band!r}")
+        report, _, _ = _ext.mesh(self.path, os.fspath(path), *_grid(resolution, voxel), _bounds(bounds),
+                                 _time(time), self.backend, False, int(band))
         return json.loads(report)
 
     def box(self):

@@ -11,22 +11,36 @@
 #include <nanobind/stl/tuple.h>
 
 #include <atomic>
+#include <csignal>
 #include <cstdint>
+#include <fstream>
+#include <iterator>
 #include <filesystem>
 #include <memory>
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <future>
 #include <mutex>
+#include <pthread.h>
 #include <optional>
 #include <string>
 #include <tuple>
 #include <unistd.h>
 #include <vector>
 
+#include "bench/bench.h"
+#include "bench/bench_report.h"
 #include "core/error.h"
 #include "io/image_io.h"
 #include "pipeline/input.h"
 #include "pipeline/mesh_job.h"
 #include "pipeline/shader_dir.h"
 #include "pipeline/still_job.h"
+#include "render/aov.h"
+#include "scene/animation.h"
+#include "shader/assemble.h"
+#include "shader/specialize.h"
 
 namespace nb = nanobind;
 namespace fs = std::filesystem;
@@ -35,8 +49,55 @@ namespace {
 
 // One GL context for the interpreter, made by the first render or mesh and
 // never torn down: a driver unloaded during the interpreter's exit may crash.
-std::mutex g_lock;
+// A context is current on one thread, the one that made it, so every job
+// runs on one thread of the extension's; Python threads queue for it.
 ms::FrameSession* g_session = nullptr;
+
+class GlThread {
+ public:
+  GlThread() {
+    // Started with every signal blocked: Ctrl-C goes to Python's threads.
+    sigset_t all, old;
+    sigfillset(&all);
+    pthread_sigmask(SIG_BLOCK, &all, &old);
+    std::thread([this] { loop(); }).detach();
+    pthread_sigmask(SIG_SETMASK, &old, nullptr);
+  }
+  // Runs `job` there and waits for it (the caller has released the GIL);
+  // its exception comes back here.
+  void run(const std::function<void()>& job) {
+    std::packaged_task<void()> task(job);
+    std::future<void> done = task.get_future();
+    {
+      std::lock_guard<std::mutex> hold(lock_);
+      queue_.push_back(&task);
+    }
+    ready_.notify_one();
+    done.get();
+  }
+
+ private:
+  void loop() {
+    for (;;) {
+      std::packaged_task<void()>* task;
+      {
+        std::unique_lock<std::mutex> hold(lock_);
+        ready_.wait(hold, [this] { return !queue_.empty(); });
+        task = queue_.front();
+        queue_.pop_front();
+      }
+      (*task)();
+    }
+  }
+  std::mutex lock_;
+  std::condition_variable ready_;
+  std::deque<std::packaged_task<void()>*> queue_;
+};
+
+GlThread& gl_thread() {
+  static GlThread* t = new GlThread;  // never joined, as the context is never torn down
+  return *t;
+}
 fs::path g_shader_dir;
 
 ms::FrameSession& session() {
@@ -48,6 +109,44 @@ const fs::path& shader_dir() {
   if (g_shader_dir.empty()) throw ms::Error({ms::Exit::system, {}, 0, {}, "marchstudio: no shader directory set", {}, {}});
   return g_shader_dir;
 }
+
+// Ctrl-C while a job runs without the GIL: Python's own handler only
+// trips a flag that the interpreter reads once the job returns. For the
+// job's life this handler also notes the signal where the job's progress
+// callback can see it (the mesh job then stops between stages), and chains
+// to Python's, so KeyboardInterrupt follows once the GIL is back. The jobs'
+// own scopes (io/temp_cleanup.h, while a file is written) nest inside.
+volatile std::sig_atomic_t g_interrupted = 0;
+struct sigaction g_python_int {};
+
+extern "C" void note_interrupt(int sig) {
+  g_interrupted = 1;
+  if (g_python_int.sa_handler != SIG_DFL && g_python_int.sa_handler != SIG_IGN) g_python_int.sa_handler(sig);
+}
+
+struct Interrupted {};  // thrown by a job's progress callback after Ctrl-C
+
+class InterruptScope {
+ public:
+  InterruptScope() {
+    g_interrupted = 0;
+    struct sigaction sa {};
+    sa.sa_handler = note_interrupt;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &g_python_int);
+  }
+  ~InterruptScope() { sigaction(SIGINT, &g_python_int, nullptr); }
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
+  // With the GIL: the KeyboardInterrupt (or the handler's own exception) when Ctrl-C came.
+  static void raise_if_interrupted() {
+    if (!g_interrupted) return;
+    g_interrupted = 0;
+    if (PyErr_CheckSignals() != 0) throw nb::python_error();
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw nb::python_error();
+  }
+};
 
 ms::Backend backend_of(const std::string& name) { return ms::parse_backend(name); }
 
@@ -94,10 +193,15 @@ nb::object render(const std::string& input, int width, int height, std::optional
   job.output = scratch.dir / (uint8 ? "frame.png" : "frame.exr");
   ms::Image img;
   {
-    nb::gil_scoped_release release;
-    std::lock_guard<std::mutex> hold(g_lock);
-    ms::render_still_job(job, session());
-    img = ms::read_image(job.output, ms::AlphaMode::straight);
+    InterruptScope interrupt;
+    {
+      nb::gil_scoped_release release;
+      gl_thread().run([&] {
+        ms::render_still_job(job, session());
+        img = ms::read_image(job.output, ms::AlphaMode::straight);
+      });
+    }
+    InterruptScope::raise_if_interrupted();
   }
   const std::size_t w = img.width, h = img.height, nc = img.channels.size(), n = w * h;
   const size_t shape[3] = {h, w, 4};
@@ -125,12 +229,13 @@ using Box = std::optional<std::tuple<float, float, float, float, float, float>>;
 // arrays. Returns (report JSON, vertices (N, 3) float32 or None, faces
 // (M, 3) uint32 or None).
 nb::tuple mesh(const std::string& input, const std::string& output, int resolution, double voxel, Box bounds,
-               std::optional<float> time, const std::string& backend, bool arrays) {
+               std::optional<float> time, const std::string& backend, bool arrays, int band) {
   ms::MeshJob job;
   job.frame = frame_job(input, backend, {}, time);
   job.output = output;
   job.resolution = resolution;
   job.voxel = voxel;
+  job.band = band;
   if (bounds) {
     auto [x0, y0, z0, x1, y1, z1] = *bounds;
     job.bounds = ms::MeshBox{{x0, y0, z0}, {x1, y1, z1}};
@@ -139,9 +244,17 @@ nb::tuple mesh(const std::string& input, const std::string& output, int resoluti
   if (arrays) job.mesh_out = &tri;
   ms::MeshReport r;
   {
-    nb::gil_scoped_release release;
-    std::lock_guard<std::mutex> hold(g_lock);
-    r = ms::mesh_scene(job, session());
+    InterruptScope interrupt;
+    try {
+      nb::gil_scoped_release release;
+      gl_thread().run([&] {
+        r = ms::mesh_scene(job, session(), [](const char*, double) {
+          if (g_interrupted) throw Interrupted{};
+        });
+      });
+    } catch (const Interrupted&) {
+    }
+    InterruptScope::raise_if_interrupted();
   }
   const std::string report = ms::mesh_report_json(r);
   if (!arrays) return nb::make_tuple(report, nb::none(), nb::none());
@@ -165,6 +278,72 @@ std::optional<std::tuple<float, float, float, float, float, float>> scene_box(co
     return std::make_tuple(lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
   }
   return std::nullopt;
+}
+
+// A render's PNG file, bytes as written: a notebook's picture of a scene.
+nb::bytes render_png(const std::string& input, int width, int height, const std::string& backend) {
+  ms::FrameJob job = frame_job(input, backend, {}, std::nullopt);
+  job.size = {width, height};
+  ScratchDir scratch;
+  job.output = scratch.dir / "frame.png";
+  std::string data;
+  {
+    InterruptScope interrupt;
+    {
+      nb::gil_scoped_release release;
+      gl_thread().run([&] { ms::render_still_job(job, session()); });
+      std::ifstream in(job.output, std::ios::binary);
+      data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    InterruptScope::raise_if_interrupted();
+  }
+  return nb::bytes(data.data(), data.size());
+}
+
+// `marchstudio bench --json`'s document for a scene, timed in this
+// process's context (the one renders use): the steps cli/bench_cmd.cpp
+// takes, without its flags' extras (overrides, --dispatch, --strict).
+// The steps cli/bench_cmd.cpp takes, without its flags' extras (overrides,
+// --dispatch, --strict, the bounds warning), on the GL thread.
+std::string bench_on_gl_thread(const ms::FrameJob& job, int width, int height, int frames, int warmup) {
+  ms::PreparedFrame p = ms::prepare(job, true);
+  const ms::LoadedInput& in = p.in;
+  ms::AssembleOptions count_opts = job.assemble_options();
+  count_opts.defines = ms::aov_defines();
+  count_opts.graph = p.opts.graph;
+  const std::optional<ms::ShaderSource> counting =
+      in.shadertoy ? std::nullopt : std::optional<ms::ShaderSource>(ms::assemble_scene(in.scene, count_opts));
+  ms::BenchSettings s;
+  s.width = width > 0 ? width : in.scene.render.width;
+  s.height = width > 0 ? height : in.scene.render.height;
+  s.spp = p.fp.spp;
+  s.frames = frames;
+  s.warmup = warmup;
+  s.time = in.scene.render.time;
+  s.fused_post = p.fp.fused_post;
+  s.bloom = in.scene.bloom.enabled;
+  ms::check_bench_settings(s);
+  ms::FrameSession& fs = session();
+  fs.context(job.backend);
+  const ms::Scene posed = ms::animated(in.scene, s.time);
+  ms::BenchResult r = ms::run_bench(fs, p, posed, counting ? &*counting : nullptr, s);
+  if (in.scene.graph) ms::count_graph_cost(fs.job(), p, posed, s, count_opts, r);
+  const ms::BenchSubject subject{job.input.string(), in.scene.name, {}, ms::specialization_name(p.opts.specialize),
+                                 {}};
+  return ms::bench_json(subject, s, r);
+}
+
+// `marchstudio bench --json`'s document for a scene, timed in this
+// process's context (the one renders use, so the driver's shader cache is
+// as the process found it, not switched off as the command line does).
+std::string bench(const std::string& input, int width, int height, int frames, int warmup, int spp,
+                  const std::string& backend) {
+  ms::FrameJob job = frame_job(input, backend, {}, std::nullopt);
+  job.spp = spp;
+  std::string text;
+  nb::gil_scoped_release release;
+  gl_thread().run([&] { text = bench_on_gl_thread(job, width, height, frames, warmup); });
+  return text;
 }
 
 // An image file as (H, W, C) float32, read as `compare` reads it.
@@ -199,7 +378,12 @@ NB_MODULE(_marchstudio, m) {
         "Renders a scene file as `marchstudio render` does; an (H, W, 4) array.");
   m.def("mesh", &mesh, nb::arg("input"), nb::arg("output") = "", nb::arg("resolution") = 256, nb::arg("voxel") = 0.0,
         nb::arg("bounds") = nb::none(), nb::arg("time") = nb::none(), nb::arg("backend") = "auto",
-        nb::arg("arrays") = true, "Meshes a scene file as `marchstudio mesh` does.");
+        nb::arg("arrays") = true, nb::arg("band") = 3, "Meshes a scene file as `marchstudio mesh` does.");
+  m.def("render_png", &render_png, nb::arg("input"), nb::arg("width"), nb::arg("height"), nb::arg("backend") = "auto",
+        "A render's PNG file as bytes.");
+  m.def("bench", &bench, nb::arg("input"), nb::arg("width") = 0, nb::arg("height") = 0, nb::arg("frames") = 30,
+        nb::arg("warmup") = 3, nb::arg("spp") = 0, nb::arg("backend") = "auto",
+        "`marchstudio bench --json`'s document (schema marchstudio.bench/1) as a string.");
   m.def("read_image", &read_image, nb::arg("path"), "An image file as an (H, W, C) float32 array.");
   m.def("scene_box", &scene_box, nb::arg("input"), "The scene's own box (x0, y0, z0, x1, y1, z1), or None.");
 }

@@ -185,6 +185,13 @@ class SDF:
     def transition_radial(self, *args, **kwargs):
         refuse('transition_radial', 'blend(other, k) mixes two shapes by one weight')
 
+    def _repr_png_(self):
+        """Jupyter's picture of a 3D shape: Scene(shape)._repr_png_()."""
+        if self.dim != 3:
+            return None  # a 2D shape has no picture until extruded or revolved
+        from .._scene import Scene
+        return Scene(self)._repr_png_()
+
     def __repr__(self):
         return f"<marchstudio.sdf {type(self).__name__} {self.node.get('sdf') or self.node.get('op')}>"
 
