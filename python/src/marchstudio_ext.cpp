@@ -11,18 +11,12 @@
 #include <nanobind/stl/tuple.h>
 
 #include <atomic>
-#include <csignal>
 #include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <filesystem>
 #include <memory>
-#include <condition_variable>
-#include <deque>
-#include <functional>
-#include <future>
 #include <mutex>
-#include <pthread.h>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -32,6 +26,7 @@
 #include "bench/bench.h"
 #include "bench/bench_report.h"
 #include "core/error.h"
+#include "job_thread.h"
 #include "io/image_io.h"
 #include "pipeline/input.h"
 #include "pipeline/mesh_job.h"
@@ -44,6 +39,10 @@
 
 namespace nb = nanobind;
 namespace fs = std::filesystem;
+using marchstudio_py::gl_thread;
+using marchstudio_py::g_interrupted;
+using marchstudio_py::Interrupted;
+using marchstudio_py::InterruptScope;
 
 namespace {
 
@@ -53,51 +52,6 @@ namespace {
 // runs on one thread of the extension's; Python threads queue for it.
 ms::FrameSession* g_session = nullptr;
 
-class GlThread {
- public:
-  GlThread() {
-    // Started with every signal blocked: Ctrl-C goes to Python's threads.
-    sigset_t all, old;
-    sigfillset(&all);
-    pthread_sigmask(SIG_BLOCK, &all, &old);
-    std::thread([this] { loop(); }).detach();
-    pthread_sigmask(SIG_SETMASK, &old, nullptr);
-  }
-  // Runs `job` there and waits for it (the caller has released the GIL);
-  // its exception comes back here.
-  void run(const std::function<void()>& job) {
-    std::packaged_task<void()> task(job);
-    std::future<void> done = task.get_future();
-    {
-      std::lock_guard<std::mutex> hold(lock_);
-      queue_.push_back(&task);
-    }
-    ready_.notify_one();
-    done.get();
-  }
-
- private:
-  void loop() {
-    for (;;) {
-      std::packaged_task<void()>* task;
-      {
-        std::unique_lock<std::mutex> hold(lock_);
-        ready_.wait(hold, [this] { return !queue_.empty(); });
-        task = queue_.front();
-        queue_.pop_front();
-      }
-      (*task)();
-    }
-  }
-  std::mutex lock_;
-  std::condition_variable ready_;
-  std::deque<std::packaged_task<void()>*> queue_;
-};
-
-GlThread& gl_thread() {
-  static GlThread* t = new GlThread;  // never joined, as the context is never torn down
-  return *t;
-}
 fs::path g_shader_dir;
 
 ms::FrameSession& session() {
@@ -109,44 +63,6 @@ const fs::path& shader_dir() {
   if (g_shader_dir.empty()) throw ms::Error({ms::Exit::system, {}, 0, {}, "marchstudio: no shader directory set", {}, {}});
   return g_shader_dir;
 }
-
-// Ctrl-C while a job runs without the GIL: Python's own handler only
-// trips a flag that the interpreter reads once the job returns. For the
-// job's life this handler also notes the signal where the job's progress
-// callback can see it (the mesh job then stops between stages), and chains
-// to Python's, so KeyboardInterrupt follows once the GIL is back. The jobs'
-// own scopes (io/temp_cleanup.h, while a file is written) nest inside.
-volatile std::sig_atomic_t g_interrupted = 0;
-struct sigaction g_python_int {};
-
-extern "C" void note_interrupt(int sig) {
-  g_interrupted = 1;
-  if (g_python_int.sa_handler != SIG_DFL && g_python_int.sa_handler != SIG_IGN) g_python_int.sa_handler(sig);
-}
-
-struct Interrupted {};  // thrown by a job's progress callback after Ctrl-C
-
-class InterruptScope {
- public:
-  InterruptScope() {
-    g_interrupted = 0;
-    struct sigaction sa {};
-    sa.sa_handler = note_interrupt;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &g_python_int);
-  }
-  ~InterruptScope() { sigaction(SIGINT, &g_python_int, nullptr); }
-  InterruptScope(const InterruptScope&) = delete;
-  InterruptScope& operator=(const InterruptScope&) = delete;
-  // With the GIL: the KeyboardInterrupt (or the handler's own exception) when Ctrl-C came.
-  static void raise_if_interrupted() {
-    if (!g_interrupted) return;
-    g_interrupted = 0;
-    if (PyErr_CheckSignals() != 0) throw nb::python_error();
-    PyErr_SetNone(PyExc_KeyboardInterrupt);
-    throw nb::python_error();
-  }
-};
 
 ms::Backend backend_of(const std::string& name) { return ms::parse_backend(name); }
 
@@ -201,7 +117,7 @@ nb::object render(const std::string& input, int width, int height, std::optional
         img = ms::read_image(job.output, ms::AlphaMode::straight);
       });
     }
-    InterruptScope::raise_if_interrupted();
+    InterruptScope::raise_if_interrupted(false);
   }
   const std::size_t w = img.width, h = img.height, nc = img.channels.size(), n = w * h;
   const size_t shape[3] = {h, w, 4};
@@ -245,6 +161,7 @@ nb::tuple mesh(const std::string& input, const std::string& output, int resoluti
   ms::MeshReport r;
   {
     InterruptScope interrupt;
+    bool cut_short = false;
     try {
       nb::gil_scoped_release release;
       gl_thread().run([&] {
@@ -253,8 +170,9 @@ nb::tuple mesh(const std::string& input, const std::string& output, int resoluti
         });
       });
     } catch (const Interrupted&) {
+      cut_short = true;
     }
-    InterruptScope::raise_if_interrupted();
+    InterruptScope::raise_if_interrupted(cut_short);
   }
   const std::string report = ms::mesh_report_json(r);
   if (!arrays) return nb::make_tuple(report, nb::none(), nb::none());
@@ -295,7 +213,7 @@ nb::bytes render_png(const std::string& input, int width, int height, const std:
       std::ifstream in(job.output, std::ios::binary);
       data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
-    InterruptScope::raise_if_interrupted();
+    InterruptScope::raise_if_interrupted(false);
   }
   return nb::bytes(data.data(), data.size());
 }

@@ -34,15 +34,16 @@ def test_ctrl_c_interrupts_a_mesh_and_leaves_no_file(tmp_path):
     out.parent.mkdir()
     env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(marchstudio.__file__)))
     p = subprocess.Popen([sys.executable, '-c', SCRIPT, str(out)], env=env, stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True)
+                         stderr=subprocess.PIPE, text=True,
+                         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))  # a background shell ignores it
     assert p.stdout.readline().strip() == 'meshing'
-    time.sleep(1.0)
-    started = time.monotonic()
+    time.sleep(1.0)  # into the job: the whole mesh takes about 20 s on llvmpipe
     p.send_signal(signal.SIGINT)
     stdout, stderr = p.communicate(timeout=120)
     assert p.returncode == 3 and stdout.strip() == 'KeyboardInterrupt', stderr
-    assert time.monotonic() - started < 60  # stopped between the job's stages, not at its end
-    assert os.listdir(out.parent) == []  # neither the mesh nor a temporary
+    # neither the mesh nor a temporary: the job stopped at a stage before
+    # its write (a KeyboardInterrupt only after it returned finds the file)
+    assert os.listdir(out.parent) == []
 
 
 def test_two_threads_render_at_once():
