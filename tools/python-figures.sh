@@ -46,7 +46,7 @@ print(json.dumps({"s": s, "triangles": report["triangles"], "renderer": gl["mach
 imports = [child(IMPORT)['s'] for _ in range(runs)]
 readme = [child(README) for _ in range(runs)]
 cpu = next((l.split(':', 1)[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')), platform.machine())
-rows = ['Measured %s on %s (%d cores), %s, Python %s, median of %d:' % (
+rows = ['Measured %s on %s (%d cores, shared with other work), %s, Python %s, median of %d:' % (
             datetime.date.today(), cpu, os.cpu_count(), readme[0]['renderer'], platform.python_version(), runs),
         '',
         '| what | wall time |', '|---|---|',
