@@ -33,6 +33,15 @@ def vec(v, n=3, name='value'):
     return a
 
 
+def half_size(size, center, a, b, n):
+    """fogleman's box and rectangle: (half size, center) from size and
+    center, or from the corners a and b when both are given."""
+    if a is not None and b is not None:
+        a, b = vec(a, n, 'a'), vec(b, n, 'b')
+        size, center = b - a, (a + b) / 2
+    return vec(size, n, 'size') / 2, center
+
+
 def num(v, name='value'):
     if isinstance(v, (list, tuple, np.ndarray)) or not math.isfinite(float(v)):
         raise ValueError(f"marchstudio.sdf: {name} must be a finite number, not {v!r}")

@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 
-from .core import SDF, ORIGIN, X, num, plain, refuse, vec
+from .core import SDF, ORIGIN, X, half_size, num, plain, refuse, vec
 from .d3 import SDF3
 
 
@@ -70,10 +70,8 @@ def circle(radius=1, center=ORIGIN):
 
 
 def rectangle(size=1, center=ORIGIN, a=None, b=None):
-    if a is not None and b is not None:
-        a, b = vec(a, 2, 'a'), vec(b, 2, 'b')
-        size, center = b - a, (a + b) / 2
-    return _at(dict(sdf='sd2Box', b=vec(size, 2, 'size') / 2), center)
+    half, center = half_size(size, center, a, b, 2)
+    return _at(dict(sdf='sd2Box', b=half), center)
 
 
 def rounded_rectangle(size, radius, center=ORIGIN):

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from .core import SDF, ORIGIN, UP, X, Y, Z, num, plain, refuse, rotation, turn_onto, vec
+from .core import SDF, ORIGIN, UP, X, Y, Z, half_size, num, plain, refuse, rotation, turn_onto, vec
 
 
 class SDF3(SDF):
@@ -95,10 +95,8 @@ def sphere(radius=1, center=ORIGIN):
 
 
 def box(size=1, center=ORIGIN, a=None, b=None):
-    if a is not None and b is not None:
-        a, b = vec(a, 3, 'a'), vec(b, 3, 'b')
-        size, center = b - a, (a + b) / 2
-    return _at(dict(sdf='sdBox', b=vec(size, 3, 'size') / 2), center)
+    half, center = half_size(size, center, a, b, 3)
+    return _at(dict(sdf='sdBox', b=half), center)
 
 
 def rounded_box(size, radius):
