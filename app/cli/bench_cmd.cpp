@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "bench/bench.h"
+#include "bench/bench_plan.h"
 #include "bench/bench_report.h"
 #include "cli/common_flags.h"
 #include "cli/dispatch_flag.h"
@@ -74,28 +75,11 @@ int run_bench_command(const BenchArgs& a) {
   job.spp = a.spp;
   job.backend = a.backend;
   set_load_fields(job, a.load);
-  // Timed frames as render draws them to a PNG: one pass at spp 1, bloom
-  // as the scene says (docs/post.md).
-  PreparedFrame p = prepare(job, true);
+  BenchPlan plan = plan_bench(job, {a.size.width, a.size.height}, a.frames, a.warmup);  // bench/bench_plan.h
+  PreparedFrame& p = plan.p;
   p.keep_pruned = a.shader_cache;  // cold, like the driver's cache: the pruning pass is timed
   const LoadedInput& in = p.in;
-  // The counting pass: the same scene with the AOV counters compiled in (a
-  // Shadertoy shader has no step counters: its passes are timed only).
-  AssembleOptions count_opts = job.assemble_options();
-  count_opts.defines = aov_defines();
-  count_opts.graph = p.opts.graph;  // the shape prepare() made
-  const std::optional<ShaderSource> counting =
-      in.shadertoy ? std::nullopt : std::optional<ShaderSource>(assemble_scene(in.scene, count_opts));
-
-  BenchSettings s;
-  s.width = a.size.width > 0 ? a.size.width : in.scene.render.width;
-  s.height = a.size.width > 0 ? a.size.height : in.scene.render.height;
-  s.spp = a.spp < 0 ? a.spp : p.fp.spp;  // run_bench rejects a negative one with the flag's name
-  s.frames = a.frames;
-  s.warmup = a.warmup;
-  s.time = in.scene.render.time;
-  s.fused_post = p.fp.fused_post;
-  s.bloom = in.scene.bloom.enabled;
+  BenchSettings& s = plan.s;
   report_input_warnings(in.warnings, a.input, a.strict);
 
   s.shader_cache = a.shader_cache;
@@ -107,10 +91,8 @@ int run_bench_command(const BenchArgs& a) {
   set_shader_cache(s.shader_cache);
   FrameSession session;
   session.context(job.backend);
-  // Keyframed values at the benchmarked time, as render poses them.
-  const Scene posed = animated(in.scene, s.time);
-  BenchResult r = run_bench(session, p, posed, counting ? &*counting : nullptr, s);
-  if (in.scene.graph) count_graph_cost(session.job(), p, posed, s, count_opts, r);  // bench/bench.h
+  const BenchResult r = run_planned_bench(session, plan);
+  const Scene& posed = plan.posed;
   if (!in.shadertoy) {
     const std::string bw = bounds_warning(a.input, check_bounds(posed, p.opts, [&](const Program& prog) {  // render/bounds_check.h
       set_scene_uniforms(prog, posed, s.width, s.height, s.time, 0);

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "bench/bench.h"
+#include "bench/bench_plan.h"
 #include "bench/bench_report.h"
 #include "core/error.h"
 #include "job_thread.h"
@@ -218,37 +219,18 @@ nb::bytes render_png(const std::string& input, int width, int height, const std:
   return nb::bytes(data.data(), data.size());
 }
 
-// `marchstudio bench --json`'s document for a scene, timed in this
-// process's context (the one renders use): the steps cli/bench_cmd.cpp
-// takes, without its flags' extras (overrides, --dispatch, --strict).
-// The steps cli/bench_cmd.cpp takes, without its flags' extras (overrides,
-// --dispatch, --strict, the bounds warning), on the GL thread.
+// `marchstudio bench --json`'s document for a scene, on the GL thread:
+// the bench `marchstudio bench` plans (bench/bench_plan.h), without the
+// flags' extras (overrides, --dispatch, --strict, the bounds warning).
 std::string bench_on_gl_thread(const ms::FrameJob& job, int width, int height, int frames, int warmup) {
-  ms::PreparedFrame p = ms::prepare(job, true);
-  const ms::LoadedInput& in = p.in;
-  ms::AssembleOptions count_opts = job.assemble_options();
-  count_opts.defines = ms::aov_defines();
-  count_opts.graph = p.opts.graph;
-  const std::optional<ms::ShaderSource> counting =
-      in.shadertoy ? std::nullopt : std::optional<ms::ShaderSource>(ms::assemble_scene(in.scene, count_opts));
-  ms::BenchSettings s;
-  s.width = width > 0 ? width : in.scene.render.width;
-  s.height = width > 0 ? height : in.scene.render.height;
-  s.spp = p.fp.spp;
-  s.frames = frames;
-  s.warmup = warmup;
-  s.time = in.scene.render.time;
-  s.fused_post = p.fp.fused_post;
-  s.bloom = in.scene.bloom.enabled;
-  ms::check_bench_settings(s);
+  const ms::BenchPlan b = ms::plan_bench(job, {width, height}, frames, warmup);
+  ms::check_bench_settings(b.s);
   ms::FrameSession& fs = session();
   fs.context(job.backend);
-  const ms::Scene posed = ms::animated(in.scene, s.time);
-  ms::BenchResult r = ms::run_bench(fs, p, posed, counting ? &*counting : nullptr, s);
-  if (in.scene.graph) ms::count_graph_cost(fs.job(), p, posed, s, count_opts, r);
-  const ms::BenchSubject subject{job.input.string(), in.scene.name, {}, ms::specialization_name(p.opts.specialize),
-                                 {}};
-  return ms::bench_json(subject, s, r);
+  const ms::BenchResult r = ms::run_planned_bench(fs, b);
+  const ms::BenchSubject subject{job.input.string(), b.p.in.scene.name, {},
+                                 ms::specialization_name(b.p.opts.specialize), {}};
+  return ms::bench_json(subject, b.s, r);
 }
 
 // `marchstudio bench --json`'s document for a scene, timed in this
