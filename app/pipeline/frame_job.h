@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "gl/context.h"
+#include "io/image.h"
 #include "io/sequence.h"
 #include "pipeline/input.h"
 #include "render/compute_frame.h"
@@ -39,6 +40,10 @@ struct FrameJob {
   std::string label;
   std::filesystem::path input;
   std::filesystem::path output;      // a still's file (never empty); unused by a sequence
+  // A still handed back here instead of written: `output` then only names
+  // its format, and the image holds what that file would (io/stored_pixels.h).
+  // One that would be drawn in tiles is refused. Null: written.
+  Image* image_out = nullptr;
   ImageSize size;                    // 0x0: the scene's
   int spp = 0;                       // 1..1024; 0: the scene's
   std::optional<float> time;         // seconds; empty: the scene's

@@ -10,6 +10,7 @@
 #include "io/direct_codec.h"
 #include "io/image_backend.h"
 #include "io/image_io.h"
+#include "io/stored_pixels.h"
 #include "io/temp_cleanup.h"
 #include "pipeline/dispatch_probe.h"
 #include "pipeline/fingerprint.h"
@@ -108,12 +109,16 @@ void render_still_job(const FrameJob& job, FrameSession& session) {
   // A TIFF or JPEG needs the image module (PNG and EXR do not: io/direct_codec.h):
   // it loads while the shaders compile and the frame renders, not before the
   // context, whose driver dlopen would wait for it (io/image_backend.h).
-  if (!writes_directly(image_format_for(output))) preload_image_backend();
+  if (!writes_directly(image_format_for(output)) && !job.image_out) preload_image_backend();
   const double t_context = clock.lap();
   if (job.verbose) say_setup(job, p, ctx, fresh_context);
   const StillTiling tiling = plan_render_tiling(in, fp, gpu_targets, job.tile_still, gl_max_width(ctx.info()),
                                                 gl_max_height(ctx.info()));
   if (!tiling.tiled()) check_frame_size(ctx.info(), fp.width, fp.height, frame_targets(aovs));
+  else if (job.image_out)
+    fail_input("a " + std::to_string(fp.width) + "x" + std::to_string(fp.height) +
+                   " still is drawn in tiles, too large to hand back in memory",
+               input.string(), 0, "size", "render it to a file");
   check_compute_input(job.dispatch, in);  // before anything is drawn or written
 
   const long compiled_before = session.cache().misses(), reused_before = session.cache().hits();
@@ -161,6 +166,10 @@ void render_still_job(const FrameJob& job, FrameSession& session) {
   if (aovs) img = append_channels(img, select_channels(out.aovs, job.aov_channels));
   const double t_render = clock.lap();
   guard.finish();  // the write is atomic and must not be cut short
+  if (job.image_out) {
+    *job.image_out = stored_pixels(img, image_format_for(output));
+    return;
+  }
   {
     const RemoveTempOnSignal on_signal(output);  // Ctrl-C or SIGTERM while writing: no temporary left
     write_image(img, output, meta);

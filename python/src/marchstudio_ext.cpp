@@ -79,8 +79,8 @@ ms::FrameJob frame_job(const std::string& input, const std::string& backend, con
   return job;
 }
 
-// A scratch file beside nothing else: the render's own atomic write lands
-// there and is read back, the one path that makes the CLI's bytes.
+// A scratch folder beside nothing else: a notebook's PNG is the file the
+// render's own atomic write lands there, read back as bytes.
 struct ScratchDir {
   fs::path dir;
   ScratchDir() {
@@ -106,17 +106,16 @@ nb::object render(const std::string& input, int width, int height, std::optional
   ms::FrameJob job = frame_job(input, backend, preset, time);
   job.size = {width, height};
   job.spp = spp;
-  ScratchDir scratch;
-  job.output = scratch.dir / (uint8 ? "frame.png" : "frame.exr");
+  // Handed back in memory, as the PNG or EXR `marchstudio render` writes
+  // would hold it (pipeline/frame_job.h): nothing is written.
+  job.output = uint8 ? "frame.png" : "frame.exr";
   ms::Image img;
+  job.image_out = &img;
   {
     InterruptScope interrupt;
     {
       nb::gil_scoped_release release;
-      gl_thread().run([&] {
-        ms::render_still_job(job, session());
-        img = ms::read_image(job.output, ms::AlphaMode::straight);
-      });
+      gl_thread().run([&] { ms::render_still_job(job, session()); });
     }
     InterruptScope::raise_if_interrupted(false);
   }

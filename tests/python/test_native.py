@@ -55,6 +55,21 @@ def test_render_equals_the_cli_bit_for_bit(part, cli, tmp_path, dtype, ext):
         assert np.all(got[..., 3] == (255 if dtype == np.uint8 else 1.0))
 
 
+def test_render_writes_no_file(part, tmp_path, monkeypatch):
+    # The image comes back in memory: with no usable temporary folder (a
+    # file stands where it should be) a render still works, and the working
+    # folder stays empty.
+    not_a_dir = tmp_path / 'not-a-dir'
+    not_a_dir.write_text('')
+    monkeypatch.setenv('TMPDIR', str(not_a_dir))
+    work = tmp_path / 'work'
+    work.mkdir()
+    monkeypatch.chdir(work)
+    assert marchstudio.load(part).render(size=(W, H)).shape == (H, W, 4)
+    assert marchstudio.load(part).render(size=(W, H), dtype=np.uint8).shape == (H, W, 4)
+    assert list(work.iterdir()) == []
+
+
 def test_mesh_equals_the_cli(part, cli, tmp_path):
     out = tmp_path / 'cli.obj'
     subprocess.run([cli, 'mesh', part, '--resolution', '40', '-o', str(out)], check=True, capture_output=True)
