@@ -3,18 +3,12 @@
 
 #include <algorithm>
 #include <regex>
-#include <array>
-#include <cctype>
-#include <map>
-#include <optional>
-#include <system_error>
 
 #include "core/error.h"
-#include "io/image_io.h"
-#include "preprocess/directive.h"
 #include "io/cube_faces.h"
 #include "io/input_file.h"
-#include "preprocess/confine.h"
+#include "io/path_roots.h"
+#include "preprocess/directive.h"
 #include "preprocess/glsl_scan.h"
 
 namespace ms {
@@ -22,12 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using FileKind = VsKind;
-using Channel = VsChannel;
-using File = VsFile;
-constexpr const char* kDoc = kVscodeDoc;
 
-Sampler sampler_of(const Channel& c, const File& f, int n, Sampler s, std::vector<std::string>& warnings) {
+Sampler sampler_of(const VsChannel& c, const VsFile& f, int n, Sampler s, std::vector<std::string>& warnings) {
   const std::string key = "#iChannel" + std::to_string(n);
   if (c.wrap) s.wrap = *c.wrap == "Clamp" ? TexWrap::clamp : *c.wrap == "Repeat" ? TexWrap::repeat : TexWrap::mirror;
   if (!c.min && !c.mag) return s;
@@ -83,10 +73,10 @@ std::string keyboard_prelude() {
 
 // Channel `n` of file `f` (pass `i` of `files`) as the pass reads it: a
 // buffer (a shader file, or the file itself), a cubemap, an image or audio.
-void bind_channel(const std::vector<File>& files, size_t i, size_t n, ProjectInput& in,
+void bind_channel(const std::vector<VsFile>& files, size_t i, size_t n, ProjectInput& in,
                   std::vector<std::string>& warnings) {
-  const File& f = files[i];
-  const Channel& c = f.ch[n];
+  const VsFile& f = files[i];
+  const VsChannel& c = f.ch[n];
   const std::string key = "#iChannel" + std::to_string(n);
   if (!c.line) {
     if (c.type || c.min || c.mag || c.wrap)
@@ -94,18 +84,18 @@ void bind_channel(const std::vector<File>& files, size_t i, size_t n, ProjectInp
     return;
   }
   const bool cube = c.type && *c.type == "CubeMap";
-  if (c.self || c.kind == FileKind::shader) {
-    if (cube) fail_input(key + "::Type \"CubeMap\": a shader's buffer is 2D", f.where, c.type_line, key + "::Type", kDoc);
+  if (c.self || c.kind == VsKind::shader) {
+    if (cube) fail_input(key + "::Type \"CubeMap\": a shader's buffer is 2D", f.where, c.type_line, key + "::Type", kVscodeDoc);
     in.kind = InputKind::buffer;
     in.buffer = static_cast<int>(i);
     if (!c.self) {
-      const auto other = std::find_if(files.begin(), files.end(), [&](const File& o) { return o.path == c.path; });
+      const auto other = std::find_if(files.begin(), files.end(), [&](const VsFile& o) { return o.path == c.path; });
       in.buffer = other == files.end() ? -1 : static_cast<int>(other - files.begin());
     }
     in.sampler = sampler_of(c, f, static_cast<int>(n), {TexFilter::linear, TexWrap::clamp, false, false}, warnings);
     return;
   }
-  if (c.kind == FileKind::video)
+  if (c.kind == VsKind::video)
     fail_input(key + ": '" + display_path(c.path) + "' is a video, which the extension does not play", f.where, c.line, key,
                "an image, an audio file or a .glsl buffer");
   in.src = c.path.string();
@@ -120,15 +110,15 @@ void bind_channel(const std::vector<File>& files, size_t i, size_t n, ProjectInp
     return;
   }
   const std::string problem = input_file_problem(c.path);
-  if (!problem.empty()) fail_input(key + ": '" + display_path(c.path) + "' " + problem, f.where, c.line, key, kDoc);
-  in.kind = c.kind == FileKind::audio ? InputKind::music : InputKind::texture;
+  if (!problem.empty()) fail_input(key + ": '" + display_path(c.path) + "' " + problem, f.where, c.line, key, kVscodeDoc);
+  in.kind = c.kind == VsKind::audio ? InputKind::music : InputKind::texture;
   in.file = c.path;
   if (in.kind == InputKind::music) in.sampler = {TexFilter::linear, TexWrap::clamp, false, false};
 }
 
 // #iKeyboard: the first free channel, its line made the #define that names
 // it. False when the file has no such line.
-bool bind_keyboard(File& f, ProjectPass& ps) {
+bool bind_keyboard(VsFile& f, ProjectPass& ps) {
   if (!f.keyboard_line) return false;
   size_t free = 0;
   while (free < 4 && ps.inputs[free].kind != InputKind::none) ++free;
@@ -145,10 +135,10 @@ bool bind_keyboard(File& f, ProjectPass& ps) {
 
 // The file that reads the main file (itself included), and the line that
 // does: the main file is then a buffer too, shown by a display pass.
-const File* reader_of_main(const std::vector<File>& files, int& line) {
-  const File& main = files.back();
-  for (const File& f : files)
-    for (const Channel& c : f.ch)
+const VsFile* reader_of_main(const std::vector<VsFile>& files, int& line) {
+  const VsFile& main = files.back();
+  for (const VsFile& f : files)
+    for (const VsChannel& c : f.ch)
       if (c.line && ((c.self && &f == &main) || (!c.self && c.path == main.path))) {
         line = c.line;
         return &f;
@@ -157,7 +147,7 @@ const File* reader_of_main(const std::vector<File>& files, int& line) {
 }
 
 // The Image pass that shows the main file's buffer (the last of `buffers`).
-ProjectPass display_pass(const File& main, int buffers, bool any_main) {
+ProjectPass display_pass(const VsFile& main, int buffers, bool any_main) {
   ProjectPass show;
   show.kind = PassKind::image;
   show.name = "Image";
@@ -179,14 +169,14 @@ bool looks_like_vscode(std::string_view source) {
 }
 
 ShaderProject load_vscode(const std::string& text, const fs::path& file, const std::vector<fs::path>& roots) {
-  std::vector<File> files = read_vscode_files(text, file, roots);  // the main file last
-  const File& main = files.back();
+  std::vector<VsFile> files = read_vscode_files(text, file, roots);  // the main file last
+  const VsFile& main = files.back();
   int reads_main_line = 0;
-  const File* reads_main = reader_of_main(files, reads_main_line);
-  const bool any_main = std::any_of(files.begin(), files.end(), [](const File& f) { return f.uses_main; });
+  const VsFile* reads_main = reader_of_main(files, reads_main_line);
+  const bool any_main = std::any_of(files.begin(), files.end(), [](const VsFile& f) { return f.uses_main; });
   const size_t buffers = files.size() - 1 + (reads_main ? 1 : 0);
   if (buffers > 4) {
-    const File& fifth = reads_main && files.size() <= 5 ? main : files[4];
+    const VsFile& fifth = reads_main && files.size() <= 5 ? main : files[4];
     const int line = &fifth == &main ? reads_main_line : fifth.from_line;
     fail_input(std::to_string(buffers) + " buffers: marchstudio runs at most 4", &fifth == &main ? reads_main->where : fifth.from_where,
                line, "#iChannel", "Shadertoy's Buffer A..D; merge two buffer files");
@@ -196,7 +186,7 @@ ShaderProject load_vscode(const std::string& text, const fs::path& file, const s
   p.name = file.stem().string();
   bool keyboard = false;
   for (size_t i = 0; i < files.size(); ++i) {
-    File& f = files[i];
+    VsFile& f = files[i];
     const bool is_buffer = i + 1 < files.size() || reads_main;
     ProjectPass ps;
     ps.kind = is_buffer ? PassKind::buffer : PassKind::image;

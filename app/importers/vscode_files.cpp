@@ -1,32 +1,23 @@
 #include "importers/vscode_files.h"
 
 #include <algorithm>
-#include <regex>
-#include <array>
 #include <cctype>
-#include <map>
-#include <optional>
 #include <system_error>
 
 #include "core/error.h"
-#include "io/image_io.h"
-#include "preprocess/directive.h"
-#include "io/cube_faces.h"
-#include "io/input_file.h"
-#include "preprocess/confine.h"
-#include "preprocess/glsl_scan.h"
 #include "importers/vscode.h"
+#include "io/cube_faces.h"
+#include "io/image_io.h"
+#include "io/input_file.h"
+#include "io/path_roots.h"
+#include "preprocess/directive.h"
+#include "preprocess/glsl_scan.h"
 
 namespace ms {
 namespace fs = std::filesystem;
 
 namespace {
 
-using FileKind = VsKind;
-using Channel = VsChannel;
-using File = VsFile;
-
-constexpr const char* kDoc = kVscodeDoc;
 constexpr std::size_t kMaxBuffers = 4;  // Shadertoy's Buffer A..D
 
 // What follows the directive on the raw line, its `//` comment dropped
@@ -50,27 +41,27 @@ std::string lower_ext(const fs::path& p) {
 
 // The extension sorts an input by its MIME type: image, audio, or (any
 // other, text included) a shader.
-FileKind kind_of(const fs::path& p) {
+VsKind kind_of(const fs::path& p) {
   const std::string e = lower_ext(p);
-  if (is_image_name(p)) return FileKind::image;
+  if (is_image_name(p)) return VsKind::image;
   for (const char* x : {".mp3", ".wav", ".ogg", ".oga", ".flac", ".m4a", ".aac", ".opus"})
-    if (e == x) return FileKind::audio;
+    if (e == x) return VsKind::audio;
   for (const char* x : {".mp4", ".webm", ".ogv", ".mov", ".mkv", ".avi"})
-    if (e == x) return FileKind::video;
-  return FileKind::shader;
+    if (e == x) return VsKind::video;
+  return VsKind::shader;
 }
 
 struct Loader {
   const std::vector<fs::path>& roots;
-  std::vector<File> order;      // post-order: a file after the files it reads
+  std::vector<VsFile> order;      // post-order: a file after the files it reads
   std::vector<fs::path> visiting;
 
   [[noreturn]] void fail(const std::string& what, const std::string& where, int line, const std::string& key,
-                         const std::string& hint = kDoc) {
+                         const std::string& hint = kVscodeDoc) {
     fail_input(what, where, line, key, hint);
   }
 
-  fs::path resolve(const std::string& given, const File& f, int line, const std::string& key) {
+  fs::path resolve(const std::string& given, const VsFile& f, int line, const std::string& key) {
     fs::path p(given);
     if (p.is_relative()) p = f.path.parent_path() / p;
     std::error_code ec;
@@ -91,7 +82,7 @@ struct Loader {
     return p;
   }
 
-  void parse_channel(File& f, const std::string& name, const std::string& args, int line) {
+  void parse_channel(VsFile& f, const std::string& name, const std::string& args, int line) {
     // The extension reads the number with parseInt: "00003" is 3. Leading
     // zeros dropped, a number longer than 3 digits is out of range, whatever
     // its first digits (reading only those made 00003 iChannel0).
@@ -100,7 +91,7 @@ struct Loader {
     const std::string key = "#" + name;
     if (n > 3)
       fail(key + ": marchstudio binds iChannel0..iChannel3", f.where, line, key, "Shadertoy's four channels; the extension's go to 9");
-    Channel& c = f.ch[static_cast<size_t>(n)];
+    VsChannel& c = f.ch[static_cast<size_t>(n)];
     std::string s = args;
     const size_t b = s.find_first_not_of(" \t\r");
     s = b == std::string::npos ? "" : s.substr(b);
@@ -116,7 +107,7 @@ struct Loader {
     const std::string shown = key + (setting.empty() ? "" : "::" + setting);
     if (q1 != 0 || q2 == std::string::npos || s.find_first_not_of(" \t\r", q2 + 1) != std::string::npos)
       fail(shown + ": expected a quoted string", f.where, line, shown,
-           setting.empty() ? "e.g. " + key + " \"file://buffer.glsl\" or " + key + " \"self\"" : std::string(kDoc));
+           setting.empty() ? "e.g. " + key + " \"file://buffer.glsl\" or " + key + " \"self\"" : std::string(kVscodeDoc));
     const std::string value = s.substr(1, q2 - 1);
     const auto one_of = [&](std::initializer_list<const char*> ok, std::optional<std::string>& slot, int& at) {
       std::string list;
@@ -128,7 +119,7 @@ struct Loader {
         }
         list += std::string(list.empty() ? "" : ", ") + o;
       }
-      fail(shown + ": '" + value + "' is not one of " + list, f.where, line, shown, kDoc);
+      fail(shown + ": '" + value + "' is not one of " + list, f.where, line, shown, kVscodeDoc);
     };
     if (setting == "MinFilter")
       one_of({"Nearest", "NearestMipMapNearest", "NearestMipMapLinear", "Linear", "LinearMipMapNearest", "LinearMipMapLinear"},
@@ -139,14 +130,14 @@ struct Loader {
     else if (!setting.empty())
       fail(shown + ": not a channel setting", f.where, line, shown, "MinFilter, MagFilter, WrapMode or Type");
     if (!setting.empty()) return;
-    if (c.line) fail(key + ": the channel is already bound at line " + std::to_string(c.line), f.where, line, key, kDoc);
+    if (c.line) fail(key + ": the channel is already bound at line " + std::to_string(c.line), f.where, line, key, kVscodeDoc);
     c.line = line;
     std::string path = value;
     if (path.rfind("file://", 0) == 0) path = path.substr(7);
     else if (const size_t at = path.find("://"); at != std::string::npos)
       fail(key + ": '" + value + "' is not fetched: marchstudio renders offline from local files", f.where, line, key,
            "save it next to the shader and name it \"file://NAME\"");
-    if (path.empty()) fail(key + ": an empty path", f.where, line, key, kDoc);
+    if (path.empty()) fail(key + ": an empty path", f.where, line, key, kVscodeDoc);
     if (path == "self") {
       c.self = true;
       return;
@@ -156,7 +147,7 @@ struct Loader {
     if (c.path == f.path) c.self = true;  // naming itself is "self", as the extension reads it
   }
 
-  void parse(File& f, const std::string& text) {
+  void parse(VsFile& f, const std::string& text) {
     const std::vector<std::string> raw = line_strings(text);
     const std::vector<std::string> bare = line_strings(strip_comments(text));
     for (size_t i = 0; i < raw.size(); ++i) {
@@ -193,15 +184,15 @@ struct Loader {
   // Reads `path` and everything it names, then appends it to `order`.
   void visit(const fs::path& path, const std::string& text, const std::string& from_where, int from_line) {
     visiting.push_back(path);
-    File f;
+    VsFile f;
     f.path = path;
     f.where = display_path(path);
     f.from_where = from_where;
     f.from_line = from_line;
     parse(f, text);
     for (size_t n = 0; n < 4; ++n) {
-      const Channel& c = f.ch[n];
-      if (!c.line || c.self || c.kind != FileKind::shader) continue;
+      const VsChannel& c = f.ch[n];
+      if (!c.line || c.self || c.kind != VsKind::shader) continue;
       const bool seen = std::find(visiting.begin(), visiting.end(), c.path) != visiting.end();
       if (seen) continue;  // read once, as the extension does; a cycle reads the other's last frame
       const std::string key = "#iChannel" + std::to_string(n);
@@ -212,7 +203,7 @@ struct Loader {
                  "th buffer: marchstudio runs at most " + std::to_string(kMaxBuffers),
              f.where, c.line, key, "Shadertoy's Buffer A..D; merge two buffer files");
       const std::string problem = input_file_problem(c.path);
-      if (!problem.empty()) fail(key + ": '" + display_path(c.path) + "' " + problem, f.where, c.line, key, kDoc);
+      if (!problem.empty()) fail(key + ": '" + display_path(c.path) + "' " + problem, f.where, c.line, key, kVscodeDoc);
       visit(c.path, read_input_file(c.path, "shader", key), f.where, c.line);
     }
     order.push_back(std::move(f));
