@@ -33,16 +33,10 @@ std::string directive_args(const std::string& raw, const std::string& name) {
   return s;
 }
 
-std::string lower_ext(const fs::path& p) {
-  std::string e = p.extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
-
 // The extension sorts an input by its MIME type: image, audio, or (any
 // other, text included) a shader.
 VsKind kind_of(const fs::path& p) {
-  const std::string e = lower_ext(p);
+  const std::string e = lower_extension(p);
   if (is_image_name(p)) return VsKind::image;
   for (const char* x : {".mp3", ".wav", ".ogg", ".oga", ".flac", ".m4a", ".aac", ".opus"})
     if (e == x) return VsKind::audio;

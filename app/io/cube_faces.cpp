@@ -14,12 +14,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool is_float_file(const fs::path& f) {
-  std::string ext = f.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr" || ext == ".hdr";
-}
-
 // Any channel layout as RGBA (grey, grey + alpha, RGB, RGBA), top row first.
 Image to_rgba(const Image& img) {
   const int nc = img.nchannels();
@@ -51,7 +45,7 @@ void check_cube_memory(int size, const std::string& file) {
 CubeFaces read_cube_faces(const std::array<fs::path, 6>& files) {
   static const char* names[] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
   CubeFaces c;
-  c.eight_bit = !is_float_file(files[0]);
+  c.eight_bit = !is_float_image_name(files[0]);
   for (int i = 0; i < 6; ++i) {
     const Image img = read_image(files[i], AlphaMode::straight);  // the file's bytes; missing or unreadable: bad_input
     const std::string face = std::string("cubemap face ") + std::to_string(i) + " (" + names[i] + ")";

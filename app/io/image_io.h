@@ -27,12 +27,21 @@ inline bool is_display_format(ImageFormat f) { return f != ImageFormat::exr; }
 // input may be read from, the ones VS Code's extension sorts as images.
 // Inline: the shader importers (and the parser-only fuzz build) use it
 // without linking the image readers.
-inline bool is_image_name(const std::filesystem::path& path) {
+inline std::string lower_extension(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return ext;
+}
+inline bool is_image_name(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
   for (const char* e : {".png", ".jpg", ".jpeg", ".bmp", ".gif", ".webp", ".tga", ".tif", ".tiff", ".exr", ".hdr"})
     if (ext == e) return true;
   return false;
+}
+// The high-dynamic-range ones (.exr, .hdr): read into float textures, not 8-bit.
+inline bool is_float_image_name(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".exr" || ext == ".hdr";
 }
 
 // Check before any rendering that `path` can be written: known extension,

@@ -9,16 +9,6 @@
 namespace ms {
 namespace fs = std::filesystem;
 
-namespace {
-
-bool is_hdr(const fs::path& f) {
-  std::string ext = f.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr" || ext == ".hdr";
-}
-
-}  // namespace
-
 CubeFaces cube_standin(MissingMedia kind) {
   CubeFaces c;
   c.size = kind == MissingMedia::black ? 1 : 64;
@@ -59,7 +49,7 @@ std::shared_ptr<const CubeFaces> load_cube_input(const ProjectInput& in, const S
                     origin, where);
   // One file of EXR or HDR with no "_1" beside it: an equirectangular image.
   const bool wildcard = in.src.find("{}") != std::string::npos;
-  const bool equirect = !wildcard && !first.empty() && is_hdr(first) && input_file_problem(first).empty() &&
+  const bool equirect = !wildcard && !first.empty() && is_float_image_name(first) && input_file_problem(first).empty() &&
                         !input_file_problem(files[1]).empty();
   fs::path missing;
   for (int i = 0; i < (equirect ? 1 : 6) && missing.empty(); ++i)

@@ -47,12 +47,6 @@ fs::path find_media(const ProjectInput& in, const MediaPlace& m, const std::stri
   return input_file_problem(f).empty() ? f : fs::path{};
 }
 
-bool is_hdr(const fs::path& f) {
-  std::string ext = f.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr" || ext == ".hdr";
-}
-
 // PCG32 (O'Neill): a fixed, documented sequence on every platform.
 struct Pcg {
   std::uint64_t state = 0x853c49e6748fea9bull;
@@ -150,7 +144,7 @@ void bind_texture(const ProjectInput& in, const std::string& where, ProjectMedia
   if (!img) img = std::make_shared<const Image>(read_image(f, AlphaMode::straight));
   g.image = img;
   g.file = f.string();
-  g.eight_bit = !is_hdr(f);
+  g.eight_bit = !is_float_image_name(f);
 }
 
 // Volumes are never read from files: a known one is stood in for.

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "io/image_io.h"
 #include "io/input_file.h"
 #include "scene/load_passes.h"
 #include "core/error.h"
@@ -224,9 +225,7 @@ void read_environment(const Reader& r, const toml::table& t, const fs::path& dis
   const int line = Reader::line_of(t, "environment");
   if (file.empty()) r.fail(line, "sky.environment", "'sky.environment' must not be empty");
   const fs::path resolved = (display_path.parent_path() / fs::path(file)).lexically_normal();
-  std::string ext = resolved.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".exr" && ext != ".hdr")
+  if (!is_float_image_name(resolved))
     r.fail(line, "sky.environment", "environment " + quote(resolved.string()) + " is not an .exr or .hdr file",
            "an equirectangular high-dynamic-range image");
   if (const std::string why = input_file_problem(resolved); !why.empty())
