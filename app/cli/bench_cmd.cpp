@@ -20,10 +20,8 @@
 #include "pipeline/input.h"
 #include "pipeline/nonfinite.h"
 #include "pipeline/shader_dir.h"
-#include "render/aov.h"
 #include "render/bounds_check.h"
 #include "render/uniforms.h"
-#include "scene/animation.h"
 #include "shader/assemble.h"
 
 namespace ms {
