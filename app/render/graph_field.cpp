@@ -15,6 +15,15 @@ namespace ms {
 
 namespace {
 
+// `count` words of `buf` from word `first`.
+std::vector<std::uint32_t> read_words(GLuint buf, std::size_t first, std::size_t count) {
+  std::vector<std::uint32_t> out(count);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(first * sizeof(std::uint32_t)),
+                     static_cast<GLsizeiptr>(count * sizeof(std::uint32_t)), out.data());
+  return out;
+}
+
 template <class T>
 void upload(GLuint buf, const std::vector<T>& data, std::size_t extra_bytes = 0) {
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf);
@@ -100,11 +109,9 @@ void GraphField::run_pass(const Program& prune, const ReposeCells* only) {
 // outer levels' cells are larger and rarely visited), and the cells that
 // kept their coarse cell's list.
 void GraphField::measure() {
-  const std::size_t cells = cell_count(plan_), first = grid_header(plan_, parts_.buffers).size();
-  std::vector<std::uint32_t> out(cells * 4);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[3]);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(first * sizeof(std::uint32_t)),
-                     static_cast<GLsizeiptr>(out.size() * sizeof(std::uint32_t)), out.data());
+  const std::size_t cells = cell_count(plan_);
+  fine_ = read_words(buffers_[3], grid_header(plan_, parts_.buffers).size(), cells * 4);
+  const std::vector<std::uint32_t>& out = fine_;
   const std::size_t inner = cell_count(plan_.levels[0]);
   double sum = 0.0;
   overflowed_ = 0;
@@ -124,16 +131,12 @@ bool GraphField::repose(const GraphParts& next) {
     return false;
   const auto start = std::chrono::steady_clock::now();
   const std::size_t coarse = coarse_cell_count(plan_);
-  // The cells (the coarse ones after the pool's count and padding): each
-  // holds the field's upper bound on it; one inside the finer level is all 0.
-  std::vector<std::uint32_t> head((coarse + 1) * 4), fine(cell_count(plan_) * 4);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[4]);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(head.size() * sizeof(std::uint32_t)),
-                     head.data());
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[3]);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER,
-                     static_cast<GLintptr>(grid_header(plan_, b).size() * sizeof(std::uint32_t)),
-                     static_cast<GLsizeiptr>(fine.size() * sizeof(std::uint32_t)), fine.data());
+  // The cells: each holds the field's upper bound on it, and one inside
+  // the finer level is all 0. The fine ones as the last pass's measure()
+  // read them (nothing has written them since); the coarse ones after the
+  // pool's count and padding.
+  const std::vector<std::uint32_t> head = read_words(buffers_[4], 0, (coarse + 1) * 4);
+  const std::vector<std::uint32_t>& fine = fine_;
   const auto bound = [](const std::uint32_t* c) {
     float u;
     std::memcpy(&u, c + 2, sizeof u);

@@ -8,8 +8,10 @@
 //   field.build_ms();          // the pruning pass's time (or the cache's read)
 //   field.mean_list();         // instructions a cell keeps, on average
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "gl/gl.h"
 
@@ -67,6 +69,9 @@ class GraphField {
   double mean_list_ = -1.0;
   int overflowed_ = 0;
   int overflowed_whole_ = 0;  // after the last pass over every cell
+  // The fine cells as the last pass left them (measure() reads them): a
+  // repose finds each one's bound here.
+  std::vector<std::uint32_t> fine_;
   std::string cache_note_;  // "; the cache's entry ... not used ...", or empty
   const GraphEvalPlan& plan_ = parts_.plan;
   std::size_t program_ = 0;
